@@ -1,0 +1,115 @@
+# collide2d - top-level build.  `make` builds the library; `make test` installs
+# what it needs, builds and runs every test; `make demo` runs the billiards break.
+#
+# Conventions: CC is never assigned (use the environment's), CFLAGS ?= -O2 is
+# yours, the flags the library needs are appended.  -ffp-contract=off keeps
+# a*b+c from being fused differently per compiler/target, so results are
+# reproducible bit for bit (README "Determinism").
+
+CFLAGS ?= -O2
+CXXFLAGS ?= -O2
+PREFIX ?= /usr/local
+LIBDIR ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+DESTDIR ?=
+
+VERSION_MAJOR := $(shell sed -n 's/^\#define C2D_VERSION_MAJOR \([0-9]*\)/\1/p' include/collide2d.h)
+VERSION_MINOR := $(shell sed -n 's/^\#define C2D_VERSION_MINOR \([0-9]*\)/\1/p' include/collide2d.h)
+VERSION_PATCH := $(shell sed -n 's/^\#define C2D_VERSION_PATCH \([0-9]*\)/\1/p' include/collide2d.h)
+VERSION := $(VERSION_MAJOR).$(VERSION_MINOR).$(VERSION_PATCH)
+
+B := build
+WARN := -Wall -Wextra -Wconversion -Wshadow -pedantic
+REQ_CFLAGS := -std=c99 $(WARN) -ffp-contract=off -Iinclude
+ALL_CFLAGS = $(CFLAGS) $(REQ_CFLAGS) $(SAN_FLAGS)
+
+# make test SANITIZE=1: everything under ASan + UBSan, no recovery.
+ifeq ($(SANITIZE),1)
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+B := build/san
+endif
+
+LIB_SRC := lib/collide2d.c
+LIB_HDR := include/collide2d.h
+STATIC := $(B)/libcollide2d.a
+SONAME := libcollide2d.so.$(VERSION_MAJOR)
+SHARED := $(B)/libcollide2d.so.$(VERSION)
+
+.PHONY: all lib test test-unit check-deps-test install uninstall clean demo play bench cross test-mcu lint fuzz
+all: lib
+lib: $(STATIC) $(B)/libcollide2d.so $(B)/collide2d.pc
+
+$(B)/obj/collide2d.o: $(LIB_SRC) $(LIB_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(B)/obj/collide2d.pic.o: $(LIB_SRC) $(LIB_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -fPIC -fvisibility=default -c $< -o $@
+
+$(STATIC): $(B)/obj/collide2d.o
+	$(AR) rcs $@ $^
+
+$(SHARED): $(B)/obj/collide2d.pic.o
+	$(CC) $(CFLAGS) $(SAN_FLAGS) -shared -Wl,-soname,$(SONAME) -o $@ $^ -lm
+
+$(B)/libcollide2d.so: $(SHARED)
+	ln -sf libcollide2d.so.$(VERSION) $(B)/$(SONAME)
+	ln -sf libcollide2d.so.$(VERSION) $@
+
+$(B)/collide2d.pc: Makefile $(LIB_HDR)
+	@mkdir -p $(@D)
+	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
+	  'Name: collide2d' 'Description: Exact, robust 2-D disk collisions (C99, no dependencies)' \
+	  'Version: $(VERSION)' 'Libs: -L$${libdir} -lcollide2d' 'Libs.private: -lm' \
+	  'Cflags: -I$${includedir}' > $@
+
+install: lib
+	install -d $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR)
+	install -m 644 $(LIB_HDR) $(DESTDIR)$(INCLUDEDIR)/collide2d.h
+	install -m 644 $(STATIC) $(DESTDIR)$(LIBDIR)/libcollide2d.a
+	install -m 755 $(SHARED) $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)
+	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcollide2d.so
+	install -m 644 $(B)/collide2d.pc $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
+
+uninstall:
+	rm -f $(DESTDIR)$(INCLUDEDIR)/collide2d.h $(DESTDIR)$(LIBDIR)/libcollide2d.a \
+	  $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME) \
+	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
+
+clean:
+	rm -rf build
+
+# ---------------------------------------------------------------- unit tests
+# One cmocka program per unit (tests/test_*.c).  The exact referee
+# (tests/referee.c, GMP rationals + MPFR) and the shared vector table
+# (tests/vectors.c, also run on emulated MCUs) are linked into each.
+TEST_DEPS := libcmocka-dev libgmp-dev libmpfr-dev pkg-config
+TEST_SRCS := $(wildcard tests/test_*.c)
+TEST_BINS := $(patsubst tests/%.c,$(B)/tests/%,$(TEST_SRCS))
+TEST_SUPPORT := tests/referee.c tests/vectors.c tests/support.c
+TEST_SUPPORT_HDR := $(wildcard tests/*.h)
+
+check-deps-test:
+	@sh scripts/deps.sh $(TEST_DEPS)
+
+$(B)/tests/%: tests/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(LIB_SRC) $(LIB_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests -o $@ $< $(TEST_SUPPORT) $(LIB_SRC) -lcmocka -lmpfr -lgmp -lm
+
+test-unit: check-deps-test
+	@$(MAKE) --no-print-directory $(TEST_BINS)
+	@fail=0; for t in $(TEST_BINS); do echo "== $$t"; $$t || fail=1; done; \
+	  if [ $$fail -ne 0 ]; then echo "unit tests FAILED"; exit 1; fi
+
+# Subsystems add their own targets and append to TEST_TARGETS.
+TEST_TARGETS :=
+-include demo/demo.mk
+-include bench/bench.mk
+-include tests/mcu/mcu.mk
+-include tests/fuzz/fuzz.mk
+-include tests/lint.mk
+
+test: test-unit $(TEST_TARGETS)
+	@echo "make test: all passed"

@@ -1,0 +1,49 @@
+# demo/demo.mk - the billiards demo, included by the top-level Makefile.
+#   make demo        install deps, build $(B)/billiards, run the headless break,
+#                    print a summary, write $(B)/billiards.png
+#   make play        build and open the window
+#   make test-demo   the demo's tests (part of `make test`)
+#   make demo-plots  regenerate docs/billiards.png, docs/energy.png, docs/gas_histogram.png
+# Screenshots use demo/png.cpp (a stored-deflate PNG writer), so neither
+# libpng nor zlib is needed.
+
+DEMO_DEPS := libbox2d-dev libsdl2-dev
+DEMO_TEST_DEPS := xvfb xauth
+DEMO_PLOT_DEPS := gnuplot-nox
+DEMO_SRC := demo/main.cpp demo/sim.cpp demo/render.cpp demo/png.cpp
+DEMO_HDR := demo/sim.h demo/render.h demo/png.h
+DEMO_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SRC))
+DEMO_BIN := $(B)/billiards
+DEMO_CXXFLAGS = $(CXXFLAGS) -std=c++17 -Wall -Wextra -ffp-contract=off -Iinclude $(SAN_FLAGS)
+
+.PHONY: demo-deps demo-test-deps demo-plots test-demo
+
+demo-deps:
+	@sh scripts/deps.sh $(DEMO_DEPS)
+
+demo-test-deps: demo-deps
+	@sh scripts/deps.sh $(DEMO_TEST_DEPS)
+
+# sdl2-config runs in the recipe, after demo-deps has installed it
+$(B)/demo/%.o: demo/%.cpp $(DEMO_HDR) $(LIB_HDR) | demo-deps
+	@mkdir -p $(@D)
+	$(CXX) $(DEMO_CXXFLAGS) $$(sdl2-config --cflags) -c $< -o $@
+
+$(DEMO_BIN): $(DEMO_OBJ) $(STATIC)
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $(DEMO_OBJ) $(STATIC) -lbox2d $$(sdl2-config --libs) -lm
+
+demo: $(DEMO_BIN)
+	$(DEMO_BIN) --headless --screenshot $(B)/billiards.png
+	@echo "table picture: $(B)/billiards.png"
+
+play: $(DEMO_BIN)
+	$(DEMO_BIN)
+
+test-demo: $(DEMO_BIN) | demo-test-deps
+	sh demo/test_demo.sh $(DEMO_BIN)
+
+demo-plots: $(DEMO_BIN)
+	@sh scripts/deps.sh $(DEMO_PLOT_DEPS)
+	sh demo/plots.sh $(DEMO_BIN) docs
+
+TEST_TARGETS += test-demo

@@ -1,0 +1,126 @@
+// sim.h - billiards / disk-gas simulation for the collide2d demo (no SDL).
+//
+// The state (positions, velocities) is kept in double in SI units (m, m/s,
+// kg, s).  Box2D 2.4.1 is used only as a broadphase: its dynamic AABB tree
+// finds candidate pairs; impacts are found and ordered with
+// c2d_time_of_impact and resolved with c2d_collide / c2d_collide_normal.
+// Response::Box2d instead hands the same scene to Box2D's own solver, for
+// comparison.
+#ifndef C2D_DEMO_SIM_H
+#define C2D_DEMO_SIM_H
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace demo {
+
+enum class Scene { Break, Elastic, Gas };
+enum class Response { Collide2d, Box2d };
+
+struct Shot {
+    double angle_deg;  // 0 = towards the foot rail (+x), counter-clockwise
+    double speed;      // m/s
+};
+
+struct SimConfig {
+    Scene scene = Scene::Break;
+    Response response = Response::Collide2d;
+    int gas_balls = 1000;
+    uint64_t seed = 1;
+};
+
+struct Ball {
+    double x, y, vx, vy;
+    int number;  // 0 = cue ball, 1..15 object balls; gas: index
+    bool active;
+};
+
+struct Segment { double ax, ay, bx, by, nx, ny; };  // cushion face, n points into the table
+struct Pocket { double x, y, capture_radius, draw_radius; };
+
+struct Table {
+    double length, width;   // playing surface [0,length] x [0,width]
+    double rail;            // drawn rail width
+    std::vector<Segment> cushions;
+    std::vector<Pocket> pockets;
+};
+
+struct Stats {
+    long steps = 0;
+    double sim_seconds = 0;
+    long ball_ball_collisions = 0;
+    long cushion_collisions = 0;
+    int pocketed = 0;
+    int escaped = 0;
+    long tunnelled = 0;
+    double max_overlap = 0;       // fraction of a diameter
+    long event_cap_frames = 0;    // frames whose event budget ran out
+};
+
+constexpr double kBallDiameter = 0.05715;
+constexpr double kBallRadius = kBallDiameter / 2;
+constexpr double kBallMass = 0.17;
+constexpr double kFrameDt = 1.0 / 60.0;
+constexpr double kMaxShotSpeed = 15.0;  // Box2D moves at most 2 units/step: 15 m/s at our scale
+
+class Engine;
+struct FrameLog;
+
+class Simulation {
+public:
+    explicit Simulation(const SimConfig &config);
+    ~Simulation();
+    Simulation(const Simulation &) = delete;
+    Simulation &operator=(const Simulation &) = delete;
+
+    // Strikes the cue ball (break scenes; ignored if it is off the table).
+    void shoot(const Shot &shot);
+    // Advances one frame of kFrameDt.
+    void step();
+    // All balls at rest (never true in the lossless scenes once moving).
+    bool at_rest() const;
+    bool cue_on_table() const;
+    // Puts a pocketed cue ball back on the head spot (or the nearest free spot).
+    void respot_cue();
+
+    const SimConfig &config() const { return config_; }
+    const Table &table() const { return table_; }
+    const std::vector<Ball> &balls() const;
+    const Stats &stats() const { return stats_; }
+    int balls_total() const { return static_cast<int>(balls_initial_.size()); }
+    int object_balls_left() const;
+    double energy() const;
+    void momentum(double out[2]) const;
+    bool lossless() const { return config_.scene != Scene::Break; }
+
+private:
+    void index_waypoints(size_t n);
+    void check_frame(const std::vector<Ball> &before, double dt);
+    void count_escaped();
+
+    SimConfig config_;
+    Table table_;
+    std::vector<Ball> balls_initial_;
+    std::unique_ptr<Engine> engine_;
+    std::unique_ptr<FrameLog> frame_log_;
+    Stats stats_;
+    std::vector<char> escaped_flag_;
+    struct Checker;
+    std::unique_ptr<Checker> checker_;
+};
+
+// Seeded, platform-independent generator (splitmix64), so scenes and runs are
+// identical on every machine.
+class Rng {
+public:
+    explicit Rng(uint64_t seed) : state_(seed) {}
+    uint64_t next();
+    double uniform();  // [0, 1)
+private:
+    uint64_t state_;
+};
+
+}  // namespace demo
+
+#endif
