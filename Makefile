@@ -35,7 +35,7 @@ STATIC := $(B)/libcollide2d.a
 SONAME := libcollide2d.so.$(VERSION_MAJOR)
 SHARED := $(B)/libcollide2d.so.$(VERSION)
 
-.PHONY: all lib test test-unit check-deps-test install uninstall clean demo play bench cross test-mcu lint fuzz
+.PHONY: all lib test test-unit check-deps-test check-vectors check-build vectors install uninstall clean demo play bench cross test-mcu lint fuzz
 all: lib
 lib: $(STATIC) $(B)/libcollide2d.so $(B)/collide2d.pc
 
@@ -98,18 +98,44 @@ $(B)/tests/%: tests/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(LIB_SRC) $(LIB_HDR
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests -o $@ $< $(TEST_SUPPORT) $(LIB_SRC) -lcmocka -lmpfr -lgmp -lm
 
+$(B)/gen_vectors: tests/gen_vectors.c tests/referee.c tests/referee.h tests/vectors.h $(LIB_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -std=c99 -Iinclude -Itests -o $@ tests/gen_vectors.c tests/referee.c -lmpfr -lgmp -lm
+
+# Regenerate the shared vector table from the exact referee.
+vectors: check-deps-test $(B)/gen_vectors
+	$(B)/gen_vectors tests/vectors.c
+
+# The committed table must be exactly what the referee gives today.
+check-vectors: check-deps-test $(B)/gen_vectors
+	@$(B)/gen_vectors $(B)/vectors.c && cmp -s $(B)/vectors.c tests/vectors.c && \
+	  echo "check-vectors: 1 passed, 0 failed" || \
+	  { echo "check-vectors: tests/vectors.c differs from the referee (make vectors)"; exit 1; }
+
+check-build:
+	@sh tests/check_build.sh $(B)/check-build
+
+$(B)/tests/cxx_smoke: tests/cxx_smoke.cpp $(STATIC)
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -std=c++11 -pedantic -Wall -Wextra -Werror -Iinclude -o $@ $< $(STATIC) -lm
+
 test-unit: check-deps-test
-	@$(MAKE) --no-print-directory $(TEST_BINS)
-	@fail=0; for t in $(TEST_BINS); do echo "== $$t"; $$t || fail=1; done; \
+	@$(MAKE) --no-print-directory $(TEST_BINS) $(B)/tests/cxx_smoke
+	@fail=0; for t in $(TEST_BINS) $(B)/tests/cxx_smoke; do echo "== $$t"; $$t || fail=1; done; \
 	  if [ $$fail -ne 0 ]; then echo "unit tests FAILED"; exit 1; fi
+	@$(MAKE) --no-print-directory check-vectors check-build
 
 # Subsystems add their own targets and append to TEST_TARGETS.
 TEST_TARGETS :=
+LINT_TARGETS :=
 -include demo/demo.mk
 -include bench/bench.mk
 -include tests/mcu/mcu.mk
 -include tests/fuzz/fuzz.mk
 -include tests/lint.mk
+
+# Static analysis: fragments append to LINT_TARGETS.
+lint: $(LINT_TARGETS)
 
 test: test-unit $(TEST_TARGETS)
 	@echo "make test: all passed"

@@ -113,8 +113,9 @@ c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double 
  *                C2D_SEPARATING (receding, missing, or no relative motion),
  *                C2D_INVALID (NaN/Inf in a position or velocity, radius_sum < 0
  *                or not finite, a NULL pointer), C2D_RANGE (t exceeds DBL_MAX).
- *   accuracy     a few ulp of t plus the time the pair needs to close one
- *                rounding (1 ulp) of its distance; no cancellation for disks far
+ *   accuracy     4 ulp of t plus 4 times the time one rounding (1 ulp) of the
+ *                centre distance is worth at contact (ulp(|d|) divided by the
+ *                approach speed at contact); no cancellation for disks far
  *                apart relative to their size; positions, radii and speeds
  *                anywhere in the double range (no overflow in |d|^2 or |v|^2).
  *                Needs sqrt from the C library. */
@@ -176,8 +177,10 @@ typedef struct c2d_bodyx { c2d_vec2x pos; c2d_vec2x vel; c2d_fixed mass; } c2d_b
  *                mass <= 0 or restitution outside [0, 1]; C2D_SEPARATING when
  *                the approach speed rounds to less than one step (2^-16);
  *                C2D_RANGE when a result leaves the Q16.16 range (never wraps).
- *   accuracy     |error| <= 3 steps (3 * 2^-16) + 2^-26 x |velocity change|
- *                per component, against the exact result of the same inputs. */
+ *   accuracy     |error| <= 3 steps (3 * 2^-16) + 2^-24 x S per component,
+ *                against the exact result of the same inputs, where S is the
+ *                largest |velocity component| of either body before or after
+ *                (the unit normal is carried in Q2.28). */
 c2d_status c2d_collidex(c2d_bodyx *a, c2d_bodyx *b, c2d_fixed restitution);
 c2d_status c2d_collide_normalx(c2d_bodyx *a, c2d_bodyx *b, c2d_vec2x normal, c2d_fixed restitution);
 

@@ -451,9 +451,13 @@ static R FN(c2d_scale2)(R x, int k)
 /* floor(log2 |x|) for finite x != 0, subnormals included. */
 static int FN(c2d_ilogb)(R x)
 {
+    int adjust = 0;
     int e = (int)((FN(c2d_bits)(x) >> R_MANT) & (U)(2 * R_EBIAS + 1));
-    if (e == 0) return FN(c2d_ilogb)(x * FN(c2d_pow2)(R_MANT + 2)) - (R_MANT + 2);
-    return e - R_EBIAS;
+    if (e == 0) { /* subnormal: scale into the normal range (exact) */
+        adjust = R_MANT + 2;
+        e = (int)((FN(c2d_bits)(x * FN(c2d_pow2)(adjust)) >> R_MANT) & (U)(2 * R_EBIAS + 1));
+    }
+    return e - R_EBIAS - adjust;
 }
 
 /* An extended-exponent number m * 2^e, |m| in [1, 2) or m == 0: nothing

@@ -222,10 +222,11 @@ c2d_status ref_time_of_impact(const ref_case *c, double radius_sum, double *t, d
             mpfr_div(ft, fc, fa, MPFR_RNDN);
             *t = mpfr_get_d(ft, MPFR_RNDN);
             st = C2D_OK;
-            /* closing speed = -b/|d| */
-            mpfr_set_q(fb, b, MPFR_RNDN);
-            mpfr_neg(fb, fb, MPFR_RNDN);
-            mpfr_div(fb, fb, fd, MPFR_RNDN);
+            /* Approach speed at contact: (d + v t).v / R = -sqrt(b^2 - ac) / R.
+             * One rounding of |d| moves the contact time by ulp(|d|) / that. */
+            mpfr_set_q(fb, disc, MPFR_RNDN);
+            mpfr_sqrt(fb, fb, MPFR_RNDN);
+            mpfr_div_d(fb, fb, radius_sum, MPFR_RNDN);
             {
                 double dist = mpfr_get_d(fd, MPFR_RNDN);
                 double close = mpfr_get_d(fb, MPFR_RNDN);

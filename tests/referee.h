@@ -43,7 +43,8 @@ double ref_err_ulp(double got, const mpq_t exact, double ulp);
 double ref_collide_err(const ref_case *c, const ref_answer *r, const double got[4], int prec, int emin);
 
 /* Time of impact: status and t (rounded to double from 256-bit MPFR).  Also
- * returns the tolerance unit: ulp(t) + ulp(|d|) / closing speed. */
+ * returns the tolerance unit: ulp(t) + ulp(|d|) / (approach speed at contact,
+ * sqrt(b^2 - ac) / R): the time one rounding of the distance is worth. */
 c2d_status ref_time_of_impact(const ref_case *c, double radius_sum, double *t, double *unit, int prec, int emin);
 
 /* Exact (mpq) momentum and energy error of a collision result relative to

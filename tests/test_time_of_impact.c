@@ -1,0 +1,193 @@
+/* c2d_time_of_impact(f): closed cases, then random cases against a 256-bit
+ * MPFR referee, unit-scale and scaled over the whole range.  Bound: 4 units
+ * of (ulp(t) + ulp(|d|) / closing speed), the documented accuracy. */
+#include "check.h"
+
+#define CASES 30000
+#define BOUND_UNITS 4.0
+
+static c2d_body body(double px, double py, double vx, double vy)
+{
+    c2d_body b;
+    b.pos.x = px, b.pos.y = py, b.vel.x = vx, b.vel.y = vy, b.mass = 1;
+    return b;
+}
+
+static void test_head_on_time_is_gap_over_closing_speed(void **state)
+{
+    c2d_body a = body(0, 0, 1, 0), b = body(10, 0, -1, 0);
+    double t = -1;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_OK);
+    assert_close(t, 4, 0);
+}
+
+static void test_miss_receding_and_no_motion_are_separating(void **state)
+{
+    c2d_body a = body(0, 0, 1, 0), b = body(10, 5, 0, 0), still = body(10, 0, 1, 0);
+    double t = 123;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_SEPARATING);
+    b = body(10, 0, 2, 0);
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_SEPARATING);
+    assert_status(c2d_time_of_impact(&a, &still, 2, &t), C2D_SEPARATING);
+    assert_close(t, 123, 0); /* untouched */
+}
+
+static void test_overlapping_pair_impacts_now_only_when_approaching(void **state)
+{
+    c2d_body a = body(0, 0, 1, 0), b = body(1, 0, 0, 0);
+    double t = 5;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_OK);
+    assert_close(t, 0, 0);
+    a.vel.x = -1;
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_SEPARATING);
+}
+
+static void test_bad_arguments_are_invalid(void **state)
+{
+    c2d_body a = body(0, 0, 1, 0), b = body(10, 0, 0, 0);
+    double t = 7;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, -1, &t), C2D_INVALID);
+    assert_status(c2d_time_of_impact(&a, &b, NAN, &t), C2D_INVALID);
+    assert_status(c2d_time_of_impact(&a, &b, INFINITY, &t), C2D_INVALID);
+    assert_status(c2d_time_of_impact(&a, &b, 1, NULL), C2D_INVALID);
+    a.vel.y = NAN;
+    assert_status(c2d_time_of_impact(&a, &b, 1, &t), C2D_INVALID);
+    assert_close(t, 7, 0);
+}
+
+/* Disks 1e6 radii apart: the textbook b^2 - ac cancels to nothing here. */
+static void test_far_apart_small_disks_keep_full_accuracy(void **state)
+{
+    ref_case c = {{0, 0}, {1e6, 0.75}, {1, 0}, {0, 0}, 1, 1, {0, 0}, 0, 1};
+    c2d_body a = body(0, 0, 1, 0), b = body(1e6, 0.75, 0, 0);
+    double t, want, unit;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 1, &t), C2D_OK);
+    assert_status(ref_time_of_impact(&c, 1, &want, &unit, 53, -1022), C2D_OK);
+    assert_close(t, want, BOUND_UNITS * unit);
+}
+
+static void test_time_overflowing_double_is_range(void **state)
+{
+    c2d_body a = body(-1e300, 0, 1e-300, 0), b = body(1e300, 0, 0, 0);
+    double t = 1;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 1, &t), C2D_RANGE);
+    assert_close(t, 1, 0);
+}
+
+static void gen_toi(rng *r, ref_case *c, double *radius, int scale_pos, int scale_vel)
+{
+    double ang = rng_range(r, 0, 6.283185307179586), dist = exp(rng_range(r, 0, log(1e6)));
+    double aim = rng_range(r, -1.5, 1.5), speed = rng_range(r, 0.1, 10);
+    c->pa[0] = rng_range(r, -10, 10);
+    c->pa[1] = rng_range(r, -10, 10);
+    c->pb[0] = c->pa[0] + dist * cos(ang);
+    c->pb[1] = c->pa[1] + dist * sin(ang);
+    /* relative velocity pointed roughly at a, so many hit, some miss */
+    c->va[0] = rng_range(r, -1, 1), c->va[1] = rng_range(r, -1, 1);
+    c->vb[0] = c->va[0] - speed * cos(ang + aim * 0.01 * (rng_next(r) % 4 == 0 ? 100 : 1));
+    c->vb[1] = c->va[1] - speed * sin(ang + aim * 0.01 * (rng_next(r) % 4 == 0 ? 100 : 1));
+    *radius = rng_range(r, 0.1, 3) * (rng_next(r) % 3 == 0 ? dist * 0.5 : 1);
+    c->pa[0] = ldexp(c->pa[0], scale_pos), c->pa[1] = ldexp(c->pa[1], scale_pos);
+    c->pb[0] = ldexp(c->pb[0], scale_pos), c->pb[1] = ldexp(c->pb[1], scale_pos);
+    *radius = ldexp(*radius, scale_pos);
+    c->va[0] = ldexp(c->va[0], scale_vel), c->va[1] = ldexp(c->va[1], scale_vel);
+    c->vb[0] = ldexp(c->vb[0], scale_vel), c->vb[1] = ldexp(c->vb[1], scale_vel);
+}
+
+static void run_random(int is_float, int extreme, uint64_t seed)
+{
+    rng r;
+    int i, hits = 0, prec = is_float ? 24 : 53, emin = is_float ? -126 : -1022, emax = is_float ? 100 : 1000;
+    double worst = 0;
+    r.s = seed;
+    for (i = 0; i < CASES; i++) {
+        ref_case c;
+        double radius, want = 0, unit = 0, t = -1, err;
+        c2d_status got, exp_st;
+        int sp = extreme ? (int)(rng_next(&r) % (uint64_t)(2 * emax)) - emax : 0;
+        int sv = extreme ? (int)(rng_next(&r) % (uint64_t)(2 * emax)) - emax : 0;
+        gen_toi(&r, &c, &radius, sp, sv);
+        if (is_float) {
+            c2d_bodyf a, b;
+            float tf = -1;
+            int k;
+            for (k = 0; k < 2; k++) {
+                c.pa[k] = (float)c.pa[k], c.pb[k] = (float)c.pb[k], c.va[k] = (float)c.va[k], c.vb[k] = (float)c.vb[k];
+            }
+            radius = (float)radius;
+            case_to_bodiesf(&c, &a, &b);
+            got = c2d_time_of_impactf(&a, &b, (float)radius, &tf);
+            t = tf;
+        } else {
+            c2d_body a, b;
+            case_to_bodies(&c, &a, &b);
+            got = c2d_time_of_impact(&a, &b, radius, &t);
+        }
+        exp_st = ref_time_of_impact(&c, radius, &want, &unit, prec, emin);
+        if (exp_st == C2D_OK && want > (is_float ? FLT_MAX : DBL_MAX)) exp_st = C2D_RANGE;
+        if (got != exp_st) {
+            print_error("pa=(%a,%a) pb=(%a,%a) va=(%a,%a) vb=(%a,%a) R=%a\n", c.pa[0], c.pa[1], c.pb[0], c.pb[1],
+                        c.va[0], c.va[1], c.vb[0], c.vb[1], radius);
+            assert_status(got, exp_st);
+        }
+        if (got != C2D_OK) continue;
+        hits++;
+        err = fabs(t - want) / unit;
+        if (!(err <= BOUND_UNITS)) {
+            print_error("t=%a want %a err %.2f units: pa=(%a,%a) pb=(%a,%a) va=(%a,%a) vb=(%a,%a) R=%a\n", t, want,
+                        err, c.pa[0], c.pa[1], c.pb[0], c.pb[1], c.va[0], c.va[1], c.vb[0], c.vb[1], radius);
+            fail();
+        }
+        if (err > worst) worst = err;
+    }
+    assert_true(hits > CASES / 10);
+    print_message("%s %s: %d impacts, worst %.2f units of (ulp(t) + ulp(|d|)/closing speed)\n",
+                  is_float ? "float " : "double", extreme ? "scaled over the range" : "unit scale", hits, worst);
+}
+
+static void test_double_time_of_impact_matches_referee(void **state)
+{
+    (void)state;
+    run_random(0, 0, 201);
+}
+
+static void test_double_time_of_impact_matches_referee_at_extreme_scales(void **state)
+{
+    (void)state;
+    run_random(0, 1, 202);
+}
+
+static void test_float_time_of_impact_matches_referee(void **state)
+{
+    (void)state;
+    run_random(1, 0, 203);
+}
+
+static void test_float_time_of_impact_matches_referee_at_extreme_scales(void **state)
+{
+    (void)state;
+    run_random(1, 1, 204);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_head_on_time_is_gap_over_closing_speed),
+        cmocka_unit_test(test_miss_receding_and_no_motion_are_separating),
+        cmocka_unit_test(test_overlapping_pair_impacts_now_only_when_approaching),
+        cmocka_unit_test(test_bad_arguments_are_invalid),
+        cmocka_unit_test(test_far_apart_small_disks_keep_full_accuracy),
+        cmocka_unit_test(test_time_overflowing_double_is_range),
+        cmocka_unit_test(test_double_time_of_impact_matches_referee),
+        cmocka_unit_test(test_double_time_of_impact_matches_referee_at_extreme_scales),
+        cmocka_unit_test(test_float_time_of_impact_matches_referee),
+        cmocka_unit_test(test_float_time_of_impact_matches_referee_at_extreme_scales),
+    };
+    return cmocka_run_group_tests_name("time_of_impact", tests, NULL, NULL);
+}
