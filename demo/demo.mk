@@ -4,11 +4,12 @@
 #   make play        build and open the window
 #   make test-demo   the demo's tests (part of `make test`)
 #   make demo-plots  regenerate docs/billiards.png, docs/energy.png, docs/gas_histogram.png
-# Screenshots use demo/png.cpp (a stored-deflate PNG writer), so neither
-# libpng nor zlib is needed.
+# Screenshots use demo/png.cpp (a stored-deflate PNG writer), so the demo
+# needs neither libpng nor zlib; only the tests' checker decodes with libpng,
+# an independent reader of what the writer produced.
 
 DEMO_DEPS := libbox2d-dev libsdl2-dev
-DEMO_TEST_DEPS := xvfb xauth
+DEMO_TEST_DEPS := xvfb xauth libpng-dev
 DEMO_PLOT_DEPS := gnuplot-nox
 DEMO_SRC := demo/main.cpp demo/sim.cpp demo/render.cpp demo/png.cpp
 DEMO_HDR := demo/sim.h demo/render.h demo/png.h
@@ -39,8 +40,12 @@ demo: $(DEMO_BIN)
 play: $(DEMO_BIN)
 	$(DEMO_BIN)
 
-test-demo: $(DEMO_BIN) | demo-test-deps
-	sh demo/test_demo.sh $(DEMO_BIN)
+$(B)/png_check: demo/png_check.cpp | demo-test-deps
+	@mkdir -p $(@D)
+	$(CXX) $(DEMO_CXXFLAGS) -o $@ $< -lpng
+
+test-demo: $(DEMO_BIN) $(B)/png_check | demo-test-deps
+	sh demo/test_demo.sh $(DEMO_BIN) $(B)/png_check
 
 demo-plots: $(DEMO_BIN)
 	@sh scripts/deps.sh $(DEMO_PLOT_DEPS)

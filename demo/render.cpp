@@ -185,7 +185,7 @@ bool have_display(std::string &reason) {
     const char *driver = SDL_GetCurrentVideoDriver();
     if (!driver || !std::strcmp(driver, "offscreen") || !std::strcmp(driver, "dummy")) {
         reason = std::string("no display (SDL video driver '") + (driver ? driver : "none") + "')";
-        SDL_QuitSubSystem(SDL_INIT_VIDEO);
+        SDL_Quit();
         return false;
     }
     return true;
@@ -197,7 +197,7 @@ struct Window {
     ~Window() {
         if (renderer) SDL_DestroyRenderer(renderer);
         if (window) SDL_DestroyWindow(window);
-        SDL_QuitSubSystem(SDL_INIT_VIDEO);
+        SDL_Quit();  // also closes SDL's D-Bus connection
     }
 };
 

@@ -155,7 +155,6 @@ struct Waypoint {
 
 struct FrameLog {
     std::vector<uint64_t> contacts;    // pairs resolved this frame
-    std::vector<int> removed;          // balls pocketed this frame
     std::vector<Waypoint> waypoints;   // exact engine only: Box2D moves straight per step
 };
 
@@ -174,6 +173,7 @@ namespace {
 // --- exact engine: Box2D's dynamic tree for candidates, collide2d for the rest
 
 enum ProxyKind { kBallProxy = 0, kCushionProxy = 1, kJawProxy = 2, kPocketProxy = 3 };
+constexpr int kSweepExpires = 4;  // event kind: a ball's swept box runs out
 
 struct Event {
     double t;
@@ -187,11 +187,16 @@ struct Event {
     }
 };
 
+// Event-driven: the queue of impacts persists across frames.  Each moving
+// ball's proxy in Box2D's dynamic tree covers its straight path over a
+// horizon of a few diameters; a ball re-queries the tree when its motion
+// changes or its horizon runs out, so a pair is always found by whichever of
+// the two swept last.
 class ExactEngine : public Engine {
 public:
     ExactEngine(const std::vector<Ball> &balls, const Table &table, bool lossless);
     void step(double dt, Stats &stats, FrameLog &log) override;
-    void velocities_changed() override {}
+    void velocities_changed() override;
     void ball_placed(int i) override;
 
     bool QueryCallback(int32 proxy);
@@ -206,18 +211,21 @@ private:
     void event_with_point(int i, double px, double py, double radius, int kind, int index);
     void push(double t, int i, int kind, int b);
     bool resolve(const Event &e, Stats &stats, FrameLog &log);
+    void motion_changed(int i);
     void remove(int i);
+    void restart();
 
     const Table table_;
     double e_ball_, e_cushion_;
     std::vector<double> jaw_x_, jaw_y_;
-    std::vector<double> tb_;        // time (within the frame) of the stored position
-    std::vector<unsigned> gen_;     // bumped whenever a ball's motion changes
+    std::vector<double> tb_;         // time of the stored position
+    std::vector<double> horizon_;    // end of the ball's swept box
+    std::vector<unsigned> gen_;      // bumped whenever a ball's motion changes
     std::vector<int32> proxy_;
-    std::vector<b2AABB> swept_;     // each ball's path to the end of the frame
+    std::vector<b2AABB> swept_;
     b2DynamicTree tree_;
     std::priority_queue<Event, std::vector<Event>, std::greater<Event>> queue_;
-    double now_ = 0, dt_ = 0;
+    double now_ = 0;
     std::vector<int32> hits_;
 };
 
@@ -231,11 +239,13 @@ ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, boo
       e_cushion_(lossless ? 1.0 : kCushionRestitution) {
     balls_ = balls;
     tb_.assign(balls.size(), 0.0);
+    horizon_.assign(balls.size(), 0.0);
     gen_.assign(balls.size(), 0u);
     proxy_.assign(balls.size(), b2_nullNode);
     swept_.resize(balls.size());
     insert_statics();
     for (size_t i = 0; i < balls_.size(); ++i) ball_placed(static_cast<int>(i));
+    restart();
 }
 
 void ExactEngine::insert_statics() {
@@ -260,8 +270,11 @@ void ExactEngine::insert_statics() {
 
 void ExactEngine::ball_placed(int i) {
     const Ball &b = balls_[static_cast<size_t>(i)];
-    if (proxy_[static_cast<size_t>(i)] == b2_nullNode && b.active)
-        proxy_[static_cast<size_t>(i)] = tree_.CreateProxy(aabb_of_disk_path(b.x, b.y, b.x, b.y, kBallRadius), tag(kBallProxy, i));
+    if (proxy_[static_cast<size_t>(i)] != b2_nullNode || !b.active) return;
+    tb_[static_cast<size_t>(i)] = now_;
+    horizon_[static_cast<size_t>(i)] = INFINITY;
+    swept_[static_cast<size_t>(i)] = aabb_of_disk_path(b.x, b.y, b.x, b.y, kBallRadius);
+    proxy_[static_cast<size_t>(i)] = tree_.CreateProxy(swept_[static_cast<size_t>(i)], tag(kBallProxy, i));
 }
 
 void ExactEngine::advance(int i, double t) {
@@ -274,16 +287,20 @@ void ExactEngine::advance(int i, double t) {
     tb_[static_cast<size_t>(i)] = t;
 }
 
-// The ball's proxy covers its straight path to the end of the frame, so any
-// pair whose paths can meet before the frame ends overlaps in the tree.
+// The box spans the straight path for a few diameters (at least a frame), so
+// fast balls re-query often and slow ones rarely.
 void ExactEngine::sweep(int i) {
+    advance(i, now_);
     const Ball &b = balls_[static_cast<size_t>(i)];
-    const double h = dt_ - now_;
-    const double x1 = b.x + b.vx * h, y1 = b.y + b.vy * h;
-    swept_[static_cast<size_t>(i)] = aabb_of_disk_path(b.x, b.y, x1, y1, kBallRadius);
+    const double speed = std::hypot(b.vx, b.vy);
+    const double h = speed > 0 ? std::min(1.0, std::max(kFrameDt, 2 * kBallDiameter / speed)) : INFINITY;
+    const double reach = speed > 0 ? h : 0.0;
+    swept_[static_cast<size_t>(i)] = aabb_of_disk_path(b.x, b.y, b.x + b.vx * reach, b.y + b.vy * reach, kBallRadius);
+    horizon_[static_cast<size_t>(i)] = now_ + h;
     // no displacement hint: the box already spans the motion, and Box2D would
     // stretch it by four times the hint, making every query slower
     tree_.MoveProxy(proxy_[static_cast<size_t>(i)], swept_[static_cast<size_t>(i)], b2Vec2(0, 0));
+    if (speed > 0) queue_.push(Event{now_ + h, i, kSweepExpires, -1, gen_[static_cast<size_t>(i)], 0u});
 }
 
 bool ExactEngine::QueryCallback(int32 proxy) {
@@ -292,7 +309,7 @@ bool ExactEngine::QueryCallback(int32 proxy) {
 }
 
 void ExactEngine::push(double t, int i, int kind, int b) {
-    if (t > dt_) return;
+    if (t > horizon_[static_cast<size_t>(i)]) return;  // re-found when the box is renewed
     const unsigned gb = kind == kBallProxy ? gen_[static_cast<size_t>(b)] : 0u;
     queue_.push(Event{t, i, kind, b, gen_[static_cast<size_t>(i)], gb});
 }
@@ -329,8 +346,8 @@ void ExactEngine::event_with_point(int i, double px, double py, double radius, i
     if (c2d_time_of_impact(&a, &p, radius, &t) == C2D_OK) push(now_ + t, i, kind, index);
 }
 
-// initial: each ball-ball pair is found once, by its lower index or by the
-// moving ball when the other is at rest (resting balls do not query).
+// Ball i must be at now_.  initial: every ball is being swept at once, so a
+// pair of moving balls is left to its lower index.
 void ExactEngine::find_events(int i, bool initial) {
     hits_.clear();
     tree_.Query(this, swept_[static_cast<size_t>(i)]);
@@ -362,6 +379,29 @@ void ExactEngine::remove(int i) {
     tree_.DestroyProxy(proxy_[static_cast<size_t>(i)]);
     proxy_[static_cast<size_t>(i)] = b2_nullNode;
     ++gen_[static_cast<size_t>(i)];
+}
+
+// Every ball's motion may have changed (shot, rolling resistance): forget all
+// events and find them again.
+void ExactEngine::restart() {
+    queue_ = {};
+    const int n = static_cast<int>(balls_.size());
+    for (int i = 0; i < n; ++i) {
+        if (!balls_[static_cast<size_t>(i)].active) continue;
+        ++gen_[static_cast<size_t>(i)];
+        sweep(i);
+    }
+    for (int i = 0; i < n; ++i) {
+        const Ball &b = balls_[static_cast<size_t>(i)];
+        if (b.active && (b.vx != 0 || b.vy != 0)) find_events(i, true);
+    }
+}
+
+void ExactEngine::velocities_changed() { restart(); }
+
+void ExactEngine::motion_changed(int i) {
+    ++gen_[static_cast<size_t>(i)];
+    sweep(i);
 }
 
 // Returns whether the ball(s) changed motion (and need new events).
@@ -396,7 +436,6 @@ bool ExactEngine::resolve(const Event &e, Stats &stats, FrameLog &log) {
     } else {
         remove(e.a);
         ++stats.pocketed;
-        log.removed.push_back(e.a);
         return false;
     }
     a.vx = ba.vel.x;
@@ -405,44 +444,44 @@ bool ExactEngine::resolve(const Event &e, Stats &stats, FrameLog &log) {
 }
 
 void ExactEngine::step(double dt, Stats &stats, FrameLog &log) {
-    dt_ = dt;
-    now_ = 0;
-    const int n = static_cast<int>(balls_.size());
-    queue_ = {};
-    for (int i = 0; i < n; ++i) {
-        tb_[static_cast<size_t>(i)] = 0;
-        if (balls_[static_cast<size_t>(i)].active) sweep(i);
-    }
-    for (int i = 0; i < n; ++i) {
-        const Ball &b = balls_[static_cast<size_t>(i)];
-        if (b.active && (b.vx != 0 || b.vy != 0)) find_events(i, true);
-    }
-    // Every event either removes a ball or makes a pair separate, but chains
-    // of simultaneous contacts (inelastic collapse) could go on for ever.
-    const long budget = 10000 + 100L * n;
+    const double frame_start = now_, frame_end = now_ + dt;
+    // Every impact makes a pair separate or removes a ball, but chains of
+    // simultaneous contacts (inelastic collapse) could go on for ever.
+    const long budget = 10000 + 100L * static_cast<long>(balls_.size());
     long processed = 0;
-    while (!queue_.empty()) {
+    bool exhausted = false;
+    while (!queue_.empty() && queue_.top().t <= frame_end) {
         const Event e = queue_.top();
         queue_.pop();
         if (e.gen_a != gen_[static_cast<size_t>(e.a)]) continue;
         if (e.kind == kBallProxy && e.gen_b != gen_[static_cast<size_t>(e.b)]) continue;
         if (++processed > budget) {
-            ++stats.event_cap_frames;
+            exhausted = true;
             break;
         }
         now_ = e.t;
+        if (e.kind == kSweepExpires) {
+            sweep(e.a);
+            find_events(e.a, false);
+            continue;
+        }
         if (!resolve(e, stats, log)) continue;
-        ++gen_[static_cast<size_t>(e.a)];
-        sweep(e.a);
+        motion_changed(e.a);
         if (e.kind == kBallProxy) {
-            ++gen_[static_cast<size_t>(e.b)];
-            sweep(e.b);
+            motion_changed(e.b);
             find_events(e.b, false);
         }
         find_events(e.a, false);
     }
-    for (int i = 0; i < n; ++i)
-        if (balls_[static_cast<size_t>(i)].active) advance(i, dt);
+    now_ = frame_end;
+    for (size_t i = 0; i < balls_.size(); ++i)
+        if (balls_[i].active) advance(static_cast<int>(i), frame_end);
+    // waypoint times are relative to the frame for the checker
+    for (Waypoint &w : log.waypoints) w.t -= frame_start;
+    if (exhausted) {
+        ++stats.event_cap_frames;
+        restart();
+    }
 }
 
 // --- Box2D's own solver, for comparison
@@ -460,7 +499,7 @@ public:
 
 private:
     static int ball_index(b2Fixture *f);
-    void drop_pocketed(Stats &stats, FrameLog &log);
+    void drop_pocketed(Stats &stats);
 
     b2World world_;
     std::vector<b2Body *> bodies_;
@@ -559,7 +598,7 @@ void Box2dEngine::PostSolve(b2Contact *contact, const b2ContactImpulse *) {
     if (a >= 0 && b >= 0) log_->contacts.push_back(pair_key(a, b));
 }
 
-void Box2dEngine::drop_pocketed(Stats &stats, FrameLog &log) {
+void Box2dEngine::drop_pocketed(Stats &stats) {
     std::vector<int> drop;
     for (b2Contact *c = world_.GetContactList(); c; c = c->GetNext()) {
         const int a = ball_index(c->GetFixtureA()), b = ball_index(c->GetFixtureB());
@@ -578,7 +617,6 @@ void Box2dEngine::drop_pocketed(Stats &stats, FrameLog &log) {
         bodies_[static_cast<size_t>(i)] = nullptr;
         balls_[static_cast<size_t>(i)].active = false;
         ++stats.pocketed;
-        log.removed.push_back(i);
     }
 }
 
@@ -594,7 +632,7 @@ void Box2dEngine::step(double dt, Stats &stats, FrameLog &log) {
         balls_[i].vx = v.x / kUnitsPerMetre;
         balls_[i].vy = v.y / kUnitsPerMetre;
     }
-    drop_pocketed(stats, log);
+    drop_pocketed(stats);
 }
 
 }  // namespace
@@ -606,16 +644,12 @@ void Box2dEngine::step(double dt, Stats &stats, FrameLog &log) {
 // of the two paths) and out the other side, without a contact the engine
 // resolved, is a tunnelled pair.  Overlaps are measured at the frame's end.
 struct Simulation::Checker {
-    b2DynamicTree tree;
-    std::vector<int32> proxy;
-    std::vector<b2AABB> box;
-    std::vector<int32> hits;
+    struct Box { double x0, y0, x1, y1; };
+    std::vector<Box> box;              // each live ball's path this frame, plus its radius
+    std::vector<char> live;
     std::vector<Waypoint> points;      // this frame's waypoints, sorted by ball then time
     std::vector<size_t> first;         // points[first[i] .. first[i+1]) belong to ball i
-    bool QueryCallback(int32 p) {
-        hits.push_back(p);
-        return true;
-    }
+    std::vector<size_t> cell_of, cell_start, by_cell;
 };
 
 namespace {
@@ -665,7 +699,10 @@ bool entered(const Path &a, const Path &b) {
         piece_body(a, t0, t1, pa);
         piece_body(b, t0, t1, pb);
         double t;
-        if (c2d_time_of_impact(&pa, &pb, kBallDiameter, &t) == C2D_OK && t < t1 - t0) return true;
+        // Positions carry rounding, and a piece can be 1e-17 s long, so its
+        // velocity is noise: count only a real entry, deeper than 1e-9 of a
+        // diameter (a pair that crosses goes a whole diameter deep).
+        if (c2d_time_of_impact(&pa, &pb, kBallDiameter * (1 - 1e-9), &t) == C2D_OK && t < t1 - t0) return true;
     }
     return false;
 }
@@ -693,48 +730,84 @@ void Simulation::index_waypoints(size_t n) {
     for (size_t i = 0; i < n; ++i) c.first[i + 1] += c.first[i];
 }
 
+// Candidate pairs for the checker come from a uniform grid, not from Box2D,
+// so the check shares nothing with the engines.  Cells are at least as wide
+// as the largest path box: boxes that overlap sit in neighbouring cells.
+template <typename Visit>
+void Simulation::for_each_close_pair(Visit visit) {
+    Checker &c = *checker_;
+    const size_t n = c.box.size();
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, cell = kBallDiameter;
+    for (size_t i = 0; i < n; ++i) {
+        if (!c.live[i]) continue;
+        const Checker::Box &b = c.box[i];
+        x0 = std::min(x0, b.x0), y0 = std::min(y0, b.y0), x1 = std::max(x1, b.x1), y1 = std::max(y1, b.y1);
+        cell = std::max(cell, std::max(b.x1 - b.x0, b.y1 - b.y0));
+    }
+    if (!(x0 <= x1)) return;
+    cell = std::max(cell, std::max(x1 - x0, y1 - y0) / 2048);  // bounded grid, whatever the spread
+    const size_t nx = static_cast<size_t>((x1 - x0) / cell) + 1, ny = static_cast<size_t>((y1 - y0) / cell) + 1;
+    c.cell_of.assign(n, 0);
+    c.cell_start.assign(nx * ny + 1, 0);
+    auto cell_x = [&](const Checker::Box &b) { return std::min(nx - 1, static_cast<size_t>((0.5 * (b.x0 + b.x1) - x0) / cell)); };
+    auto cell_y = [&](const Checker::Box &b) { return std::min(ny - 1, static_cast<size_t>((0.5 * (b.y0 + b.y1) - y0) / cell)); };
+    for (size_t i = 0; i < n; ++i) {
+        if (!c.live[i]) continue;
+        c.cell_of[i] = cell_y(c.box[i]) * nx + cell_x(c.box[i]);
+        ++c.cell_start[c.cell_of[i] + 1];
+    }
+    for (size_t k = 0; k < nx * ny; ++k) c.cell_start[k + 1] += c.cell_start[k];
+    c.by_cell.assign(c.cell_start[nx * ny], 0);
+    std::vector<size_t> fill(c.cell_start.begin(), c.cell_start.end() - 1);
+    for (size_t i = 0; i < n; ++i)
+        if (c.live[i]) c.by_cell[fill[c.cell_of[i]]++] = i;
+    for (size_t i = 0; i < n; ++i) {
+        if (!c.live[i]) continue;
+        const Checker::Box &bi = c.box[i];
+        const size_t cx = c.cell_of[i] % nx, cy = c.cell_of[i] / nx;
+        for (size_t gy = cy ? cy - 1 : 0; gy <= std::min(ny - 1, cy + 1); ++gy)
+            for (size_t gx = cx ? cx - 1 : 0; gx <= std::min(nx - 1, cx + 1); ++gx)
+                for (size_t k = c.cell_start[gy * nx + gx]; k < c.cell_start[gy * nx + gx + 1]; ++k) {
+                    const size_t j = c.by_cell[k];
+                    const Checker::Box &bj = c.box[j];
+                    if (j > i && bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) visit(i, j);
+                }
+    }
+}
+
 void Simulation::check_frame(const std::vector<Ball> &before, double dt) {
     const std::vector<Ball> &after = engine_->balls_;
     Checker &c = *checker_;
     const size_t n = after.size();
     index_waypoints(n);
-    auto path = [&](size_t i) {
-        return Path{&before[i], &after[i], c.points.data() + c.first[i], c.points.data() + c.first[i + 1], dt};
-    };
+    c.box.resize(n);
+    c.live.assign(n, 0);
     for (size_t i = 0; i < n; ++i) {
-        const bool live = before[i].active && after[i].active;
-        if (!live) {
-            if (c.proxy[i] != b2_nullNode) c.tree.DestroyProxy(c.proxy[i]);
-            c.proxy[i] = b2_nullNode;
-            continue;
+        if (!before[i].active || !after[i].active) continue;
+        c.live[i] = 1;
+        Checker::Box &b = c.box[i];
+        b = {std::min(before[i].x, after[i].x), std::min(before[i].y, after[i].y), std::max(before[i].x, after[i].x),
+             std::max(before[i].y, after[i].y)};
+        for (size_t k = c.first[i]; k < c.first[i + 1]; ++k) {
+            b.x0 = std::min(b.x0, c.points[k].x), b.y0 = std::min(b.y0, c.points[k].y);
+            b.x1 = std::max(b.x1, c.points[k].x), b.y1 = std::max(b.y1, c.points[k].y);
         }
-        b2AABB &box = c.box[i];
-        box = aabb_of_disk_path(before[i].x, before[i].y, after[i].x, after[i].y, kBallRadius);
-        for (size_t k = c.first[i]; k < c.first[i + 1]; ++k)
-            box.Combine(aabb_of_disk_path(c.points[k].x, c.points[k].y, c.points[k].x, c.points[k].y, kBallRadius));
-        if (c.proxy[i] == b2_nullNode)
-            c.proxy[i] = c.tree.CreateProxy(box, tag(kBallProxy, static_cast<int>(i)));
-        else
-            c.tree.MoveProxy(c.proxy[i], box, b2Vec2(0, 0));
+        b.x0 -= kBallRadius, b.y0 -= kBallRadius, b.x1 += kBallRadius, b.y1 += kBallRadius;
         stats_.max_overlap = std::max(stats_.max_overlap, cushion_overlap(after[i], table_));
     }
     std::vector<uint64_t> &resolved = frame_log_->contacts;
     std::sort(resolved.begin(), resolved.end());
-    for (size_t i = 0; i < n; ++i) {
-        if (c.proxy[i] == b2_nullNode) continue;
-        c.hits.clear();
-        c.tree.Query(&c, c.box[i]);
-        for (int32 p : c.hits) {
-            const size_t j = reinterpret_cast<uintptr_t>(c.tree.GetUserData(p)) >> 2;
-            if (j <= i) continue;
-            const double gap = std::hypot(after[j].x - after[i].x, after[j].y - after[i].y);
-            stats_.max_overlap = std::max(stats_.max_overlap, (kBallDiameter - gap) / kBallDiameter);
-            // crossed: came into contact during the frame and is out the other side
-            if (gap > kBallDiameter && entered(path(i), path(j)) &&
-                !std::binary_search(resolved.begin(), resolved.end(), pair_key(static_cast<int>(i), static_cast<int>(j))))
-                ++stats_.tunnelled;
-        }
-    }
+    auto path = [&](size_t i) {
+        return Path{&before[i], &after[i], c.points.data() + c.first[i], c.points.data() + c.first[i + 1], dt};
+    };
+    for_each_close_pair([&](size_t i, size_t j) {
+        const double gap = std::hypot(after[j].x - after[i].x, after[j].y - after[i].y);
+        stats_.max_overlap = std::max(stats_.max_overlap, (kBallDiameter - gap) / kBallDiameter);
+        // crossed: came into contact during the frame and is out the other side
+        if (gap > kBallDiameter && entered(path(i), path(j)) &&
+            !std::binary_search(resolved.begin(), resolved.end(), pair_key(static_cast<int>(i), static_cast<int>(j))))
+            ++stats_.tunnelled;
+    });
 }
 
 // ---------------------------------------------------------------- simulation
@@ -758,8 +831,6 @@ Simulation::Simulation(const SimConfig &config) : config_(config), frame_log_(ne
     else
         engine_.reset(new ExactEngine(balls_initial_, table_, lossless()));
     escaped_flag_.assign(balls_initial_.size(), 0);
-    checker_->proxy.assign(balls_initial_.size(), b2_nullNode);
-    checker_->box.resize(balls_initial_.size());
 }
 
 Simulation::~Simulation() = default;
@@ -838,7 +909,6 @@ void Simulation::count_escaped() {
 void Simulation::step() {
     const std::vector<Ball> before = engine_->balls_;
     frame_log_->contacts.clear();
-    frame_log_->removed.clear();
     frame_log_->waypoints.clear();
     engine_->step(kFrameDt, stats_, *frame_log_);
     check_frame(before, kFrameDt);

@@ -97,6 +97,7 @@ public:
 private:
     void index_waypoints(size_t n);
     void check_frame(const std::vector<Ball> &before, double dt);
+    template <typename Visit> void for_each_close_pair(Visit visit);
     void count_escaped();
 
     SimConfig config_;
