@@ -113,6 +113,14 @@ const char *c2d_status_string(c2d_status status)
     }
 }
 
+/* The fast path must inline into each caller: called, it passes 11
+ * doubles, more than the registers hold, and costs a third of the work. */
+#ifdef __GNUC__
+#define C2D_HOT static inline __attribute__((always_inline))
+#else
+#define C2D_HOT static inline
+#endif
+
 /* Internal result of the fast path: its inputs are outside its safe window. */
 #define C2D_NEED_GENERAL 99
 /* Internal: inside the window, but d cancels; recompute d in double-double. */
@@ -401,14 +409,14 @@ c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed
 
 typedef union FN(c2d_pun) { R f; U u; } FN(c2d_pun);
 
-static U FN(c2d_bits)(R x)
+static inline U FN(c2d_bits)(R x)
 {
     FN(c2d_pun) p;
     p.f = x;
     return p.u;
 }
 
-static R FN(c2d_from_bits)(U u)
+static inline R FN(c2d_from_bits)(U u)
 {
     FN(c2d_pun) p;
     p.u = u;
@@ -529,6 +537,14 @@ static c2d_status FN(c2d_validate)(const BODY *a, const BODY *b, R e)
 
 /* ----------------------------------------------------------- fast path */
 
+/* x where keep is all ones, else 0, else 1.0 where one is all ones: a select
+ * by bit masks.  Written with ?: on doubles, gcc threads the selects into
+ * branches around the division below and the batch loop stops vectorising. */
+C2D_HOT R FN(c2d_pick)(R x, U keep, U one)
+{
+    return FN(c2d_from_bits)((FN(c2d_bits)(x) & keep) | (FN(c2d_bits)(RC(1.0)) & one));
+}
+
 /* From an accurate d = (vb - va).n to the new velocities, in plain
  * arithmetic with one division: wa = mb/(ma+mb) is folded into
  * c = (1+e) d / (|n|^2 (ma+mb)), la = c mb, lb = c ma.  An INFINITY mass
@@ -536,47 +552,71 @@ static c2d_status FN(c2d_validate)(const BODY *a, const BODY *b, R e)
  * out = {va'x, va'y, vb'x, vb'y}.  Returns nonzero when every intermediate
  * stayed in the range where it is accurate to its rounding (no overflow, no
  * underflow that a later step would magnify); the caller falls back otherwise. */
-static inline int FN(c2d_finish)(R d, R nx, R ny, R ma, R mb, R e1, R vax, R vay, R vbx, R vby, R *out)
+C2D_HOT int FN(c2d_finish)(R d, R nx, R ny, R ma, R mb, R e1, R vax, R vay, R vbx, R vby, R *out)
 {
     const R lo = FN(c2d_pow2)(R_EMIN + 2), lo_nn = FN(c2d_pow2)(R_EMIN + R_MANT + 2);
     const int ia = ma > R_MAX, ib = mb > R_MAX;
-    const R fa = ib ? RC(0.0) : (ia ? RC(1.0) : ma); /* a's mass as b feels it */
-    const R fb = ia ? RC(0.0) : (ib ? RC(1.0) : mb);
+    /* a's mass as b feels it: 0 against an immovable b, 1 when a is immovable */
+    const R fa = FN(c2d_pick)(ma, (U)0 - (U)(!ia & !ib), (U)0 - (U)(ia & !ib));
+    const R fb = FN(c2d_pick)(mb, (U)0 - (U)(!ia & !ib), (U)0 - (U)(ib & !ia));
     const R nn = nx * nx + ny * ny;
     const R den = nn * (fa + fb);
     const R c = e1 * d / den;
     const R la = c * fb, lb = c * fa;
-    const R ac = FN(c2d_abs)(c), ala = FN(c2d_abs)(la), alb = FN(c2d_abs)(lb);
+    const R ac = FN(c2d_abs)(c);
     out[0] = vax + la * nx;
     out[1] = vay + la * ny;
     out[2] = vbx - lb * nx;
     out[3] = vby - lb * ny;
-    /* & rather than &&: one flag, no branches to mispredict. */
-    return (ma > 0) & (mb > 0) & !(ia & ib) & (nn >= lo_nn) & (den >= lo) & (den <= R_MAX) &
-           (ac >= lo) & (ac <= R_MAX) & ((fb == 0) | (ala >= lo)) & ((fa == 0) | (alb >= lo)) &
-           (ala <= R_MAX) & (alb <= R_MAX);
+    /* & rather than &&: one flag, no branches to mispredict.  A lambda may
+     * be 0 only for an immovable body, never by underflow; two immovable
+     * bodies and NaN masses (ma > 0 fails) are refused. */
+    return (ma > 0) & (mb > 0) & !(ia & ib) & (nn >= lo_nn) & (den >= lo) & (den <= R_MAX) & (ac >= lo) &
+           (ac <= R_MAX) & ((FN(c2d_abs)(la) >= lo) | ia) & ((FN(c2d_abs)(lb) >= lo) | ib) &
+           (FN(c2d_abs)(la) <= R_MAX) & (FN(c2d_abs)(lb) <= R_MAX);
 }
 
+/* Flags of the fast path's verdict. */
+#define C2D_F_WINDOW 1   /* every intermediate in its safe range */
+#define C2D_F_CALM 2     /* little cancellation in d */
+#define C2D_F_APPROACH 4 /* d < 0 */
+#define C2D_F_FINITE 8   /* results finite */
+#define C2D_F_ALL (C2D_F_WINDOW | C2D_F_CALM | C2D_F_APPROACH | C2D_F_FINITE)
+
 /* Branch-free plain-arithmetic resolution for the common case: little
- * cancellation in d (|p_x| + |p_y| <= 2 |d| for p_i = (vb - va)_i n_i, so every
+ * cancellation in d (|p_x| + |p_y| <= 4 |d| for p_i = (vb - va)_i n_i, so every
  * rounding in d is within a few ulp of d itself) and the products within
- * [2^-EXP_K, 2^EXP_K].  Returns C2D_OK, C2D_SEPARATING, C2D_RANGE,
- * C2D_NEED_ACCURATE (only the cancellation test failed), or C2D_NEED_GENERAL
- * (outside the window; `out` is then meaningless).  NaN, Inf, masses <= 0,
- * a zero normal and two immovable bodies all fail the window, so any other
- * result implies valid inputs.  The batch kernel inlines exactly this
- * function: results are bit-identical to the scalar call. */
-static inline int FN(c2d_fast)(R nx, R ny, R vax, R vay, R vbx, R vby, R ma, R mb, R e1, R *out)
+ * [2^-EXP_K, 2^EXP_K].  Returns C2D_F_* flags; `out` holds the answer when
+ * all are set.  NaN, Inf, masses <= 0, a zero normal and two immovable
+ * bodies all fail the window, so a set window flag implies valid inputs.
+ * The batch kernel inlines exactly this function, so its results are
+ * bit-identical to the scalar call; comparisons are combined with & and |
+ * so that loop stays free of branches and vectorises. */
+C2D_HOT int FN(c2d_fast_flags)(R nx, R ny, R vax, R vay, R vbx, R vby, R ma, R mb, R e1, R *out)
 {
     const R k_lo = FN(c2d_pow2)(-R_EXP_K), k_hi = FN(c2d_pow2)(R_EXP_K);
     const R px = (vbx - vax) * nx, py = (vby - vay) * ny;
     const R d = px + py;
     const R k = FN(c2d_abs)(px) + FN(c2d_abs)(py);
-    const int ok = FN(c2d_finish)(d, nx, ny, ma, mb, e1, vax, vay, vbx, vby, out);
-    if (!(ok & (k >= k_lo) & (k <= k_hi))) return C2D_NEED_GENERAL;
-    if (!(k <= 2 * FN(c2d_abs)(d))) return C2D_NEED_ACCURATE;
-    if (d >= 0) return C2D_SEPARATING;
-    return FN(c2d_finite4)(out[0], out[1], out[2], out[3]) ? C2D_OK : C2D_RANGE;
+    const int window = FN(c2d_finish)(d, nx, ny, ma, mb, e1, vax, vay, vbx, vby, out) & (k >= k_lo) & (k <= k_hi);
+    const int calm = k <= 4 * FN(c2d_abs)(d);
+    const int finite = FN(c2d_finite4)(out[0], out[1], out[2], out[3]);
+    return window * C2D_F_WINDOW + calm * C2D_F_CALM + (d < 0) * C2D_F_APPROACH + finite * C2D_F_FINITE;
+}
+
+/* Flags to C2D_OK, C2D_SEPARATING, C2D_RANGE, C2D_NEED_ACCURATE (only the
+ * cancellation test failed) or C2D_NEED_GENERAL. */
+static inline int FN(c2d_fast_verdict)(int f)
+{
+    if (!(f & C2D_F_WINDOW)) return C2D_NEED_GENERAL;
+    if (!(f & C2D_F_CALM)) return C2D_NEED_ACCURATE;
+    if (!(f & C2D_F_APPROACH)) return C2D_SEPARATING;
+    return (f & C2D_F_FINITE) ? C2D_OK : C2D_RANGE;
+}
+
+C2D_HOT int FN(c2d_fast)(R nx, R ny, R vax, R vay, R vbx, R vby, R ma, R mb, R e1, R *out)
+{
+    return FN(c2d_fast_verdict)(FN(c2d_fast_flags)(nx, ny, vax, vay, vbx, vby, ma, mb, e1, out));
 }
 
 /* ---------------------------------------------- exact sums (general path) */
@@ -864,57 +904,54 @@ c2d_status FN(c2d_collide_normal)(BODY *a, BODY *b, VEC normal, R restitution)
 
 /* ------------------------------------------------------- batch kernel */
 
-#define C2D_BLOCK 8
+#define C2D_BLOCK 16
 
 size_t FN(c2d_collide_batch)(const PAIRS *p, size_t count, R restitution, c2d_status *status)
 {
-    size_t base = 0, done = 0;
-    int e_ok = restitution >= 0 && restitution <= 1;
-    R e1 = 1 + restitution;
+    size_t base, done = 0;
+    const int e_ok = restitution >= 0 && restitution <= 1;
+    const R e1 = 1 + restitution;
     if (p == NULL) return 0;
-    for (; base < count; base += C2D_BLOCK) {
+    for (base = 0; base < count; base += C2D_BLOCK) {
+        const R *pax = p->pos_ax + base, *pay = p->pos_ay + base;
+        const R *pbx = p->pos_bx + base, *pby = p->pos_by + base;
+        const R *vax = p->vel_ax + base, *vay = p->vel_ay + base;
+        const R *vbx = p->vel_bx + base, *vby = p->vel_by + base;
+        const R *ma = p->mass_a + base, *mb = p->mass_b + base;
         R out[4][C2D_BLOCK];
-        int st[C2D_BLOCK];
+        int flags[C2D_BLOCK];
         size_t j, width = count - base < C2D_BLOCK ? count - base : C2D_BLOCK;
         if (width == C2D_BLOCK && e_ok) {
-            /* Fixed trip count and no branches: vectorised at -O2. */
+            /* Fixed trip count, no branches: gcc and clang vectorise this at -O2. */
             for (j = 0; j < C2D_BLOCK; j++) {
-                size_t i = base + j;
                 R o[4];
-                st[j] = FN(c2d_fast)(p->pos_bx[i] - p->pos_ax[i], p->pos_by[i] - p->pos_ay[i],
-                                     p->vel_ax[i], p->vel_ay[i], p->vel_bx[i], p->vel_by[i],
-                                     p->mass_a[i], p->mass_b[i], e1, o);
+                flags[j] = FN(c2d_fast_flags)(pbx[j] - pax[j], pby[j] - pay[j], vax[j], vay[j], vbx[j], vby[j],
+                                              ma[j], mb[j], e1, o);
                 out[0][j] = o[0];
                 out[1][j] = o[1];
                 out[2][j] = o[2];
                 out[3][j] = o[3];
             }
         } else {
-            for (j = 0; j < width; j++) st[j] = C2D_NEED_GENERAL;
+            for (j = 0; j < width; j++) flags[j] = 0; /* all to the scalar call */
         }
         for (j = 0; j < width; j++) {
             size_t i = base + j;
-            c2d_status s;
-            if (st[j] == C2D_OK) {
+            int v = FN(c2d_fast_verdict)(flags[j]);
+            c2d_status s = C2D_OK;
+            if (v == C2D_SEPARATING || v == C2D_RANGE) {
+                s = (c2d_status)v;
+            } else if (v == C2D_OK) {
                 p->vel_ax[i] = out[0][j];
                 p->vel_ay[i] = out[1][j];
                 p->vel_bx[i] = out[2][j];
                 p->vel_by[i] = out[3][j];
-                s = C2D_OK;
-            } else if (st[j] == C2D_SEPARATING || st[j] == C2D_RANGE) {
-                s = (c2d_status)st[j];
             } else {
+                /* Everything else - separating, invalid, extreme - exactly as
+                 * the scalar call decides it. */
                 BODY a, b;
-                a.pos.x = p->pos_ax[i];
-                a.pos.y = p->pos_ay[i];
-                a.vel.x = p->vel_ax[i];
-                a.vel.y = p->vel_ay[i];
-                a.mass = p->mass_a[i];
-                b.pos.x = p->pos_bx[i];
-                b.pos.y = p->pos_by[i];
-                b.vel.x = p->vel_bx[i];
-                b.vel.y = p->vel_by[i];
-                b.mass = p->mass_b[i];
+                a.pos.x = pax[j], a.pos.y = pay[j], a.vel.x = vax[j], a.vel.y = vay[j], a.mass = ma[j];
+                b.pos.x = pbx[j], b.pos.y = pby[j], b.vel.x = vbx[j], b.vel.y = vby[j], b.mass = mb[j];
                 s = FN(c2d_collide)(&a, &b, restitution);
                 if (s == C2D_OK) {
                     p->vel_ax[i] = a.vel.x;
