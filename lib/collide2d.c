@@ -117,8 +117,10 @@ const char *c2d_status_string(c2d_status status)
  * doubles, more than the registers hold, and costs a third of the work. */
 #ifdef __GNUC__
 #define C2D_HOT static inline __attribute__((always_inline))
+#define C2D_COLD static __attribute__((noinline))
 #else
 #define C2D_HOT static inline
+#define C2D_COLD static
 #endif
 
 /* Internal result of the fast path: its inputs are outside its safe window. */
@@ -616,7 +618,8 @@ static inline int FN(c2d_fast_verdict)(int f)
 
 C2D_HOT int FN(c2d_fast)(R nx, R ny, R vax, R vay, R vbx, R vby, R ma, R mb, R e1, R *out)
 {
-    return FN(c2d_fast_verdict)(FN(c2d_fast_flags)(nx, ny, vax, vay, vbx, vby, ma, mb, e1, out));
+    const int f = FN(c2d_fast_flags)(nx, ny, vax, vay, vbx, vby, ma, mb, e1, out);
+    return f == C2D_F_ALL ? C2D_OK : FN(c2d_fast_verdict)(f);
 }
 
 /* ---------------------------------------------- exact sums (general path) */
@@ -845,7 +848,7 @@ static c2d_status FN(c2d_resolve)(BODY *a, BODY *b, R nhx, R nhy, R nlx, R nly, 
 
 /* Everything the fast path declined: full validation in status priority,
  * then the exact normal. */
-static c2d_status FN(c2d_collide_slow)(BODY *a, BODY *b, R restitution)
+C2D_COLD c2d_status FN(c2d_collide_slow)(BODY *a, BODY *b, R restitution)
 {
     R nhx, nhy, nlx, nly;
     c2d_status s = FN(c2d_validate)(a, b, restitution);
@@ -865,6 +868,16 @@ static c2d_status FN(c2d_collide_slow)(BODY *a, BODY *b, R restitution)
     return FN(c2d_resolve)(a, b, nhx, nhy, nlx, nly, restitution);
 }
 
+/* Valid inputs (the fast window held) whose d cancels: only d needs the
+ * exact normal.  Out of line, so the fast path keeps its registers. */
+C2D_COLD c2d_status FN(c2d_collide_accurate)(BODY *a, BODY *b, R restitution)
+{
+    R nlx, nly;
+    R nhx = FN(c2d_two_sum)(b->pos.x, -a->pos.x, &nlx);
+    R nhy = FN(c2d_two_sum)(b->pos.y, -a->pos.y, &nly);
+    return FN(c2d_resolve)(a, b, nhx, nhy, nlx, nly, restitution);
+}
+
 c2d_status FN(c2d_collide)(BODY *a, BODY *b, R restitution)
 {
     R out[4];
@@ -872,13 +885,7 @@ c2d_status FN(c2d_collide)(BODY *a, BODY *b, R restitution)
     if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
     s = FN(c2d_fast)(b->pos.x - a->pos.x, b->pos.y - a->pos.y, a->vel.x, a->vel.y, b->vel.x,
                      b->vel.y, a->mass, b->mass, 1 + restitution, out);
-    if (s == C2D_NEED_ACCURATE) {
-        /* Valid inputs (the window held); only d needs the exact normal. */
-        R nlx, nly;
-        R nhx = FN(c2d_two_sum)(b->pos.x, -a->pos.x, &nlx);
-        R nhy = FN(c2d_two_sum)(b->pos.y, -a->pos.y, &nly);
-        return FN(c2d_resolve)(a, b, nhx, nhy, nlx, nly, restitution);
-    }
+    if (s == C2D_NEED_ACCURATE) return FN(c2d_collide_accurate)(a, b, restitution);
     if (s == C2D_NEED_GENERAL) return FN(c2d_collide_slow)(a, b, restitution);
     if (s == C2D_OK) FN(c2d_store)(a, b, out);
     return (c2d_status)s;
