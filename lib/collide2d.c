@@ -143,7 +143,11 @@ const char *c2d_status_string(c2d_status status)
 #define R_EMIN (-1022)
 #define R_MAX DBL_MAX
 #define R_SPLIT 134217729.0 /* 2^27 + 1 */
+#ifdef __GNUC__ /* -ffreestanding implies -fno-builtin: ask for the FPU instruction */
+#define R_SQRT __builtin_sqrt
+#else
 #define R_SQRT sqrt
+#endif
 #define R_FABS __builtin_fabs
 #define R_EXP_K 900  /* fast window: |products| summed in [2^-900, 2^900] */
 #define R_EXP_KAPPA2 41 /* double-double d trusted if kappa <= 2^41 */
@@ -193,7 +197,11 @@ const char *c2d_status_string(c2d_status status)
 #define R_EMIN (-126)
 #define R_MAX FLT_MAX
 #define R_SPLIT 4097.0f /* 2^12 + 1 */
+#ifdef __GNUC__
+#define R_SQRT __builtin_sqrtf
+#else
 #define R_SQRT sqrtf
+#endif
 #define R_FABS __builtin_fabsf
 #define R_EXP_K 90
 #define R_EXP_KAPPA2 12
@@ -490,6 +498,14 @@ static FN(c2d_xf) FN(c2d_xf_make)(R m, int e)
 
 static R FN(c2d_xf_value)(FN(c2d_xf) x) { return FN(c2d_scale2)(x.m, x.e); }
 
+/* *dst = src field by field: a struct assignment compiles to a memcpy call
+ * at -Os on small cores, and the library must need no C library. */
+static void FN(c2d_xf_copy)(FN(c2d_xf) *dst, const FN(c2d_xf) *src)
+{
+    dst->m = src->m;
+    dst->e = src->e;
+}
+
 /* ------------------------------------------------ error-free transforms */
 
 /* s + err == a + b exactly (Knuth's TwoSum; no overflow assumed). */
@@ -660,7 +676,7 @@ static FN(c2d_xf) FN(c2d_exact_sum)(FN(c2d_xf) *atom, int n)
             if (atom[i].e >= emax - R_WINDOW) {
                 k = FN(c2d_grow)(ex, k, FN(c2d_scale2)(atom[i].m, atom[i].e - emax));
             } else {
-                atom[rest++] = atom[i];
+                FN(c2d_xf_copy)(&atom[rest++], &atom[i]);
             }
         }
         for (i = 0; i < k; i++) approx += ex[i];
@@ -718,8 +734,8 @@ static void FN(c2d_weights_x)(R ma, R mb, FN(c2d_xf) *wa, FN(c2d_xf) *wb)
     onep = 1 + FN(c2d_xf_value)(r);
     w_heavy = FN(c2d_xf_make)(r.m / onep, r.e);
     w_light = FN(c2d_xf_make)(1 / onep, 0);
-    *wa = a_heavy ? w_heavy : w_light;
-    *wb = a_heavy ? w_light : w_heavy;
+    FN(c2d_xf_copy)(wa, a_heavy ? &w_heavy : &w_light);
+    FN(c2d_xf_copy)(wb, a_heavy ? &w_light : &w_heavy);
 }
 
 /* The general path: any finite inputs, the normal given exactly as
@@ -756,8 +772,8 @@ static c2d_status FN(c2d_general)(BODY *a, BODY *b, FN(c2d_xf) nh[2], FN(c2d_xf)
     if (d.m >= 0) return C2D_SEPARATING;
     nn = (nval[0] * nval[0] + nval[1] * nval[1]) + 2 * (nval[0] * lval[0] + nval[1] * lval[1]);
     FN(c2d_weights_x)(a->mass, b->mass, &wa, &wb);
-    w[0] = wa;
-    w[1] = wb;
+    FN(c2d_xf_copy)(&w[0], &wa);
+    FN(c2d_xf_copy)(&w[1], &wb);
     for (j = 0; j < 2; j++) {
         /* lambda = (1 + e) w d / |n|^2; dv = +-lambda n, scaled once. */
         R lm = ((1 + e) * d.m / nn) * w[j].m;

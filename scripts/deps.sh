@@ -19,7 +19,17 @@ else
     exit 1
 fi
 export DEBIAN_FRONTEND=noninteractive
-# A fresh machine has no package lists yet; refresh once, then install.
-$SUDO apt-get update -qq >&2 || true
-# shellcheck disable=SC2086
-$SUDO apt-get install -y -qq --no-install-recommends $missing >&2
+# `make -j` may run several of these at once; apt allows one at a time, so
+# wait for the others (flock), and give dpkg's own lock time as well.
+lock=/tmp/collide2d-deps.lock
+run_apt() {
+    # A fresh machine has no package lists yet; refresh once, then install.
+    $SUDO apt-get update -qq >&2 || true
+    # shellcheck disable=SC2086
+    $SUDO apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=600 $missing >&2
+}
+if command -v flock >/dev/null 2>&1; then
+    exec 9>"$lock"
+    flock 9
+fi
+run_apt

@@ -1,0 +1,164 @@
+# tests/mcu/mcu.mk - the library on microcontrollers (included by Makefile).
+#
+#   make cross       builds lib/ with -Os -ffreestanding for Cortex-M0, M4F, M7
+#                    and RV32, prints the size table (also docs/SIZES.md) and
+#                    fails on any outside symbol but compiler helpers and
+#                    sqrt/sqrtf, on recursion or unbounded stack, on double
+#                    arithmetic or a sqrtf call on M4F, and if the Q16.16 path
+#                    does not link on M0 with -nostdlib -lgcc.
+#   make test-mcu    runs the shared test vectors (tests/vectors.c) on the
+#                    four cores (plus Q16.16 alone on M0) under QEMU.
+#   make lint-misra  cppcheck's MISRA C:2012 addon on lib/; deviations are
+#                    in docs/MISRA.md and tests/mcu/misra.supp.
+#
+# Cross flags are fixed, not taken from CFLAGS: the table measures one build.
+# -fno-math-errno lets sqrtf become vsqrt.f32 (sqrt vsqrt.f64 on M7): sqrt of
+# a negative number never happens in the library, so errno is never needed.
+
+MCU_B := $(B)/mcu
+MCU_DIR := tests/mcu
+MCU_CROSS := m0 m4f m7 rv32 m0q16
+MCU_RUN := m0 m4f m7 rv32 m0q16
+
+# One install step for every MCU target: under make -j two apt-get runs at
+# once would fight over the dpkg lock.
+MCU_PKGS := gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi \
+  gcc-riscv64-unknown-elf binutils-riscv64-unknown-elf picolibc-riscv64-unknown-elf \
+  qemu-system-arm qemu-system-misc cppcheck
+
+MCU_CFLAGS := -std=c99 $(WARN) -Werror -ffp-contract=off -Os -ffreestanding -fno-math-errno \
+  -ffunction-sections -fdata-sections
+
+# Per target: compiler, core flags, library options, table description,
+# emulator, and the extra checks of `make cross`.
+MCU_m0_CC := arm-none-eabi-gcc
+MCU_m0_ARCH := -mcpu=cortex-m0 -mthumb
+MCU_m0_OPTS :=
+MCU_m0_DESC := Cortex-M0, soft float; double, float, Q16.16
+MCU_m0_QEMU := qemu-system-arm -M microbit
+
+MCU_m4f_CC := arm-none-eabi-gcc
+MCU_m4f_ARCH := -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16
+MCU_m4f_OPTS := -DC2D_NO_DOUBLE
+MCU_m4f_DESC := Cortex-M4F, single-precision FPU; float, Q16.16 (C2D_NO_DOUBLE)
+MCU_m4f_QEMU := qemu-system-arm -M mps2-an386
+MCU_m4f_CHECKS := --forbid '^__aeabi_d' --inline sqrtf=vsqrt.f32
+
+MCU_m7_CC := arm-none-eabi-gcc
+MCU_m7_ARCH := -mcpu=cortex-m7 -mfloat-abi=hard -mfpu=fpv5-d16
+MCU_m7_OPTS :=
+MCU_m7_DESC := Cortex-M7, double-precision FPU; double, float, Q16.16
+MCU_m7_QEMU := qemu-system-arm -M mps2-an500
+
+MCU_rv32_CC := riscv64-unknown-elf-gcc
+MCU_rv32_ARCH := -march=rv32imac -mabi=ilp32
+MCU_rv32_OPTS :=
+MCU_rv32_DESC := RV32IMAC, soft float; double, float, Q16.16
+MCU_rv32_QEMU := qemu-system-riscv32 -M virt -bios none
+
+MCU_m0q16_CC := arm-none-eabi-gcc
+MCU_m0q16_ARCH := -mcpu=cortex-m0 -mthumb
+MCU_m0q16_OPTS := -DC2D_NO_DOUBLE -DC2D_NO_FLOAT
+MCU_m0q16_DESC := Cortex-M0, Q16.16 only (C2D_NO_DOUBLE C2D_NO_FLOAT), linked -nostdlib -lgcc
+MCU_m0q16_QEMU := qemu-system-arm -M microbit
+
+# Only the compiler's own headers (stddef.h, stdint.h, float.h): no C
+# library's.  Asked of the compiler when the recipe runs, after deps.
+MCU_COMPILE = $(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_$*_OPTS) $(MCU_CFLAGS) \
+  -nostdinc -isystem "$$($(MCU_$*_CC) $(MCU_$*_ARCH) -print-file-name=include)" -Iinclude -Itests -I$(MCU_DIR)
+
+MCU_ARM := m0 m4f m7
+MCU_ARM_LINK := -nostdlib -T $(MCU_DIR)/arm.ld -Wl,--gc-sections
+# picolibc's semihosting crt0 and console; code and data in the virt board's RAM.
+MCU_RV32_LINK := --specs=picolibc.specs --crt0=semihost --oslib=semihost -Wl,--gc-sections \
+  -Wl,--defsym=__flash=0x80000000,--defsym=__flash_size=0x100000 \
+  -Wl,--defsym=__ram=0x80100000,--defsym=__ram_size=0x100000
+
+.PHONY: mcu-deps lint-misra
+mcu-deps:
+	@sh scripts/deps.sh $(MCU_PKGS)
+
+# Every build step waits for the install (order-only: no rebuilds), and all
+# of them are prerequisites in this one make, so -j never builds a file twice.
+$(MCU_B)/%/collide2d.o: $(LIB_SRC) $(LIB_HDR) $(MCU_DIR)/mcu.mk | mcu-deps
+	@mkdir -p $(@D)
+	$(MCU_COMPILE) -fstack-usage -fcallgraph-info=su -c $(LIB_SRC) -o $@
+
+$(MCU_B)/%/harness.o: $(MCU_DIR)/harness.c $(MCU_DIR)/harness_variant.h $(MCU_DIR)/mcu.h tests/vectors.h $(LIB_HDR) | mcu-deps
+	@mkdir -p $(@D)
+	$(MCU_COMPILE) -DC2D_MCU_NAME='"$*"' -c $< -o $@
+
+$(MCU_B)/%/vectors.o: tests/vectors.c tests/vectors.h $(LIB_HDR) | mcu-deps
+	@mkdir -p $(@D)
+	$(MCU_COMPILE) -c $< -o $@
+
+$(MCU_B)/%/startup_arm.o: $(MCU_DIR)/startup_arm.c $(MCU_DIR)/mcu.h | mcu-deps
+	@mkdir -p $(@D)
+	$(MCU_COMPILE) -c $< -o $@
+
+$(MCU_B)/%/q16_caller.o: $(MCU_DIR)/q16_caller.c $(LIB_HDR) | mcu-deps
+	@mkdir -p $(@D)
+	$(MCU_COMPILE) -c $< -o $@
+
+# The C library's side (stdio-free: open/write/exit) needs picolibc's headers.
+$(MCU_B)/rv32/platform_rv32.o: $(MCU_DIR)/platform_rv32.c $(MCU_DIR)/mcu.h | mcu-deps
+	@mkdir -p $(@D)
+	$(MCU_rv32_CC) $(MCU_rv32_ARCH) --specs=picolibc.specs -std=c99 $(WARN) -Werror -Os -c $< -o $@
+
+# newlib's libm supplies sqrt/sqrtf where the core has no FPU for them.
+$(MCU_ARM:%=$(MCU_B)/%/harness.elf): $(MCU_B)/%/harness.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/harness.o \
+  $(MCU_B)/%/vectors.o $(MCU_B)/%/collide2d.o $(MCU_DIR)/arm.ld
+	$(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) \
+	  -Wl,--start-group -lm -lc -lgcc -Wl,--end-group
+
+# Q16.16 alone: libgcc is the only library.
+$(MCU_B)/m0q16/harness.elf: $(MCU_B)/m0q16/startup_arm.o $(MCU_B)/m0q16/harness.o $(MCU_B)/m0q16/vectors.o \
+  $(MCU_B)/m0q16/collide2d.o $(MCU_DIR)/arm.ld
+	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
+
+$(MCU_B)/m0q16/q16_link.elf: $(MCU_B)/m0q16/q16_caller.o $(MCU_B)/m0q16/collide2d.o
+	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) -nostdlib -Wl,--gc-sections -Wl,-e,c2d_q16_entry -o $@ $^ -lgcc
+
+$(MCU_B)/rv32/harness.elf: $(MCU_B)/rv32/platform_rv32.o $(MCU_B)/rv32/harness.o $(MCU_B)/rv32/vectors.o \
+  $(MCU_B)/rv32/collide2d.o
+	$(MCU_rv32_CC) $(MCU_rv32_ARCH) $(MCU_RV32_LINK) -o $@ $^ -lm
+
+cross: $(MCU_CROSS:%=$(MCU_B)/%/collide2d.o) $(MCU_B)/m0q16/q16_link.elf
+	@rm -f $(MCU_B)/rows.md $(MCU_B)/sections.md; fail=0; \
+	$(foreach t,$(MCU_CROSS),sh $(MCU_DIR)/sizes.sh $(MCU_$(t)_CHECKS) --rows $(MCU_B)/rows.md \
+	  $(t) "$(MCU_$(t)_DESC)" $(MCU_B)/$(t)/collide2d.o $(MCU_$(t)_CC) $(MCU_$(t)_ARCH) \
+	  >>$(MCU_B)/sections.md || fail=1;) \
+	{ echo '# Sizes on microcontrollers'; echo; \
+	  echo 'Generated by `make cross` (tests/mcu/mcu.mk, tests/mcu/sizes.sh): do not edit.'; \
+	  echo 'lib/collide2d.c built with `$(MCU_CFLAGS)`.'; \
+	  echo 'Bytes. *code*: what linking only that function brings in from the library (--gc-sections);'; \
+	  echo '*+ helpers*: the libgcc routines that adds; *stack*: worst case through the library'"'"'s own'; \
+	  echo 'call graph (-fstack-usage, -fcallgraph-info; helper frames not counted). No recursion, no allocation.'; echo; \
+	  echo '| target | core, variants | text | data | bss | text with libgcc helpers | worst stack | outside symbols |'; \
+	  echo '|---|---|---:|---:|---:|---:|---:|---|'; \
+	  cat $(MCU_B)/rows.md; echo; cat $(MCU_B)/sections.md; } >$(MCU_B)/SIZES.md; \
+	cat $(MCU_B)/SIZES.md; \
+	if [ $$fail -ne 0 ]; then echo "make cross: FAILED (see above)"; exit 1; fi; \
+	mkdir -p docs && cp $(MCU_B)/SIZES.md docs/SIZES.md; echo "make cross: passed (table in docs/SIZES.md)"
+
+test-mcu: $(MCU_RUN:%=$(MCU_B)/%/harness.elf)
+	@fail=0; \
+	$(foreach t,$(MCU_RUN),sh $(MCU_DIR)/run.sh $(t) $(MCU_B)/$(t)/harness.elf $(MCU_$(t)_QEMU) || fail=1;) \
+	if [ $$fail -ne 0 ]; then echo "make test-mcu: FAILED"; exit 1; fi; echo "make test-mcu: passed"
+
+# MISRA C:2012 through cppcheck's addon (rule numbers only: the rule texts are
+# not shipped).  One configuration: every variant compiled in.  A rule that
+# is suppressed must be explained in docs/MISRA.md; a suppression that no
+# longer matches anything fails too, so the list never goes stale.
+MISRA_SUPP := $(MCU_DIR)/misra.supp
+lint-misra: | mcu-deps
+	@mkdir -p $(MCU_B)/misra
+	cppcheck --addon=misra --std=c99 -Iinclude -DC2D_MISRA_CHECK --cppcheck-build-dir=$(MCU_B)/misra \
+	  --suppressions-list=$(MISRA_SUPP) --enable=information --suppress=missingIncludeSystem \
+	  --error-exitcode=1 --quiet --template='{file}:{line}: {id}: {message}' $(LIB_SRC)
+	@for r in $$(sed -n 's/^misra-c2012-\([0-9.]*\):.*/\1/p' $(MISRA_SUPP) | sort -u); do \
+	  grep -qF "## Rule $$r " docs/MISRA.md || { echo "lint-misra: rule $$r suppressed but not in docs/MISRA.md"; exit 1; }; \
+	done; echo "lint-misra: passed (deviations: docs/MISRA.md)"
+
+TEST_TARGETS += cross test-mcu lint-misra
+LINT_TARGETS += lint-misra
