@@ -152,7 +152,7 @@ test-mcu: $(MCU_RUN:%=$(MCU_B)/%/harness.elf)
 # longer matches anything fails too, so the list never goes stale.
 MISRA_SUPP := $(MCU_DIR)/misra.supp
 lint-misra: | mcu-deps
-	@mkdir -p $(MCU_B)/misra
+	@rm -rf $(MCU_B)/misra && mkdir -p $(MCU_B)/misra
 	cppcheck --addon=misra --std=c99 -Iinclude -DC2D_MISRA_CHECK --cppcheck-build-dir=$(MCU_B)/misra \
 	  --suppressions-list=$(MISRA_SUPP) --enable=information --suppress=missingIncludeSystem \
 	  --error-exitcode=1 --quiet --template='{file}:{line}: {id}: {message}' $(LIB_SRC)
