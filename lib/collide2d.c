@@ -907,6 +907,18 @@ c2d_status FN(c2d_collide)(BODY *a, BODY *b, R restitution)
     return (c2d_status)s;
 }
 
+/* What c2d_collide_normal's fast path declined, out of line. */
+C2D_COLD c2d_status FN(c2d_collide_normal_slow)(BODY *a, BODY *b, R nx, R ny, R restitution, int verdict)
+{
+    c2d_status s;
+    if (verdict == C2D_NEED_ACCURATE) return FN(c2d_resolve)(a, b, nx, ny, 0, 0, restitution);
+    s = FN(c2d_validate)(a, b, restitution);
+    if (s != C2D_OK) return s;
+    if (!FN(c2d_finite4)(nx, ny, 0, 0)) return C2D_INVALID;
+    if (nx == 0 && ny == 0) return C2D_DEGENERATE;
+    return FN(c2d_resolve)(a, b, nx, ny, 0, 0, restitution);
+}
+
 c2d_status FN(c2d_collide_normal)(BODY *a, BODY *b, VEC normal, R restitution)
 {
     R out[4];
@@ -915,14 +927,10 @@ c2d_status FN(c2d_collide_normal)(BODY *a, BODY *b, VEC normal, R restitution)
     if (!FN(c2d_finite4)(a->pos.x, a->pos.y, b->pos.x, b->pos.y)) return C2D_INVALID;
     s = FN(c2d_fast)(normal.x, normal.y, a->vel.x, a->vel.y, b->vel.x, b->vel.y, a->mass,
                      b->mass, 1 + restitution, out);
+    if (s == C2D_NEED_ACCURATE || s == C2D_NEED_GENERAL)
+        return FN(c2d_collide_normal_slow)(a, b, normal.x, normal.y, restitution, s);
     if (s == C2D_OK) FN(c2d_store)(a, b, out);
-    if (s == C2D_NEED_ACCURATE) return FN(c2d_resolve)(a, b, normal.x, normal.y, 0, 0, restitution);
-    if (s != C2D_NEED_GENERAL) return (c2d_status)s;
-    s = (int)FN(c2d_validate)(a, b, restitution);
-    if (s != C2D_OK) return (c2d_status)s;
-    if (!FN(c2d_finite4)(normal.x, normal.y, 0, 0)) return C2D_INVALID;
-    if (normal.x == 0 && normal.y == 0) return C2D_DEGENERATE;
-    return FN(c2d_resolve)(a, b, normal.x, normal.y, 0, 0, restitution);
+    return (c2d_status)s;
 }
 
 /* ------------------------------------------------------- batch kernel */
