@@ -64,7 +64,8 @@ Rgb ball_colour(int number) {
     static const Rgb colours[8] = {{250, 250, 240}, {245, 200, 20}, {20, 60, 200}, {220, 30, 30},
                                    {90, 30, 140},   {250, 120, 20}, {20, 130, 60}, {130, 30, 30}};
     if (number == 8) return {15, 15, 15};
-    return colours[number > 8 ? number - 8 : number];
+    const int k = number > 8 ? number - 8 : number; // stripes 9-15 share 1-7's colours
+    return k >= 0 && k < 8 ? colours[k] : colours[0];
 }
 
 Rgb speed_colour(double speed, double scale) {
@@ -170,7 +171,7 @@ bool read_surface_rgb(SDL_Surface *s, std::vector<uint8_t> &rgb) {
     rgb.resize(static_cast<size_t>(s->w) * static_cast<size_t>(s->h) * 3);
     size_t k = 0;
     for (int y = 0; y < s->h; ++y) {
-        const uint32_t *row = reinterpret_cast<const uint32_t *>(static_cast<const uint8_t *>(s->pixels) + y * s->pitch);
+        const uint32_t *row = reinterpret_cast<const uint32_t *>(static_cast<const uint8_t *>(s->pixels) + static_cast<ptrdiff_t>(y) * s->pitch);
         for (int x = 0; x < s->w; ++x) SDL_GetRGB(row[x], s->format, &rgb[k], &rgb[k + 1], &rgb[k + 2]), k += 3;
     }
     SDL_UnlockSurface(s);

@@ -113,7 +113,8 @@ void gas(std::vector<Ball> &balls, Table &t, int count, uint64_t seed) {
     Rng rng(seed);
     double mean_vx = 0, mean_vy = 0;
     for (int i = 0; i < count; ++i) {
-        const double cx = (i % per_row + 0.5) * cell, cy = (i / per_row + 0.5) * cell;
+        const int column = i % per_row, row = i / per_row; // integer division intended: grid cell
+        const double cx = (column + 0.5) * cell, cy = (row + 0.5) * cell;
         Ball b = make_ball(cx + jitter * (2 * rng.uniform() - 1), cy + jitter * (2 * rng.uniform() - 1), i);
         // far from equilibrium on purpose: uniform components, not Gaussian
         b.vx = 2 * rng.uniform() - 1;
@@ -229,8 +230,10 @@ private:
     std::vector<int32> hits_;
 };
 
+// b2DynamicTree 2.4.1 carries a void * per proxy; ours is a small integer
+// that round-trips exactly and is never dereferenced.
 void *tag(int kind, int index) {
-    return reinterpret_cast<void *>(static_cast<uintptr_t>(index) * 4 + static_cast<uintptr_t>(kind));
+    return reinterpret_cast<void *>(static_cast<uintptr_t>(index) * 4 + static_cast<uintptr_t>(kind)); // NOLINT(performance-no-int-to-ptr)
 }
 
 ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, bool lossless)
@@ -244,7 +247,8 @@ ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, boo
     proxy_.assign(balls.size(), b2_nullNode);
     swept_.resize(balls.size());
     insert_statics();
-    for (size_t i = 0; i < balls_.size(); ++i) ball_placed(static_cast<int>(i));
+    // Qualified: no virtual dispatch from a constructor.
+    for (size_t i = 0; i < balls_.size(); ++i) ExactEngine::ball_placed(static_cast<int>(i));
     restart();
 }
 
@@ -278,9 +282,9 @@ void ExactEngine::ball_placed(int i) {
 }
 
 void ExactEngine::advance(int i, double t) {
-    Ball &b = balls_[static_cast<size_t>(i)];
     const double h = t - tb_[static_cast<size_t>(i)];
     if (h != 0) {
+        Ball &b = balls_[static_cast<size_t>(i)];
         b.x += b.vx * h;
         b.y += b.vy * h;
     }
@@ -545,7 +549,8 @@ Box2dEngine::Box2dEngine(const std::vector<Ball> &balls, const Table &table, boo
         ground->CreateFixture(&fd);
     }
     bodies_.assign(balls_.size(), nullptr);
-    for (size_t i = 0; i < balls_.size(); ++i) ball_placed(static_cast<int>(i));
+    // Qualified: no virtual dispatch from a constructor.
+    for (size_t i = 0; i < balls_.size(); ++i) Box2dEngine::ball_placed(static_cast<int>(i));
 }
 
 void Box2dEngine::ball_placed(int i) {
@@ -564,7 +569,7 @@ void Box2dEngine::ball_placed(int i) {
     fd.density = 1;
     fd.friction = 0;
     fd.restitution = static_cast<float>(e_ball_);
-    fd.userData.pointer = static_cast<uintptr_t>(i + 1);
+    fd.userData.pointer = static_cast<uintptr_t>(i) + 1;
     body->CreateFixture(&fd);
     bodies_[static_cast<size_t>(i)] = body;
 }
@@ -895,9 +900,9 @@ void Simulation::momentum(double out[2]) const {
 }
 
 void Simulation::count_escaped() {
-    const std::vector<Ball> &balls = engine_->balls_;
-    for (size_t i = 0; i < balls.size(); ++i) {
-        const Ball &b = balls[i];
+    const std::vector<Ball> &all = engine_->balls_;
+    for (size_t i = 0; i < all.size(); ++i) {
+        const Ball &b = all[i];
         const bool outside = b.x < 0 || b.x > table_.length || b.y < 0 || b.y > table_.width;
         if (b.active && outside && !escaped_flag_[i]) {
             escaped_flag_[i] = 1;

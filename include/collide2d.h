@@ -87,8 +87,9 @@ typedef struct c2d_body { c2d_vec2 pos; c2d_vec2 vel; double mass; } c2d_body; /
  *                velocity >= 0, including exactly 0), C2D_DEGENERATE (a.pos ==
  *                b.pos, or both masses INFINITY), C2D_INVALID (any NaN/Inf in a
  *                position or velocity, a mass <= 0 or NaN, restitution outside
- *                [0,1] or NaN, a or b NULL), C2D_RANGE (a velocity change or a
- *                result would exceed DBL_MAX/8).  Priority INVALID > DEGENERATE
+ *                [0,1] or NaN, a or b NULL), C2D_RANGE (always when a result
+ *                would exceed DBL_MAX; possibly when a result or a velocity
+ *                change exceeds DBL_MAX/8).  Priority INVALID > DEGENERATE
  *                > SEPARATING > RANGE > OK; on any status but OK nothing is written.
  *   accuracy     every finite input over the whole double range: each output
  *                component within 16 ulp of its body's velocity scale (measured
@@ -175,7 +176,9 @@ typedef struct c2d_bodyx { c2d_vec2x pos; c2d_vec2x vel; c2d_fixed mass; } c2d_b
  *   restitution  in [0, C2D_FIXED_ONE].
  *   returns      the same statuses with the same priority: C2D_INVALID for
  *                mass <= 0 or restitution outside [0, 1]; C2D_SEPARATING when
- *                the approach speed rounds to less than one step (2^-16);
+ *                the approach speed rounds to less than one step (2^-16) -
+ *                it is computed within the accuracy bound below, so near the
+ *                range limit an approach slower than 2^-24 S may also count;
  *                C2D_RANGE when a result leaves the Q16.16 range (never wraps).
  *   accuracy     |error| <= 3 steps (3 * 2^-16) + 2^-24 x S per component,
  *                against the exact result of the same inputs, where S is the
@@ -186,7 +189,9 @@ c2d_status c2d_collide_normalx(c2d_bodyx *a, c2d_bodyx *b, c2d_vec2x normal, c2d
 
 /* Q16.16 time of impact: same semantics as c2d_time_of_impact; *t in Q16.16
  * seconds, C2D_RANGE when t > 32767.  radius_sum >= 0.
- *   accuracy     |error| <= 2 steps + the time to close 2^-16 of distance. */
+ *   accuracy     |error| <= 2 steps + the time the pair needs at contact to
+ *                close 2^-16 + |d| 2^-27 of distance (|d| the centre distance:
+ *                beyond 2^13 units it is carried with 29 significant bits). */
 c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed radius_sum, c2d_fixed *t);
 #endif
 

@@ -156,8 +156,10 @@ static int emit(FILE *o, const gcase *c, int variant)
         if (status == C2D_OK) {
             double tl = variant == F ? FLT_MAX : DBL_MAX;
             if (variant == X) {
-                /* 2 steps + the time to close one step (2^-16) of distance, in steps */
-                double close_time = (unit - ref_ulp(fabs(t), 53, -1022)) / ref_ulp(hypot(c->pb[0] - c->pa[0], c->pb[1] - c->pa[1]), 53, -1022) * 0x1p-16;
+                /* 2 steps + the time to close 2^-16 + |d| 2^-27 of distance, in steps */
+                double dist = hypot(c->pb[0] - c->pa[0], c->pb[1] - c->pa[1]);
+                double close_time = (unit - ref_ulp(fabs(t), 53, -1022)) / ref_ulp(dist, 53, -1022) *
+                                    (0x1p-16 + dist * 0x1p-27);
                 tl = 32767.0;
                 out[0] = nearbyint(ldexp(t, 16));
                 tol[0] = 2 + ceil(ldexp(close_time, 16));

@@ -172,8 +172,10 @@ static void test_fixed_time_of_impact_within_bound(void **state)
         hits++;
         {
             /* 2 steps of t + the time one step (2^-16) of distance is worth at contact */
-            double per_dist_ulp = (unit - ref_ulp(want, 53, -1022)) / ref_ulp(hypot(c.pb[0] - c.pa[0], c.pb[1] - c.pa[1]), 53, -1022);
-            double bound = 2 + per_dist_ulp;
+            /* 2 steps + the time to close 2^-16 + |d| 2^-27 of distance at contact */
+            double dist = hypot(c.pb[0] - c.pa[0], c.pb[1] - c.pa[1]);
+            double per_dist_ulp = (unit - ref_ulp(want, 53, -1022)) / ref_ulp(dist, 53, -1022);
+            double bound = 2 + per_dist_ulp * (1 + dist * 65536.0 * 0x1p-27);
             if (!(fabs(t - want * 65536.0) <= bound)) {
                 print_error("t=%d want %.3f steps, bound %.3f\n", t, want * 65536.0, bound);
                 fail();

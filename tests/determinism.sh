@@ -1,0 +1,66 @@
+#!/bin/sh
+# determinism.sh OUTDIR [COUNT] - the library's output bits over a fixed case
+# set (tests/hash_vectors.c) must hash the same under gcc and clang at -O0,
+# -O2 and -O3, all with -ffp-contract=off.  The harness is always compiled
+# the same way (gcc -O2 -ffp-contract=off) so only the library varies.
+# Then, for information only, one build without -ffp-contract=off (gcc -O3
+# -march=native -std=gnu99, where gcc's default contraction is "fast") shows
+# what FMA contraction would change.  Prints "determinism: N passed, N failed".
+set -u
+out=${1:-build/determinism}
+count=${2:-100000}
+mkdir -p "$out"
+pass=0
+fail=0
+std="-std=c99 -ffp-contract=off -Iinclude"
+if ! gcc -O2 $std -c tests/hash_vectors.c -o "$out/hash_vectors.o"; then
+    echo "determinism: 0 passed, 1 failed (hash_vectors.c does not build)"
+    exit 1
+fi
+hash_of() { # name cc flags...
+    name=$1
+    cc=$2
+    shift 2
+    # shellcheck disable=SC2068
+    $cc $@ -Iinclude -c lib/collide2d.c -o "$out/lib_$name.o" &&
+        gcc "$out/hash_vectors.o" "$out/lib_$name.o" -lm -o "$out/hv_$name" &&
+        "$out/hv_$name" "$count" $(case $name in gcc-O2 | *-contract) echo "$out/$name.bin" ;; esac) >"$out/$name.txt" &&
+        sed -n 's/.* cases, hash \([0-9a-f]*\)$/\1/p' "$out/$name.txt"
+}
+ref=$(hash_of gcc-O2 gcc -O2 "$std")
+echo "determinism: reference gcc -O2: $ref ($count cases)"
+[ -n "$ref" ] || fail=$((fail + 1))
+for cc in gcc clang; do
+    for opt in -O0 -O2 -O3; do
+        [ "$cc$opt" = gcc-O2 ] && continue
+        h=$(hash_of "$cc$opt" "$cc" "$opt $std")
+        if [ -n "$ref" ] && [ "$h" = "$ref" ]; then
+            pass=$((pass + 1))
+            echo "determinism: $cc $opt: $h same"
+        else
+            fail=$((fail + 1))
+            echo "determinism: FAILED $cc $opt: ${h:-build/run failed}, reference $ref" >&2
+        fi
+    done
+done
+# The library's own FMA use (__FP_FAST_FMA: TwoProduct through fma()) must
+# not change a bit either: -march=native with contraction still off.
+h=$(hash_of gcc-native-nocontract gcc "-O3 -march=native $std")
+if [ -n "$ref" ] && [ "$h" = "$ref" ]; then
+    pass=$((pass + 1))
+    echo "determinism: gcc -O3 -march=native: $h same"
+else
+    fail=$((fail + 1))
+    echo "determinism: FAILED gcc -O3 -march=native (contraction off): ${h:-build/run failed}" >&2
+fi
+h=$(hash_of gcc-native-contract gcc "-O3 -march=native -std=gnu99")
+if [ -n "$h" ] && [ "$h" != "$ref" ]; then
+    bytes=$(cmp -l "$out/gcc-O2.bin" "$out/gcc-native-contract.bin" | wc -l)
+    echo "determinism: (info) gcc -O3 -march=native -std=gnu99 WITHOUT -ffp-contract=off: $h differs;" \
+        "$bytes of $(wc -c <"$out/gcc-O2.bin") output bytes changed (FMA contraction)"
+else
+    echo "determinism: (info) gcc -O3 -march=native without -ffp-contract=off: ${h:-failed}, same as reference"
+fi
+rm -f "$out"/*.bin
+echo "determinism: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]

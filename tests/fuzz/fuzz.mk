@@ -1,0 +1,85 @@
+# tests/fuzz/fuzz.mk - dynamic hardening runs, included by the top-level
+# Makefile: the libFuzzer harness for every public entry point, the
+# cross-compiler determinism hash, and the demo under valgrind.
+# (Static analysis: tests/lint.mk.)
+#   make fuzz          fuzz for FUZZ_SECONDS (new inputs: $(B)/fuzz/corpus,
+#                      crashes: $(B)/fuzz/crash-*); add a crash to
+#                      tests/fuzz/corpus/regress-NAME once the bug is fixed
+#   make test-fuzz     the committed corpus under the harness built by $(CC)
+#                      (sanitised with SANITIZE=1) and by clang-14 with
+#                      libFuzzer + ASan + UBSan, then a bounded smoke run with a
+#                      fixed seed (FUZZ_RUNS executions); part of `make test`
+#   make fuzz-seeds    rewrite the hand-made seeds (tests/fuzz/make_seeds.c)
+# The libFuzzer build is always sanitised: libFuzzer, ASan and UBSan need
+# clang, hence clang-14 here whatever CC is.
+
+FUZZ_SECONDS ?= 60
+FUZZ_RUNS ?= 200000
+FUZZ_DEPS := clang-14 libclang-rt-14-dev
+FUZZ_CLANG := clang-14
+FUZZ_DIR := $(B)/fuzz
+FUZZ_BIN := $(FUZZ_DIR)/fuzz_collide2d
+FUZZ_REPLAY := $(FUZZ_DIR)/replay
+FUZZ_SRC := tests/fuzz/fuzz_collide2d.c
+FUZZ_CORPUS := tests/fuzz/corpus
+FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off -Iinclude \
+  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+
+.PHONY: fuzz-deps fuzz test-fuzz fuzz-seeds
+
+fuzz-deps:
+	@sh scripts/deps.sh $(FUZZ_DEPS)
+
+$(FUZZ_BIN): $(FUZZ_SRC) $(LIB_SRC) $(LIB_HDR) | fuzz-deps
+	@mkdir -p $(@D)
+	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) $(LIB_SRC) -lm
+
+$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) $(LIB_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -o $@ tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) -lm
+
+$(FUZZ_DIR)/make_seeds: tests/fuzz/make_seeds.c
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -std=c99 $(WARN) -o $@ $<
+
+fuzz-seeds: $(FUZZ_DIR)/make_seeds
+	$(FUZZ_DIR)/make_seeds $(FUZZ_CORPUS)
+
+fuzz: $(FUZZ_BIN)
+	@mkdir -p $(FUZZ_DIR)/corpus
+	$(FUZZ_BIN) -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	  -artifact_prefix=$(FUZZ_DIR)/ $(FUZZ_DIR)/corpus $(FUZZ_CORPUS)
+
+# Counts: one per corpus file under $(CC), the whole corpus under libFuzzer,
+# and the smoke run.  The smoke run starts from a scratch copy of the corpus
+# so nothing is written into the committed one.
+test-fuzz: $(FUZZ_BIN) $(FUZZ_REPLAY)
+	@sh tests/fuzz/test_fuzz.sh $(FUZZ_BIN) $(FUZZ_REPLAY) $(FUZZ_CORPUS) $(FUZZ_DIR) $(FUZZ_RUNS)
+
+TEST_TARGETS += test-fuzz
+
+# ------------------------------------------------------------ determinism
+# Output bits hashed over 100k generated cases must match across gcc/clang
+# -O0/-O2/-O3 (-ffp-contract=off); also reports what FMA contraction changes.
+# See docs/DETERMINISM.md.
+.PHONY: test-determinism test-valgrind
+test-determinism:
+	@sh scripts/deps.sh gcc clang
+	@sh tests/determinism.sh $(B)/determinism
+
+TEST_TARGETS += test-determinism
+
+# --------------------------------------------------------------- valgrind
+# Short headless demo runs under memcheck: 0 errors, nothing definitely lost.
+# Valgrind cannot run ASan binaries, so SANITIZE=1 skips it (ASan covers).
+VALGRIND_DEPS := valgrind
+ifeq ($(SANITIZE),1)
+test-valgrind:
+	@echo "valgrind: skipped under SANITIZE=1 (AddressSanitizer runs instead)"
+else
+test-valgrind: $(B)/billiards
+	@sh scripts/deps.sh $(VALGRIND_DEPS)
+	@sh tests/valgrind.sh $(B)/billiards $(B)/valgrind
+endif
+
+TEST_TARGETS += test-valgrind

@@ -1,0 +1,166 @@
+/* make_seeds.c - writes the hand-made seed inputs of the fuzz corpus
+ * (make fuzz-seeds).  Each seed is one meaningful scene per entry point in
+ * the harness's input format (see fuzz_collide2d.c): head-on, oblique, wall,
+ * separating, coincident, unequal masses, plus special values (NaN, Inf,
+ * DBL_MAX, subnormal, zero mass, bad restitution).  Usage: make_seeds DIR */
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+enum { COLLIDE, NORMAL, TOI, COLLIDEF, NORMALF, TOIF, COLLIDEX, NORMALX, TOIX, BATCH, BATCHF };
+enum { MIXED = 0, TAME = 1 };
+
+static unsigned char buf[4096];
+static size_t len;
+static const char *dir;
+
+static void byte(int b) { buf[len++] = (unsigned char)b; }
+static void i16(long v)
+{
+    byte((int)(v & 0xFF));
+    byte((int)((v >> 8) & 0xFF));
+}
+static void start(int entry, int flags)
+{
+    len = 0;
+    byte(entry);
+    byte(flags);
+}
+static void save(const char *name)
+{
+    char path[512];
+    FILE *f;
+    snprintf(path, sizeof path, "%s/seed-%s", dir, name);
+    f = fopen(path, "wb");
+    if (f == NULL || fwrite(buf, 1, len, f) != len || fclose(f) != 0) {
+        perror(path);
+        return;
+    }
+}
+
+/* A tame body: positions and velocities in 1/256 units (1/16 steps for
+ * Q16.16 entries, so `unit` is 256 or 4096), mass index m (0xFFFF immovable). */
+static void tame_body(double px, double py, double vx, double vy, long m, double unit)
+{
+    i16((long)(px * unit));
+    i16((long)(py * unit));
+    i16((long)(vx * unit));
+    i16((long)(vy * unit));
+    i16(m);
+}
+
+/* Mixed-mode fields: tag 5 picks a special value, tag 7 a small integer. */
+static void special(int k) { byte(5); byte(k); }
+static void small(int v) { byte(7); byte(v & 0xFF); }
+
+static void scene_pair(int entry, const char *name, double unit)
+{
+    char full[256];
+    static const struct {
+        const char *what;
+        double a[4], b[4];
+        long ma, mb;
+        double nx, ny;
+        int e;
+    } s[] = {
+        {"headon", {0, 0, 1, 0}, {1, 0, 0, 0}, 255, 255, 1, 0, 255},
+        {"oblique", {0, 0, 1, 0}, {1, 1, 0, 0}, 255, 255, 1, 1, 255},
+        {"wall", {0, 0, 2, -1}, {1, 0, 0, 0}, 100, 0xFFFF, 1, 0, 200},
+        {"separating", {0, 0, -1, 0}, {1, 0, 1, 0}, 255, 255, 1, 0, 255},
+        {"coincident", {1, 1, 1, 0}, {1, 1, 0, 0}, 255, 255, 0, 0, 255},
+        {"unequal", {0, 0, 3, 1}, {0.5, 0.9, -1, 0}, 10, 3000, 0.5, 0.9, 128},
+    };
+    size_t i;
+    for (i = 0; i < sizeof s / sizeof s[0]; i++) {
+        start(entry, TAME);
+        tame_body(s[i].a[0], s[i].a[1], s[i].a[2], s[i].a[3], s[i].ma, unit);
+        tame_body(s[i].b[0], s[i].b[1], s[i].b[2], s[i].b[3], s[i].mb, unit);
+        if (entry == TOI || entry == TOIF || entry == TOIX) {
+            i16((long)(0.5 * unit)); /* radius_sum */
+        } else {
+            i16((long)(s[i].nx * unit));
+            i16((long)(s[i].ny * unit));
+            if (entry == COLLIDEX || entry == NORMALX) byte(0); /* tag */
+            byte(s[i].e);
+        }
+        snprintf(full, sizeof full, "%s-%s", name, s[i].what);
+        save(full);
+    }
+}
+
+/* Special values for the floating entry points: NaN velocity (252), Inf
+ * position (250), DBL_MAX position (6), subnormal velocity (10), zero mass (0),
+ * restitution raw from tag 0 (a NaN-free but > 1 value via special 5 = 2.0). */
+static void scene_special(int entry, const char *name)
+{
+    static const struct { const char *what; int field, value; } s[] = {
+        {"nan-vel", 2, 252}, {"inf-pos", 0, 250}, {"max-pos", 5, 6}, {"subnormal-vel", 3, 10},
+        {"zero-mass", 4, 0}, {"huge-vel", 7, 13},
+    };
+    char full[256];
+    size_t i;
+    int f;
+    for (i = 0; i < sizeof s / sizeof s[0]; i++) {
+        static const int base[10] = {0, 0, 1, 0, 1, 1, 0, 0, 0, 1};
+        start(entry, MIXED);
+        for (f = 0; f < 10; f++) {
+            if (f == s[i].field) special(s[i].value);
+            else small(base[f]);
+        }
+        small(1); /* normal x or radius_sum */
+        small(0);
+        byte(2);  /* restitution tag: 1.0 */
+        snprintf(full, sizeof full, "%s-%s", name, s[i].what);
+        save(full);
+    }
+    start(entry, MIXED);
+    for (f = 0; f < 12; f++) small(f % 3 - 1);
+    byte(0); /* restitution from a full value: */
+    special(5); /* 2.0: invalid */
+    snprintf(full, sizeof full, "%s-bad-restitution", name);
+    save(full);
+}
+
+static void scene_batch(int entry, const char *name)
+{
+    char full[256];
+    int i, count = 19; /* two kernel blocks and a tail */
+    start(entry, TAME);
+    byte(count);
+    byte(230);
+    for (i = 0; i < count; i++) {
+        double d = 0.5 + 0.1 * (i % 7);
+        tame_body(0, 0, 1 + 0.25 * (i % 5), 0.5 - 0.1 * i, 100 + 40 * i, 256);
+        tame_body(d, 0.3 * (i % 3 - 1), -1, 0.2 * (i % 4), i == 7 ? 0xFFFF : 300 - 10 * i, 256);
+    }
+    snprintf(full, sizeof full, "%s-mixed19", name);
+    save(full);
+    start(entry, TAME | 4); /* status == NULL */
+    byte(8);
+    byte(255);
+    for (i = 0; i < 8; i++) {
+        tame_body(0, 0, 1, 0, 255, 256);
+        tame_body(1, 0.125 * i, 0, 0, 255, 256);
+    }
+    snprintf(full, sizeof full, "%s-block8-nullstatus", name);
+    save(full);
+}
+
+int main(int argc, char **argv)
+{
+    static const char *names[] = {"collide", "collide_normal", "time_of_impact", "collidef", "collide_normalf",
+                                  "time_of_impactf", "collidex", "collide_normalx", "time_of_impactx"};
+    int e;
+    if (argc != 2) {
+        fprintf(stderr, "usage: make_seeds DIR\n");
+        return 2;
+    }
+    dir = argv[1];
+    for (e = COLLIDE; e <= TOIX; e++) {
+        scene_pair(e, names[e], e >= COLLIDEX ? 4096 : 256);
+        if (e < COLLIDEX) scene_special(e, names[e]);
+    }
+    scene_batch(BATCH, "collide_batch");
+    scene_batch(BATCHF, "collide_batchf");
+    return 0;
+}
