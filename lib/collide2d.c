@@ -43,7 +43,7 @@
  *      vb - va, of n = pb - pa and of the products (each relative to the LARGE
  *      terms) swamps d.  The result the light body sees is d itself, so its
  *      relative error must be small.  The fast path measures the cancellation
- *      (kappa = (|p_x| + |p_y|) / |d|) and accepts only kappa <= 2.  Otherwise
+ *      (kappa = (|p_x| + |p_y|) / |d|) and accepts only kappa <= 4.  Otherwise
  *      d is recomputed from the exact differences (TwoSum) and exact products
  *      (TwoProduct) as a double-double; if even that leaves fewer than ~40 good
  *      bits, the general path sums the exact product terms as an exact
