@@ -954,7 +954,8 @@ size_t FN(c2d_collide_batch)(const PAIRS *p, size_t count, R restitution, c2d_st
         R out[4][C2D_BLOCK];
         U flags[C2D_BLOCK];
         size_t j, width = count - base < C2D_BLOCK ? count - base : C2D_BLOCK;
-        if (width == C2D_BLOCK && e_ok) {
+        const int kernel_ran = width == C2D_BLOCK && e_ok;
+        if (kernel_ran) {
             /* Fixed trip count, no branches: vectorised at -O2 by clang, and
              * by gcc 12 for float on baseline x86-64 and for double from
              * x86-64-v2 on (SSE2 has no 64-bit compare for the flag masks). */
@@ -982,12 +983,18 @@ size_t FN(c2d_collide_batch)(const PAIRS *p, size_t count, R restitution, c2d_st
                 p->vel_bx[i] = out[2][j];
                 p->vel_by[i] = out[3][j];
             } else {
-                /* Everything else - separating, invalid, extreme - exactly as
-                 * the scalar call decides it. */
+                /* The rest, exactly as the scalar call decides it: where the
+                 * kernel ran, straight to the tier its verdict names (the
+                 * scalar call would recompute the same fast path first). */
                 BODY a, b;
                 a.pos.x = pax[j], a.pos.y = pay[j], a.vel.x = vax[j], a.vel.y = vay[j], a.mass = ma[j];
                 b.pos.x = pbx[j], b.pos.y = pby[j], b.vel.x = vbx[j], b.vel.y = vby[j], b.mass = mb[j];
-                s = FN(c2d_collide)(&a, &b, restitution);
+                if (!kernel_ran)
+                    s = FN(c2d_collide)(&a, &b, restitution);
+                else if (v == C2D_NEED_ACCURATE)
+                    s = FN(c2d_collide_accurate)(&a, &b, restitution);
+                else
+                    s = FN(c2d_collide_slow)(&a, &b, restitution);
                 if (s == C2D_OK) {
                     p->vel_ax[i] = a.vel.x;
                     p->vel_ay[i] = a.vel.y;
