@@ -142,21 +142,6 @@ static int c2d_same_bytes(const void *x, const void *y, size_t n)
 #define PAIRS c2d_pairs
 #define BATCH c2d_collide_batch
 #include "harness_variant.h"
-#undef R
-#undef VECTOR
-#undef BODY
-#undef VEC2
-#undef TABLE
-#undef COUNT
-#undef NAME
-#undef SFX
-#undef PUT_R
-#undef WITHIN
-#undef COLLIDE
-#undef COLLIDE_NORMAL
-#undef TOI
-#undef PAIRS
-#undef BATCH
 #endif
 
 #ifndef C2D_NO_FLOAT
@@ -176,21 +161,6 @@ static int c2d_same_bytes(const void *x, const void *y, size_t n)
 #define PAIRS c2d_pairsf
 #define BATCH c2d_collide_batchf
 #include "harness_variant.h"
-#undef R
-#undef VECTOR
-#undef BODY
-#undef VEC2
-#undef TABLE
-#undef COUNT
-#undef NAME
-#undef SFX
-#undef PUT_R
-#undef WITHIN
-#undef COLLIDE
-#undef COLLIDE_NORMAL
-#undef TOI
-#undef PAIRS
-#undef BATCH
 #endif
 
 #ifndef C2D_NO_FIXED
@@ -210,19 +180,6 @@ static int c2d_same_bytes(const void *x, const void *y, size_t n)
 #define COLLIDE_NORMAL c2d_collide_normalx
 #define TOI c2d_time_of_impactx
 #include "harness_variant.h"
-#undef R
-#undef VECTOR
-#undef BODY
-#undef VEC2
-#undef TABLE
-#undef COUNT
-#undef NAME
-#undef SFX
-#undef PUT_R
-#undef WITHIN
-#undef COLLIDE
-#undef COLLIDE_NORMAL
-#undef TOI
 #endif
 
 int main(void)

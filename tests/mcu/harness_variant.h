@@ -6,7 +6,8 @@
  *   PUT_R(x)                   print one R exactly
  *   WITHIN(got, want, tol)     |got - want| <= tol (false for NaN)
  *   COLLIDE, COLLIDE_NORMAL, TOI   the functions under test
- *   PAIRS, BATCH               (optional) the batch entry point */
+ *   PAIRS, BATCH               (optional) the batch entry point
+ * and undefines them all at its end. */
 
 static void SFX(load)(const VECTOR *v, BODY *a, BODY *b)
 {
@@ -184,3 +185,20 @@ static void SFX(run_table)(c2d_tally *tally)
         }
     }
 }
+
+/* The parameters are this instantiation's only: clear them for the next. */
+#undef R
+#undef VECTOR
+#undef BODY
+#undef VEC2
+#undef TABLE
+#undef COUNT
+#undef NAME
+#undef SFX
+#undef PUT_R
+#undef WITHIN
+#undef COLLIDE
+#undef COLLIDE_NORMAL
+#undef TOI
+#undef PAIRS
+#undef BATCH
