@@ -955,7 +955,7 @@ size_t FN(c2d_collide_batch)(const PAIRS *p, size_t count, R restitution, c2d_st
         U flags[C2D_BLOCK];
         size_t j, width = count - base < C2D_BLOCK ? count - base : C2D_BLOCK;
         const int kernel_ran = width == C2D_BLOCK && e_ok;
-        if (kernel_ran) {
+        if (kernel_ran != 0) {
             /* Fixed trip count, no branches: vectorised at -O2 by clang, and
              * by gcc 12 for float on baseline x86-64 and for double from
              * x86-64-v2 on (SSE2 has no 64-bit compare for the flag masks). */
@@ -989,7 +989,7 @@ size_t FN(c2d_collide_batch)(const PAIRS *p, size_t count, R restitution, c2d_st
                 BODY a, b;
                 a.pos.x = pax[j], a.pos.y = pay[j], a.vel.x = vax[j], a.vel.y = vay[j], a.mass = ma[j];
                 b.pos.x = pbx[j], b.pos.y = pby[j], b.vel.x = vbx[j], b.vel.y = vby[j], b.mass = mb[j];
-                if (!kernel_ran)
+                if (kernel_ran == 0)
                     s = FN(c2d_collide)(&a, &b, restitution);
                 else if (v == C2D_NEED_ACCURATE)
                     s = FN(c2d_collide_accurate)(&a, &b, restitution);
