@@ -30,28 +30,35 @@ SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-fr
 B := build/san
 endif
 
-LIB_SRC := lib/collide2d.c
+# One translation unit per variant (lib/collide2d.c, double.c, float.c,
+# fixed.c) over shared template headers (lib/real_*.h).
+LIB_SRC := $(wildcard lib/*.c)
 LIB_HDR := include/collide2d.h
+LIB_DEPS := $(LIB_HDR) $(wildcard lib/*.h)
+LIB_OBJ := $(patsubst lib/%.c,$(B)/obj/%.o,$(LIB_SRC))
+LIB_PIC := $(patsubst lib/%.c,$(B)/obj/%.pic.o,$(LIB_SRC))
 STATIC := $(B)/libcollide2d.a
 SONAME := libcollide2d.so.$(VERSION_MAJOR)
 SHARED := $(B)/libcollide2d.so.$(VERSION)
+AMALGAMATION := $(B)/collide2d_all.c
 
-.PHONY: all lib test test-unit check-deps-test check-vectors check-build vectors install uninstall clean demo play bench cross test-mcu lint fuzz
+.PHONY: all lib amalgamate test test-unit check-deps-test check-vectors check-build vectors install uninstall clean demo play bench cross test-mcu lint fuzz
 all: lib
 lib: $(STATIC) $(B)/libcollide2d.so $(B)/collide2d.pc
 
-$(B)/obj/collide2d.o: $(LIB_SRC) $(LIB_HDR)
+$(B)/obj/%.o: lib/%.c $(LIB_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
-$(B)/obj/collide2d.pic.o: $(LIB_SRC) $(LIB_HDR)
+$(B)/obj/%.pic.o: lib/%.c $(LIB_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -fPIC -fvisibility=default -c $< -o $@
 
-$(STATIC): $(B)/obj/collide2d.o
+$(STATIC): $(LIB_OBJ)
+	@rm -f $@
 	$(AR) rcs $@ $^
 
-$(SHARED): $(B)/obj/collide2d.pic.o
+$(SHARED): $(LIB_PIC)
 	$(CC) $(CFLAGS) $(SAN_FLAGS) -shared -Wl,-soname,$(SONAME) -o $@ $^ -lm
 
 $(B)/libcollide2d.so: $(SHARED)
@@ -64,6 +71,13 @@ $(B)/collide2d.pc: Makefile $(LIB_HDR)
 	  'Name: collide2d' 'Description: Exact, robust 2-D disk collisions (C99, no dependencies)' \
 	  'Version: $(VERSION)' 'Libs: -L$${libdir} -lcollide2d' 'Libs.private: -lm' \
 	  'Cflags: -I$${includedir}' > $@
+
+# The whole library as one self-contained source, for firmware trees that
+# take one .c file beside the header (scripts/amalgamate.sh).
+amalgamate: $(AMALGAMATION)
+$(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(wildcard lib/*.h)
+	@mkdir -p $(@D)
+	sh scripts/amalgamate.sh $@
 
 install: lib
 	install -d $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR)
@@ -95,9 +109,9 @@ TEST_SUPPORT_HDR := $(wildcard tests/*.h)
 check-deps-test:
 	@sh scripts/deps.sh $(TEST_DEPS)
 
-$(B)/tests/%: tests/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(LIB_SRC) $(LIB_HDR)
+$(B)/tests/%: tests/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests -o $@ $< $(TEST_SUPPORT) $(LIB_SRC) -lcmocka -lmpfr -lgmp -lm
+	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
 
 $(B)/gen_vectors: tests/gen_vectors.c tests/referee.c tests/referee.h tests/vectors.h $(LIB_HDR)
 	@mkdir -p $(@D)
@@ -113,8 +127,8 @@ check-vectors: check-deps-test $(B)/gen_vectors
 	  echo "check-vectors: 1 passed, 0 failed" || \
 	  { echo "check-vectors: tests/vectors.c differs from the referee (make vectors)"; exit 1; }
 
-check-build:
-	@sh tests/check_build.sh $(B)/check-build
+check-build: $(AMALGAMATION)
+	@sh tests/check_build.sh $(B)/check-build $(AMALGAMATION)
 
 $(B)/tests/cxx_smoke: tests/cxx_smoke.cpp $(STATIC)
 	@mkdir -p $(@D)

@@ -31,13 +31,20 @@
  *     (FLT_EVAL_METHOD 0) and does not contract a*b+c into an FMA
  *     (build with -ffp-contract=off; see README "Determinism").
  *
- * CONFIGURATION (define before compiling lib/collide2d.c; defaults in [])
+ * CONFIGURATION (define when compiling the library; defaults in [])
  *   C2D_NO_DOUBLE  [undefined]  drop the double-precision API
  *   C2D_NO_FLOAT   [undefined]  drop the single-precision API
  *   C2D_NO_FIXED   [undefined]  drop the Q16.16 fixed-point API
- *   C2D_HEADER     ["../include/collide2d.h"]  how lib/collide2d.c finds this
- *                  file, e.g. -DC2D_HEADER='"collide2d.h"' when both sit in
- *                  one firmware folder
+ *   C2D_HEADER     ["../include/collide2d.h" from lib/; "collide2d.h" from the
+ *                  amalgamation]  how the library's sources find this file,
+ *                  e.g. -DC2D_HEADER='"collide2d.h"' when both sit in one
+ *                  firmware folder
+ *   The library is the .c files of lib/ (one per variant: collide2d.c,
+ *   double.c, float.c, fixed.c; `cc -std=c99 -c` on them builds it with no
+ *   other flag), or the single file `make amalgamate` writes to
+ *   build/collide2d_all.c: the same code, the same options, the same bits.
+ *   Build with -ffp-contract=off for reproducible bits, and -fno-math-errno
+ *   so the time of impact's square roots are the FPU instruction.
  *
  * THREAD SAFETY: every function is reentrant; it touches only its arguments.
  */

@@ -1,5 +1,5 @@
 #!/bin/sh
-# determinism.sh OUTDIR [COUNT] - the library's output bits over a fixed case
+# determinism.sh OUTDIR [COUNT [AMALGAMATION]] - the library's output bits over a fixed case
 # set (tests/hash_vectors.c) must hash the same under gcc and clang at -O0,
 # -O2 and -O3, all with -ffp-contract=off.  The harness is always compiled
 # the same way (gcc -O2 -ffp-contract=off) so only the library varies.
@@ -9,6 +9,7 @@
 set -u
 out=${1:-build/determinism}
 count=${2:-100000}
+all=${3:-build/collide2d_all.c}
 mkdir -p "$out"
 pass=0
 fail=0
@@ -22,8 +23,9 @@ hash_of() { # name cc flags...
     cc=$2
     shift 2
     # shellcheck disable=SC2068
-    $cc $@ -Iinclude -c lib/collide2d.c -o "$out/lib_$name.o" &&
-        gcc "$out/hash_vectors.o" "$out/lib_$name.o" -lm -o "$out/hv_$name" &&
+    mkdir -p "$out/lib_$name" &&
+        for f in lib/*.c; do $cc $@ -Iinclude -c "$f" -o "$out/lib_$name/$(basename "$f" .c).o" || return 1; done &&
+        gcc "$out/hash_vectors.o" "$out/lib_$name"/*.o -lm -o "$out/hv_$name" &&
         "$out/hv_$name" "$count" $(case $name in gcc-O2 | *-contract) echo "$out/$name.bin" ;; esac) >"$out/$name.txt" &&
         sed -n 's/.* cases, hash \([0-9a-f]*\)$/\1/p' "$out/$name.txt"
 }
@@ -43,6 +45,18 @@ for cc in gcc clang; do
         fi
     done
 done
+# The amalgamated single file (scripts/amalgamate.sh) is the same library.
+if [ -f "$all" ]; then
+    h=$(gcc -O2 $std -c "$all" -o "$out/all.o" && gcc "$out/hash_vectors.o" "$out/all.o" -lm -o "$out/hv_all" &&
+        "$out/hv_all" "$count" | sed -n 's/.* cases, hash \([0-9a-f]*\)$/\1/p')
+    if [ -n "$ref" ] && [ "$h" = "$ref" ]; then
+        pass=$((pass + 1))
+        echo "determinism: amalgamation gcc -O2: $h same"
+    else
+        fail=$((fail + 1))
+        echo "determinism: FAILED amalgamation: ${h:-build/run failed}, reference $ref" >&2
+    fi
+fi
 # The library's own FMA use (__FP_FAST_FMA: TwoProduct through fma()) must
 # not change a bit either: -march=native with contraction still off.
 h=$(hash_of gcc-native-nocontract gcc "-O3 -march=native $std")

@@ -30,11 +30,11 @@ FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off -Iinclude \
 fuzz-deps:
 	@sh scripts/deps.sh $(FUZZ_DEPS)
 
-$(FUZZ_BIN): $(FUZZ_SRC) $(LIB_SRC) $(LIB_HDR) | fuzz-deps
+$(FUZZ_BIN): $(FUZZ_SRC) $(LIB_SRC) $(LIB_DEPS) | fuzz-deps
 	@mkdir -p $(@D)
 	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) $(LIB_SRC) -lm
 
-$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) $(LIB_HDR)
+$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) $(LIB_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) -lm
 
@@ -63,9 +63,9 @@ TEST_TARGETS += test-fuzz
 # -O0/-O2/-O3 (-ffp-contract=off); also reports what FMA contraction changes.
 # See docs/DETERMINISM.md.
 .PHONY: test-determinism test-valgrind
-test-determinism:
+test-determinism: $(AMALGAMATION)
 	@sh scripts/deps.sh gcc clang
-	@sh tests/determinism.sh $(B)/determinism
+	@sh tests/determinism.sh $(B)/determinism 100000 $(AMALGAMATION)
 
 TEST_TARGETS += test-determinism
 

@@ -38,7 +38,7 @@ fail() {
 # ------------------------------------------------------------ outside symbols
 # Helpers are whatever this multilib's libgcc defines.  memcpy and friends
 # are what GCC requires of any freestanding environment (it may emit calls
-# to them for struct copies); they are listed apart, not failed.
+# to them for struct copies); the library avoids them, so they fail too.
 libgcc=$($cc $arch -print-libgcc-file-name)
 "${tools}nm" -g --defined-only "$libgcc" 2>/dev/null | awk 'NF == 3 { print $3 }' | sort -u >"$tmp/libgcc"
 "${tools}nm" -u "$obj" | awk '{ print $NF }' | sort -u >"$tmp/undef"
@@ -55,6 +55,9 @@ for s in $(cat "$tmp/undef"); do
     fi
 done
 [ -z "$other" ] || fail "outside symbols that are neither compiler helpers nor sqrt/sqrtf:$other"
+# The library promises no C library at all: a struct copy that became a
+# memcpy call is a regression (pass such structs by pointer).
+[ -z "$freestanding" ] || fail "calls into the C library's memory functions:$freestanding"
 if [ -n "$forbid" ]; then
     bad=$(grep -E "$forbid" "$tmp/undef" | tr '\n' ' ' || true)
     [ -z "$bad" ] || fail "forbidden outside symbols (/$forbid/): $bad"

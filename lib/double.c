@@ -1,0 +1,62 @@
+/* double.c - the double-precision API: binary64's parameters, the shared
+ * templates instantiated for it (real_*.h, derivations there), and the
+ * public functions written out by name.  C2D_NO_DOUBLE leaves it empty. */
+#include "internal.h"
+
+#ifndef C2D_NO_DOUBLE
+
+#define C2D_R_TYPE double
+#define C2D_R_BITS_TYPE uint64_t
+#define C2D_R_BODY c2d_body
+#define C2D_R_VEC c2d_vec2
+#define C2D_R_PAIRS c2d_pairs
+#define C2D_R_MANT 52
+#define C2D_R_EBIAS 1023
+#define C2D_R_EMAX 1023
+#define C2D_R_EMIN (-1022)
+#define C2D_R_MAX DBL_MAX
+#define C2D_R_SPLIT 134217729.0 /* 2^27 + 1: Veltkamp's split into 26-bit halves */
+/* -ffreestanding implies -fno-builtin: ask for the FPU instruction by name. */
+#ifdef __GNUC__
+#define C2D_R_SQRT __builtin_sqrt
+#define C2D_R_FABS __builtin_fabs
+#else
+#define C2D_R_SQRT sqrt /* declared in internal.h */
+#endif
+#if defined(__FP_FAST_FMA) && defined(__GNUC__)
+#define C2D_R_FMA __builtin_fma /* TwoProduct in one instruction; same bits */
+#endif
+#define C2D_R_EXP_K 900      /* fast window: |products| summed in [2^-900, 2^900] */
+#define C2D_R_EXP_KAPPA2 41  /* tier-2 d trusted if it cancels by at most 2^41 */
+#define C2D_R_WINDOW 600     /* exact-sum window, binades */
+#define C2D_R_MARGIN 70      /* window sum must dominate the rest by 2^70 */
+
+#include "real_bits.h"
+#include "real_exact.h"
+#include "real_fast.h"
+#include "real_general.h"
+#include "real_collide.h"
+#include "real_batch.h"
+#include "real_toi.h"
+
+c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution)
+{
+    return c2d_real_collide(a, b, restitution);
+}
+
+c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution)
+{
+    return c2d_real_collide_normal(a, b, &normal, restitution);
+}
+
+c2d_status c2d_time_of_impact(const c2d_body *a, const c2d_body *b, double radius_sum, double *t)
+{
+    return c2d_real_time_of_impact(a, b, radius_sum, t);
+}
+
+size_t c2d_collide_batch(const c2d_pairs *p, size_t count, double restitution, c2d_status *status)
+{
+    return c2d_real_collide_batch(p, count, restitution, status);
+}
+
+#endif /* C2D_NO_DOUBLE */

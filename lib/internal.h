@@ -1,0 +1,61 @@
+/* internal.h - what every translation unit of the library shares: the public
+ * header, the compiler hints, and the fast path's internal verdicts.
+ *
+ * The library is one translation unit per variant (collide2d.c: version and
+ * status names; double.c, float.c: the floating-point API; fixed.c: Q16.16).
+ * double.c and float.c define their type's parameters (C2D_R_*) and include
+ * the same template headers (real_*.h), which are written once against the
+ * names c2d_real, c2d_real_body, ...; every static function they define is
+ * local to its translation unit, so both instances use the same names and
+ * every public function is written out by name in double.c and float.c.
+ */
+#ifndef C2D_INTERNAL_H
+#define C2D_INTERNAL_H
+
+#ifdef C2D_HEADER
+#include C2D_HEADER
+#else
+#include "../include/collide2d.h"
+#endif
+#include <float.h>
+
+/* The time of impact's square roots.  gcc and clang get the FPU instruction
+ * through __builtin_sqrt (with -fno-math-errno); other compilers call the C
+ * library, declared here rather than through <math.h>, which a freestanding
+ * build does not have. */
+#ifndef __GNUC__
+#ifndef C2D_NO_DOUBLE
+double sqrt(double x);
+#endif
+#ifndef C2D_NO_FLOAT
+float sqrtf(float x);
+#endif
+#endif
+
+/* The fast path must inline into each caller: called, it passes a dozen
+ * floating values, more than the registers hold, and costs a third of the
+ * work.  The cold tiers stay out of line so the fast path keeps no frame. */
+#ifdef __GNUC__
+#define C2D_HOT static inline __attribute__((always_inline))
+#define C2D_COLD static __attribute__((noinline))
+#else
+#define C2D_HOT static inline
+#define C2D_COLD static
+#endif
+
+/* What the fast path (and tier 2) concluded.  Internal only: never mixed
+ * with the public c2d_status; c2d_verdict_status (real_fast.h) converts the
+ * final ones. */
+typedef enum c2d_verdict {
+    C2D_VERDICT_OK,         /* resolved: the results are ready */
+    C2D_VERDICT_SEPARATING, /* valid, not approaching */
+    C2D_VERDICT_RANGE,      /* valid, a result overflows */
+    C2D_VERDICT_ACCURATE,   /* valid and in the window, but d cancels: recompute d in double-double */
+    C2D_VERDICT_GENERAL     /* outside the window: validate in full and take the general path */
+} c2d_verdict;
+
+/* "No exponent": the exponent reported for a zero vector (int is >= 16 bits;
+ * real exponents stay within +-2300). */
+enum { C2D_NO_EXP = -32767 };
+
+#endif /* C2D_INTERNAL_H */

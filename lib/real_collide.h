@@ -1,0 +1,179 @@
+/* real_collide.h - template: c2d_collide and c2d_collide_normal, the three
+ * tiers chained.  Needs real_bits.h, real_exact.h, real_fast.h and
+ * real_general.h first.
+ *
+ * THE TIERS
+ *   1. The fast path (real_fast.h): plain arithmetic, branch-free, when every
+ *      intermediate is provably safe and d cancels by at most 4x.
+ *   2. Tier 2: inputs valid and inside the window, but d cancels.  The
+ *      normal is taken exactly (n = nh + nl, the TwoSum of the position
+ *      difference) and d = (vb - va).n is recomputed as a double-double
+ *      (c2d_dot2: exact differences, exact products), so its error is about
+ *      one ulp of d plus u^2 of the terms.  Trusted when it kept
+ *      C2D_R_EXP_KAPPA2 bits through the cancellation (k <= 2^KAPPA2 |d|);
+ *      the rest of the formula is the fast path's (c2d_finish) on that d.
+ *   3. The general path (real_general.h): exact d, extended exponents.
+ *   All three evaluate the same formula, so results are continuous across
+ *   the tier boundaries.
+ *
+ * STATUS PRIORITY
+ *   INVALID > DEGENERATE > SEPARATING > RANGE > OK.  The fast path cannot
+ *   tell INVALID from DEGENERATE (both fail its window), so whatever it
+ *   declines is validated in full, in priority order, before any tier runs.
+ */
+#ifndef C2D_REAL_COLLIDE_H
+#define C2D_REAL_COLLIDE_H
+
+static int c2d_mass_valid(c2d_real m) { return m > 0; } /* NaN fails; INFINITY passes */
+
+/* INVALID or DEGENERATE for the bodies and restitution, else OK. */
+static c2d_status c2d_validate(const c2d_real_body *a, const c2d_real_body *b, c2d_real e)
+{
+    if (a == NULL || b == NULL) return C2D_INVALID;
+    if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y)) return C2D_INVALID;
+    if (!c2d_finite4(a->vel.x, a->vel.y, b->vel.x, b->vel.y)) return C2D_INVALID;
+    if (!c2d_mass_valid(a->mass) || !c2d_mass_valid(b->mass)) return C2D_INVALID;
+    if (!(e >= 0 && e <= 1)) return C2D_INVALID;
+    if (a->mass > C2D_R_MAX && b->mass > C2D_R_MAX) return C2D_DEGENERATE;
+    return C2D_OK;
+}
+
+/* The fast path's view of two bodies along a normal (filled field by field:
+ * a struct copy becomes a memcpy call at -Os on small cores). */
+static inline void c2d_pair_of(c2d_pair *p, const c2d_real_body *a, const c2d_real_body *b, c2d_real nx, c2d_real ny)
+{
+    p->n.x = nx;
+    p->n.y = ny;
+    p->va.x = a->vel.x;
+    p->va.y = a->vel.y;
+    p->vb.x = b->vel.x;
+    p->vb.y = b->vel.y;
+    p->ma = a->mass;
+    p->mb = b->mass;
+}
+
+static void c2d_store(c2d_real_body *a, c2d_real_body *b, const c2d_real *out)
+{
+    a->vel.x = out[0];
+    a->vel.y = out[1];
+    b->vel.x = out[2];
+    b->vel.y = out[3];
+}
+
+/* Tier 2 for valid inputs, the normal exact as nh + nl (nl = 0 for a given
+ * normal).  GENERAL when the double-double d cannot be trusted or a step
+ * leaves the window. */
+static c2d_verdict c2d_accurate(const c2d_real_body *a, const c2d_real_body *b, const c2d_real_vec *nh,
+                                const c2d_real_vec *nl, c2d_real e, c2d_real *out)
+{
+    const c2d_real k_lo = c2d_pow2(-C2D_R_EXP_K), k_hi = c2d_pow2(C2D_R_EXP_K);
+    c2d_real rx = b->vel.x - a->vel.x, ry = b->vel.y - a->vel.y;
+    c2d_real k = c2d_abs(rx * nh->x) + c2d_abs(ry * nh->y);
+    c2d_real split = c2d_abs(rx) + c2d_abs(ry) + c2d_abs(nh->x) + c2d_abs(nh->y);
+    c2d_real d;
+    c2d_pair p;
+    if (!(k >= k_lo && k <= k_hi && split <= c2d_pow2(C2D_R_EMAX / 2))) return C2D_VERDICT_GENERAL;
+    d = c2d_dot2(nh, nl, &a->vel, &b->vel);
+    if (!(c2d_abs(d) * c2d_pow2(C2D_R_EXP_KAPPA2) >= k)) return C2D_VERDICT_GENERAL;
+    c2d_pair_of(&p, a, b, nh->x + nl->x, nh->y + nl->y);
+    if (!c2d_finish(d, &p, 1 + e, out)) return C2D_VERDICT_GENERAL;
+    if (d >= 0) return C2D_VERDICT_SEPARATING;
+    return c2d_finite4(out[0], out[1], out[2], out[3]) ? C2D_VERDICT_OK : C2D_VERDICT_RANGE;
+}
+
+/* Tiers 2 and 3 with the exact normal, for valid non-degenerate inputs. */
+static c2d_status c2d_resolve(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *nh, const c2d_real_vec *nl,
+                              c2d_real e)
+{
+    c2d_real out[4];
+    c2d_verdict v = c2d_accurate(a, b, nh, nl, e, out);
+    if (v == C2D_VERDICT_GENERAL) return c2d_general_pair(a, b, nh, nl, e);
+    if (v == C2D_VERDICT_OK) c2d_store(a, b, out);
+    return c2d_verdict_status(v);
+}
+
+/* n = b.pos - a.pos exactly, as the floating pair nh + nl. */
+static void c2d_exact_normal(const c2d_real_body *a, const c2d_real_body *b, c2d_real_vec *nh, c2d_real_vec *nl)
+{
+    nh->x = c2d_two_sum(b->pos.x, -a->pos.x, &nl->x);
+    nh->y = c2d_two_sum(b->pos.y, -a->pos.y, &nl->y);
+}
+
+/* Everything c2d_collide's fast path declined as outside its window: full
+ * validation in status priority, then the exact normal. */
+C2D_COLD c2d_status c2d_collide_slow(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
+{
+    c2d_real_vec nh, nl;
+    c2d_status s = c2d_validate(a, b, restitution);
+    if (s != C2D_OK) return s;
+    if (a->pos.x == b->pos.x && a->pos.y == b->pos.y) return C2D_DEGENERATE;
+    if (c2d_abs(a->pos.x) + c2d_abs(a->pos.y) + c2d_abs(b->pos.x) + c2d_abs(b->pos.y) >= c2d_pow2(C2D_R_EMAX - 2)) {
+        /* Near the top of the range the difference may overflow: go general
+         * with the exact difference carried in extended form. */
+        c2d_xf xh[2], xl[2];
+        c2d_exact_diff(b->pos.x, a->pos.x, &xh[0], &xl[0]);
+        c2d_exact_diff(b->pos.y, a->pos.y, &xh[1], &xl[1]);
+        return c2d_general(a, b, xh, xl, restitution);
+    }
+    c2d_exact_normal(a, b, &nh, &nl);
+    return c2d_resolve(a, b, &nh, &nl, restitution);
+}
+
+/* Valid inputs (the fast window held) whose d cancels: only d needs the
+ * exact normal.  Out of line, so the fast path keeps its registers. */
+C2D_COLD c2d_status c2d_collide_accurate(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
+{
+    c2d_real_vec nh, nl;
+    c2d_exact_normal(a, b, &nh, &nl);
+    return c2d_resolve(a, b, &nh, &nl, restitution);
+}
+
+/* c2d_collide: the fast path, then the tier its verdict names. */
+static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
+{
+    c2d_real out[4];
+    c2d_pair p;
+    c2d_verdict v;
+    if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
+    c2d_pair_of(&p, a, b, b->pos.x - a->pos.x, b->pos.y - a->pos.y);
+    v = c2d_fast(&p, 1 + restitution, out);
+    if (v == C2D_VERDICT_ACCURATE) return c2d_collide_accurate(a, b, restitution);
+    if (v == C2D_VERDICT_GENERAL) return c2d_collide_slow(a, b, restitution);
+    if (v == C2D_VERDICT_OK) c2d_store(a, b, out);
+    return c2d_verdict_status(v);
+}
+
+/* What c2d_collide_normal's fast path declined, out of line. */
+C2D_COLD c2d_status c2d_collide_normal_slow(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *n,
+                                            c2d_real restitution, c2d_verdict verdict)
+{
+    c2d_real_vec zero;
+    c2d_status s;
+    zero.x = 0;
+    zero.y = 0;
+    if (verdict == C2D_VERDICT_ACCURATE) return c2d_resolve(a, b, n, &zero, restitution);
+    s = c2d_validate(a, b, restitution);
+    if (s != C2D_OK) return s;
+    if (!c2d_finite4(n->x, n->y, 0, 0)) return C2D_INVALID;
+    if (n->x == 0 && n->y == 0) return C2D_DEGENERATE;
+    return c2d_resolve(a, b, n, &zero, restitution);
+}
+
+/* c2d_collide_normal: positions are only validated. */
+static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *normal,
+                                                 c2d_real restitution)
+{
+    c2d_real out[4];
+    c2d_pair p;
+    c2d_verdict v;
+    if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
+    if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y)) return C2D_INVALID;
+    c2d_pair_of(&p, a, b, normal->x, normal->y);
+    v = c2d_fast(&p, 1 + restitution, out);
+    if (v == C2D_VERDICT_ACCURATE || v == C2D_VERDICT_GENERAL)
+        return c2d_collide_normal_slow(a, b, normal, restitution, v);
+    if (v == C2D_VERDICT_OK) c2d_store(a, b, out);
+    return c2d_verdict_status(v);
+}
+
+#endif /* C2D_REAL_COLLIDE_H */
