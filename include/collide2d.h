@@ -118,9 +118,18 @@ c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double 
  *   radius_sum   >= 0 (sum of the two radii; same length unit as positions).
  *   *t           written only on C2D_OK, in the time unit of the velocities.
  *   returns      C2D_OK (t >= 0 finite; overlapping and approaching gives t = 0),
- *                C2D_SEPARATING (receding, missing, or no relative motion),
+ *                C2D_SEPARATING (receding, missing, no relative motion, or a
+ *                graze: a miss distance of exactly radius_sum, where the
+ *                disks touch with no approach speed, as c2d_collide says),
  *                C2D_INVALID (NaN/Inf in a position or velocity, radius_sum < 0
  *                or not finite, a NULL pointer), C2D_RANGE (t exceeds DBL_MAX).
+ *   status       exact (decided by exact arithmetic wherever rounding could
+ *                change it), magnitudes anywhere in the range and in any
+ *                ratio.  One bounded-memory exception, never met in testing:
+ *                a near-graze whose exact test needs more than 40 terms
+ *                (all four differences pb - pa, vb - va inexact with their
+ *                rounding errors at scattered exponents) is decided to
+ *                2^-52 (float 2^-23) relative accuracy instead.
  *   accuracy     4 ulp of t plus 4 times the time one rounding (1 ulp) of the
  *                centre distance is worth at contact (ulp(|d|) divided by the
  *                approach speed at contact); no cancellation for disks far

@@ -37,6 +37,7 @@
 #include "real_general.h"
 #include "real_collide.h"
 #include "real_batch.h"
+#include "real_sign.h"
 #include "real_toi.h"
 
 c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution)

@@ -38,6 +38,7 @@
 #include "real_general.h"
 #include "real_collide.h"
 #include "real_batch.h"
+#include "real_sign.h"
 #include "real_toi.h"
 
 c2d_status c2d_collidef(c2d_bodyf *a, c2d_bodyf *b, float restitution)

@@ -153,9 +153,8 @@ C2D_COLD c2d_status c2d_collide_normal_slow(c2d_real_body *a, c2d_real_body *b, 
     zero.y = 0;
     if (verdict == C2D_VERDICT_ACCURATE) return c2d_resolve(a, b, n, &zero, restitution);
     s = c2d_validate(a, b, restitution);
-    if (s != C2D_OK) return s;
-    if (!c2d_finite4(n->x, n->y, 0, 0)) return C2D_INVALID;
-    if (n->x == 0 && n->y == 0) return C2D_DEGENERATE;
+    if (s == C2D_INVALID || !c2d_finite4(n->x, n->y, 0, 0)) return C2D_INVALID;
+    if (s != C2D_OK || a == b || (n->x == 0 && n->y == 0)) return C2D_DEGENERATE;
     return c2d_resolve(a, b, n, &zero, restitution);
 }
 
@@ -168,6 +167,7 @@ static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body
     c2d_verdict v;
     if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y)) return C2D_INVALID;
+    if (a == b) return c2d_collide_normal_slow(a, b, normal, restitution, C2D_VERDICT_GENERAL); /* itself */
     c2d_pair_of(&p, a, b, normal->x, normal->y);
     v = c2d_fast(&p, 1 + restitution, out);
     if (v == C2D_VERDICT_ACCURATE || v == C2D_VERDICT_GENERAL)

@@ -1,5 +1,5 @@
 /* real_toi.h - template: c2d_time_of_impact, two disks moving with constant
- * velocities.  Needs real_bits.h and real_exact.h first.
+ * velocities.  Needs real_bits.h, real_exact.h and real_sign.h first.
  *
  * DERIVATION
  *   With d = pb - pa and v = vb - va, the disks touch when |d + v t| = R,
@@ -10,27 +10,47 @@
  *   (d.v)^2 + (d x v)^2 = |d|^2 |v|^2 turns it into
  *       b^2 - ac = a R^2 - (d x v)^2 = a (R - h)(R + h),
  *   h = |d x v| / |v| the miss distance, so the only cancellation left is
- *   the intrinsic one of a grazing miss (h ~ R).  They miss when h > R.
- *   The smaller root in the stable form (no subtraction of near-equal
- *   terms, since b < 0):
+ *   the intrinsic one of a grazing miss (h ~ R).  The smaller root in the
+ *   stable form (no subtraction of near-equal terms, since b < 0):
  *       t = c / (-b + sqrt(b^2 - ac)),   c = (|d| - R)(|d| + R),
  *   is accurate to a few ulp plus the time one rounding of |d| is worth at
- *   the approach speed at contact.  Overlapping (|d| <= R) and approaching
- *   gives t = 0.
+ *   the approach speed at contact.
+ *
+ * THE STATUS, EXACTLY
+ *   OK at t = 0 when c <= 0 (touching or overlapping) and b < 0; otherwise
+ *   OK when c > 0, b < 0 and a R^2 - (d x v)^2 > 0 (the pair passes closer
+ *   than R); SEPARATING in every other case, including a graze (h = R
+ *   exactly: the disks touch with no approach speed, as c2d_collide would
+ *   say).  The three signs are polynomials in the inputs of degree 2, 2
+ *   and 4.  The fast path decides each from its floating value when the
+ *   value clears a bound on its rounding error (FILTERS below); otherwise
+ *   the exact path (c2d_toi_exact) evaluates them as exact sums of
+ *   products (real_sign.h), so the status is exact over the whole range.
  *
  * RANGE
- *   d and v are each taken exactly (TwoSum, as double-doubles) and scaled by
- *   a power of two so their largest component lies in [1, 4); R scales with
- *   d.  Then no square or product can overflow or underflow harmfully, and
- *   t scales back by 2^(kd - kv) with a single rounding.
+ *   The fast path takes d and v exactly (TwoSum, as double-doubles) and
+ *   scales each by a power of two so its largest component lies in [1, 4);
+ *   R scales with d.  It runs only if that scaling was exact (no part of d,
+ *   v or R fell below the normal range): the inputs' magnitudes may differ
+ *   by more than the exponent range, and then a miss distance, a radius and
+ *   d.v underflow or round together.  The exact path works in extended
+ *   numbers and cannot over- or underflow; t scales back with one rounding.
+ *
+ * FILTERS (u = 2^-(MANT+1), the unit roundoff; scaled values are O(1))
+ *   d.v by c2d_dot_dd: error <= u |d.v| + 14 u^2 k, k = sum |dh_i vh_i|.
+ *   |d| = sqrt(q): relative error <= 3u.  h = |d x v| / |v|: relative error
+ *   <= 5u plus 14 u^2 k' / |v| from the cross product's cancellation.
+ *   Each decision is taken when its margin exceeds 4 to 16 times these
+ *   bounds, plus a floor of a few 2^EMIN for underflowing products.
  */
 #ifndef C2D_REAL_TOI_H
 #define C2D_REAL_TOI_H
 
 /* The exact difference (x1 - x0, y1 - y0) as a double-double vector h + l
  * scaled by 2^-k, where k is chosen from the larger component so both lie
- * in [0, 4).  Returns k, or C2D_NO_EXP for a zero difference. */
-static int c2d_scaled_diff2(c2d_real x1, c2d_real x0, c2d_real y1, c2d_real y0, c2d_real *h, c2d_real *l)
+ * in [0, 4).  Returns k, or C2D_NO_EXP for a zero difference; *exact is
+ * cleared when a low part fell below the normal range in the scaling. */
+static int c2d_scaled_diff2(c2d_real x1, c2d_real x0, c2d_real y1, c2d_real y0, c2d_real *h, c2d_real *l, int *exact)
 {
     c2d_xf hx, lx, hy, ly;
     int k;
@@ -42,28 +62,162 @@ static int c2d_scaled_diff2(c2d_real x1, c2d_real x0, c2d_real y1, c2d_real y0, 
     l[0] = c2d_scale2(lx.m, lx.e - k);
     h[1] = c2d_scale2(hy.m, hy.e - k);
     l[1] = c2d_scale2(ly.m, ly.e - k);
+    if ((hx.m != 0 && hx.e - k < C2D_R_EMIN) || (lx.m != 0 && lx.e - k < C2D_R_EMIN) ||
+        (hy.m != 0 && hy.e - k < C2D_R_EMIN) || (ly.m != 0 && ly.e - k < C2D_R_EMIN))
+        *exact = 0;
     return k;
 }
+
+/* ------------------------------------------------------------ exact path */
+
+/* d = pb - pa and v = vb - va exactly as hi + lo per component, and R, all
+ * as extended numbers: [axis][0] hi, [axis][1] lo. */
+typedef struct c2d_toi_pair {
+    c2d_xf d[2][2], v[2][2];
+    c2d_xf r;
+} c2d_toi_pair;
+
+static void c2d_toi_pair_load(c2d_toi_pair *p, const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum)
+{
+    c2d_exact_diff(b->pos.x, a->pos.x, &p->d[0][0], &p->d[0][1]);
+    c2d_exact_diff(b->pos.y, a->pos.y, &p->d[1][0], &p->d[1][1]);
+    c2d_exact_diff(b->vel.x, a->vel.x, &p->v[0][0], &p->v[0][1]);
+    c2d_exact_diff(b->vel.y, a->vel.y, &p->v[1][0], &p->v[1][1]);
+    p->r = c2d_xf_make(radius_sum, 0);
+}
+
+/* acc += sign * x * y for two exact hi + lo components. */
+static void c2d_acc_pair_product(c2d_acc *acc, const c2d_xf x[2], const c2d_xf y[2], int sign)
+{
+    int i, j;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) c2d_acc_product(acc, x[i], y[j], sign);
+}
+
+/* d.v, correctly rounded, sign exact. */
+static c2d_xf c2d_toi_dot(c2d_acc *acc, const c2d_toi_pair *p)
+{
+    c2d_acc_clear(acc);
+    c2d_acc_pair_product(acc, p->d[0], p->v[0], 1);
+    c2d_acc_pair_product(acc, p->d[1], p->v[1], 1);
+    return c2d_acc_value(acc);
+}
+
+/* d x v = dx vy - dy vx, left in acc (not yet rounded). */
+static void c2d_toi_cross(c2d_acc *acc, const c2d_toi_pair *p)
+{
+    c2d_acc_clear(acc);
+    c2d_acc_pair_product(acc, p->d[0], p->v[1], 1);
+    c2d_acc_pair_product(acc, p->d[1], p->v[0], -1);
+}
+
+/* |d|^2 - R^2, correctly rounded, sign exact. */
+static c2d_xf c2d_toi_gap(c2d_acc *acc, const c2d_toi_pair *p)
+{
+    c2d_acc_clear(acc);
+    c2d_acc_pair_product(acc, p->d[0], p->d[0], 1);
+    c2d_acc_pair_product(acc, p->d[1], p->d[1], 1);
+    c2d_acc_product(acc, p->r, p->r, -1);
+    return c2d_acc_value(acc);
+}
+
+enum { C2D_TOI_PARTS = 16 }; /* exact components of |v|^2 or d x v, at most */
+
+/* R^2 |v|^2 - (d x v)^2 = b^2 - ac, correctly rounded, sign exact: |v|^2
+ * and d x v are compressed to their exact components first and multiplied
+ * component by component.  Only if those products overflow the
+ * accumulator even after compression (never seen; it needs inputs whose
+ * exact differences scatter over many exponent ranges) is the value
+ * formed from the rounded factors instead. */
+static c2d_xf c2d_toi_disc(c2d_acc *acc, const c2d_toi_pair *p)
+{
+    c2d_xf vv[C2D_TOI_PARTS], cr[C2D_TOI_PARTS], r2[2];
+    c2d_real lo;
+    int i, j, nv, nc;
+    c2d_acc_clear(acc);
+    c2d_acc_pair_product(acc, p->v[0], p->v[0], 1);
+    c2d_acc_pair_product(acc, p->v[1], p->v[1], 1);
+    nv = c2d_compress(acc->atom, acc->n);
+    for (i = 0; i < nv; i++) c2d_xf_copy(&vv[i], &acc->atom[i]);
+    c2d_toi_cross(acc, p);
+    nc = c2d_compress(acc->atom, acc->n);
+    for (i = 0; i < nc; i++) c2d_xf_copy(&cr[i], &acc->atom[i]);
+    r2[0] = c2d_xf_make(c2d_two_prod(p->r.m, p->r.m, &lo), 2 * p->r.e);
+    r2[1] = c2d_xf_make(lo, 2 * p->r.e);
+    c2d_acc_clear(acc);
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < nv; j++) c2d_acc_product(acc, r2[i], vv[j], 1);
+    for (i = 0; i < nc; i++) {
+        for (j = 0; j < i; j++) {
+            c2d_acc_product(acc, cr[i], c2d_xf_make(cr[j].m, cr[j].e + 1), -1);
+        }
+        c2d_acc_product(acc, cr[i], cr[i], -1);
+    }
+    if (acc->full == 0) return c2d_acc_value(acc);
+    {
+        c2d_xf v2 = c2d_exact_sum(vv, nv), c = c2d_exact_sum(cr, nc);
+        return c2d_xf_add(c2d_xf_mul(c2d_xf_mul(p->r, p->r), v2), c2d_xf_neg(c2d_xf_mul(c, c)));
+    }
+}
+
+/* Every decision from exact signs, t from correctly rounded b, c and
+ * b^2 - ac in extended arithmetic: t = c / (sqrt(b^2 - ac) - b). */
+C2D_COLD c2d_status c2d_toi_exact(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, c2d_real *t)
+{
+    c2d_toi_pair p;
+    c2d_acc acc;
+    c2d_xf dv, gap, disc, tt;
+    c2d_real value;
+    c2d_toi_pair_load(&p, a, b, radius_sum);
+    if (p.v[0][0].m == 0 && p.v[1][0].m == 0) return C2D_SEPARATING; /* no relative motion */
+    if (p.d[0][0].m == 0 && p.d[1][0].m == 0) return C2D_SEPARATING; /* coincident: not approaching */
+    dv = c2d_toi_dot(&acc, &p);
+    gap = c2d_toi_gap(&acc, &p);
+    if (c2d_xf_sign(gap) <= 0) {
+        if (c2d_xf_sign(dv) >= 0) return C2D_SEPARATING;
+        *t = 0;
+        return C2D_OK;
+    }
+    if (c2d_xf_sign(dv) >= 0) return C2D_SEPARATING;
+    disc = c2d_toi_disc(&acc, &p);
+    if (c2d_xf_sign(disc) <= 0) return C2D_SEPARATING; /* misses, or grazes */
+    tt = c2d_xf_div(gap, c2d_xf_add(c2d_xf_sqrt(disc), c2d_xf_neg(dv)));
+    value = c2d_xf_value(tt);
+    if (!(value <= C2D_R_MAX)) return C2D_RANGE;
+    *t = value;
+    return C2D_OK;
+}
+
+/* ------------------------------------------------------------- fast path */
+
+/* A decision the fast path can take: |x - y| clears the error bound. */
+static int c2d_clear_of(c2d_real x, c2d_real y, c2d_real bound) { return c2d_abs(x - y) > bound; }
 
 static c2d_status c2d_real_time_of_impact(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum,
                                           c2d_real *t)
 {
+    const c2d_real rel = c2d_pow2(-C2D_R_MANT + 2), rel2 = c2d_pow2(-2 * C2D_R_MANT + 4);
+    const c2d_real tiny = c2d_pow2(C2D_R_EMIN + 4);
     c2d_real dh[2], dl[2], vh[2], vl[2], crossh[2], crossl[2];
-    c2d_real rad, dist, speed, dv, cross, h, c, disc, tt;
-    int kd, kv;
+    c2d_real rad, dist, speed, dv, cross, h, c, disc, tt, k;
+    int kd, kv, exact = 1;
     if (a == NULL || b == NULL || t == NULL) return C2D_INVALID;
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y) || !c2d_finite4(a->vel.x, a->vel.y, b->vel.x, b->vel.y) ||
         !(radius_sum >= 0 && radius_sum <= C2D_R_MAX))
         return C2D_INVALID;
-    kv = c2d_scaled_diff2(b->vel.x, a->vel.x, b->vel.y, a->vel.y, vh, vl);
+    kv = c2d_scaled_diff2(b->vel.x, a->vel.x, b->vel.y, a->vel.y, vh, vl, &exact);
     if (kv == C2D_NO_EXP) return C2D_SEPARATING; /* no relative motion */
-    kd = c2d_scaled_diff2(b->pos.x, a->pos.x, b->pos.y, a->pos.y, dh, dl);
+    kd = c2d_scaled_diff2(b->pos.x, a->pos.x, b->pos.y, a->pos.y, dh, dl, &exact);
     if (kd == C2D_NO_EXP) return C2D_SEPARATING; /* coincident: not approaching */
+    rad = c2d_scale2(radius_sum, -kd); /* Inf when far larger than |d|: overlapping */
+    if (exact == 0 || (rad != 0 && rad < c2d_pow2(C2D_R_EMIN))) return c2d_toi_exact(a, b, radius_sum, t);
     /* In units of 2^kd for lengths and 2^kv for speeds, both vectors have
      * their largest component in [1, 4): squares and products are safe. */
     dv = c2d_dot_dd(dh, dl, vh, vl);
-    rad = c2d_scale2(radius_sum, -kd); /* Inf when far larger than |d|: overlapping */
+    k = c2d_abs(dh[0] * vh[0]) + c2d_abs(dh[1] * vh[1]);
+    if (!(c2d_abs(dv) > rel2 * k + tiny)) return c2d_toi_exact(a, b, radius_sum, t);
     dist = C2D_R_SQRT(dh[0] * dh[0] + dh[1] * dh[1] + 2 * (dh[0] * dl[0] + dh[1] * dl[1]));
+    if (!c2d_clear_of(dist, rad, rel * (dist > rad ? dist : rad))) return c2d_toi_exact(a, b, radius_sum, t);
     if (dist <= rad) {
         if (dv >= 0) return C2D_SEPARATING;
         *t = 0;
@@ -78,6 +232,8 @@ static c2d_status c2d_real_time_of_impact(const c2d_real_body *a, const c2d_real
     crossl[1] = dl[0];
     cross = c2d_abs(c2d_dot_dd(crossh, crossl, vh, vl));
     h = cross / speed;
+    k = c2d_abs(dh[1] * vh[0]) + c2d_abs(dh[0] * vh[1]);
+    if (!c2d_clear_of(h, rad, rel * h + (rel2 * k + tiny) / speed)) return c2d_toi_exact(a, b, radius_sum, t);
     if (h > rad) return C2D_SEPARATING; /* misses */
     c = (dist - rad) * (dist + rad);
     disc = speed * C2D_R_SQRT((rad - h) * (rad + h));

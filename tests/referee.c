@@ -211,7 +211,7 @@ c2d_status ref_time_of_impact(const ref_case *c, double radius_sum, double *t, d
         mpq_mul(disc, b, b);
         mpq_mul(tmp, a, cc);
         mpq_sub(disc, disc, tmp);
-        if (mpq_sgn(disc) < 0) {
+        if (mpq_sgn(disc) <= 0) { /* misses, or grazes with no approach speed */
             st = C2D_SEPARATING;
         } else {
             mpfr_set_q(fa, disc, MPFR_RNDN);

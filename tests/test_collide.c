@@ -231,6 +231,31 @@ static void test_float_twins_refuse_and_resolve_like_double(void **state)
     assert_bits_equal(a, a0);
 }
 
+/* The audit's slips (issue 10): INVALID outranks DEGENERATE for a bad normal
+ * between two walls, and a body against itself is DEGENERATE for both front
+ * ends, in double and float, bodies untouched. */
+static void test_bad_normal_between_walls_is_invalid_and_self_collision_degenerate(void **state)
+{
+    c2d_body w1 = {{0, 0}, {1, 0}, INFINITY}, w2 = {{1, 0}, {0, 0}, INFINITY}, s = {{0, 0}, {1, 0}, 1}, s0 = s;
+    c2d_bodyf f1 = {{0, 0}, {1, 0}, INFINITY}, f2 = {{1, 0}, {0, 0}, INFINITY}, fs = {{0, 0}, {1, 0}, 1}, fs0 = fs;
+    c2d_vec2 nan_n = {NAN, 1}, inf_n = {INFINITY, 0}, n = {1, 0};
+    c2d_vec2f nan_nf = {NAN, 1}, inf_nf = {0, -INFINITY}, nf = {1, 0};
+    (void)state;
+    expect_refusal(w1, w2, &nan_n, 1, C2D_INVALID);
+    expect_refusal(w1, w2, &inf_n, 1, C2D_INVALID);
+    expect_refusal(w1, w2, &n, 1, C2D_DEGENERATE);
+    assert_status(c2d_collide_normalf(&f1, &f2, nan_nf, 1.0f), C2D_INVALID);
+    assert_status(c2d_collide_normalf(&f1, &f2, inf_nf, 1.0f), C2D_INVALID);
+    assert_status(c2d_collide_normalf(&f1, &f2, nf, 1.0f), C2D_DEGENERATE);
+    assert_status(c2d_collide(&s, &s, 1), C2D_DEGENERATE);
+    assert_status(c2d_collide_normal(&s, &s, n, 1), C2D_DEGENERATE);
+    assert_status(c2d_collide_normal(&s, &s, nan_n, 1), C2D_INVALID);
+    assert_bits_equal(s, s0);
+    assert_status(c2d_collidef(&fs, &fs, 1.0f), C2D_DEGENERATE);
+    assert_status(c2d_collide_normalf(&fs, &fs, nf, 1.0f), C2D_DEGENERATE);
+    assert_bits_equal(fs, fs0);
+}
+
 static void test_version_and_status_strings(void **state)
 {
     (void)state;
@@ -252,6 +277,7 @@ int main(void)
         cmocka_unit_test(test_plastic_impact_leaves_common_normal_velocity),
         cmocka_unit_test(test_each_refusal_leaves_bodies_untouched),
         cmocka_unit_test(test_float_twins_refuse_and_resolve_like_double),
+        cmocka_unit_test(test_bad_normal_between_walls_is_invalid_and_self_collision_degenerate),
         cmocka_unit_test(test_version_and_status_strings),
     };
     return cmocka_run_group_tests_name("collide", tests, NULL, NULL);
