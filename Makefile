@@ -103,7 +103,7 @@ clean:
 TEST_DEPS := libcmocka-dev libgmp-dev libmpfr-dev pkg-config
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(patsubst tests/%.c,$(B)/tests/%,$(TEST_SRCS))
-TEST_SUPPORT := tests/referee.c tests/vectors.c tests/support.c
+TEST_SUPPORT := tests/referee.c tests/vectors.c tests/support.c tests/ref_rough.c
 TEST_SUPPORT_HDR := $(wildcard tests/*.h)
 
 check-deps-test:

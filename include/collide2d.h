@@ -153,6 +153,60 @@ typedef struct c2d_pairs {
     const double *mass_a, *mass_b;
 } c2d_pairs;
 size_t c2d_collide_batch(const c2d_pairs *p, size_t count, double restitution, c2d_status *status);
+
+/* Rough disks: friction and spin at contact (Walton's model of rough
+ * inelastic disks; docs/METHOD.md).  A scene that calls only c2d_collide
+ * pays nothing for this model.
+ *   spin     angular velocity about +z (counter-clockwise), rad per time unit
+ *   mass     > 0; INFINITY = immovable (its velocity never changes)
+ *   radius   >= 0 and finite: the contact point is at a.pos + a.radius n^
+ *            (0 for a wall or a point)
+ *   inertia  moment of inertia about the centre, > 0 (a solid disk
+ *            m r^2 / 2, a billiard ball 2/5 m r^2); INFINITY = its spin never
+ *            changes */
+typedef struct c2d_disk { c2d_vec2 pos, vel; double spin, mass, radius, inertia; } c2d_disk;
+
+/* The contact's surface:
+ *   restitution             e in [0, 1]: normal slip speed after = -e x before
+ *   friction                mu >= 0 (Coulomb; INFINITY: never slides)
+ *   tangential_restitution  beta in [-1, 1]: tangential slip speed after =
+ *                           -beta x before while sticking (-1: smooth,
+ *                           0: the contact point stops, 1: perfectly rough) */
+typedef struct c2d_surface { double restitution, friction, tangential_restitution; } c2d_surface;
+
+/* Resolve an impact of two rough disks along the line of centres (normal =
+ * b.pos - a.pos, taken exactly).  Normal impulse as c2d_collide (an impact
+ * only if the normal slip speed is < 0); tangential impulse: the one that
+ * makes the tangential slip speed g_t' = -beta g_t, unless its size exceeds
+ * mu times the normal impulse, then mu times the normal impulse against the
+ * slip.  g_t = (vb - va).t^ - (a.spin a.radius + b.spin b.radius),
+ * t^ = (-n^y, n^x).  Both spins change by the torque of the tangential
+ * impulse; velocities and spins are written, nothing else.
+ *   returns      C2D_OK; C2D_SEPARATING, C2D_DEGENERATE and C2D_RANGE for the
+ *                normal part exactly as c2d_collide; C2D_INVALID also for a
+ *                NaN/Inf spin or radius, radius < 0, inertia <= 0 or NaN,
+ *                friction < 0 or NaN, beta outside [-1, 1]; C2D_RANGE also
+ *                when a velocity or spin result would exceed DBL_MAX.  Same
+ *                priority; a == b is C2D_DEGENERATE; nothing is written
+ *                unless C2D_OK.
+ *   identities   mu = 0 or beta = -1: exactly c2d_collide's velocities, bit
+ *                for bit, spins untouched.
+ *   physics      linear momentum conserved between finite masses; angular
+ *                momentum about any point when the disks touch
+ *                (|b.pos - a.pos| = ra + rb); kinetic energy (with rotation,
+ *                I w^2 / 2) never grows, and is kept at e = 1, beta = 1.
+ *   accuracy     each velocity component and spin x radius within
+ *                c2d_collide's bound plus 2 ulp of the body's scale: the
+ *                largest of |vx|, |vy|, |spin radius| before and after.  The
+ *                slip speed is carried in double length, so rolling contact
+ *                (g_t ~ 0) at any speed stays accurate. */
+c2d_status c2d_collide_rough(c2d_disk *a, c2d_disk *b, c2d_surface s);
+
+/* As c2d_collide_rough with the contact normal given (any finite non-zero
+ * vector from a towards b, as c2d_collide_normal).  For cushions and walls:
+ * b.mass = b.inertia = INFINITY, b.radius = 0, normal = the wall's normal
+ * pointing away from a. */
+c2d_status c2d_collide_rough_normal(c2d_disk *a, c2d_disk *b, c2d_vec2 normal, c2d_surface s);
 #endif
 
 /* ------------------------------------------------------------------- float */
@@ -174,6 +228,11 @@ typedef struct c2d_pairsf {
     const float *mass_a, *mass_b;
 } c2d_pairsf;
 size_t c2d_collide_batchf(const c2d_pairsf *p, size_t count, float restitution, c2d_status *status);
+
+typedef struct c2d_diskf { c2d_vec2f pos, vel; float spin, mass, radius, inertia; } c2d_diskf;
+typedef struct c2d_surfacef { float restitution, friction, tangential_restitution; } c2d_surfacef;
+c2d_status c2d_collide_roughf(c2d_diskf *a, c2d_diskf *b, c2d_surfacef s);
+c2d_status c2d_collide_rough_normalf(c2d_diskf *a, c2d_diskf *b, c2d_vec2f normal, c2d_surfacef s);
 #endif
 
 /* ------------------------------------------------------------ Q16.16 fixed */

@@ -10,6 +10,8 @@
 #define C2D_R_BODY c2d_body
 #define C2D_R_VEC c2d_vec2
 #define C2D_R_PAIRS c2d_pairs
+#define C2D_R_DISK c2d_disk
+#define C2D_R_SURFACE c2d_surface
 #define C2D_R_MANT 52
 #define C2D_R_EBIAS 1023
 #define C2D_R_EMAX 1023
@@ -39,6 +41,8 @@
 #include "real_batch.h"
 #include "real_sign.h"
 #include "real_toi.h"
+#include "real_dd.h"
+#include "real_rough.h"
 
 c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution)
 {
@@ -58,6 +62,16 @@ c2d_status c2d_time_of_impact(const c2d_body *a, const c2d_body *b, double radiu
 size_t c2d_collide_batch(const c2d_pairs *p, size_t count, double restitution, c2d_status *status)
 {
     return c2d_real_collide_batch(p, count, restitution, status);
+}
+
+c2d_status c2d_collide_rough(c2d_disk *a, c2d_disk *b, c2d_surface s)
+{
+    return c2d_real_collide_rough(a, b, NULL, &s);
+}
+
+c2d_status c2d_collide_rough_normal(c2d_disk *a, c2d_disk *b, c2d_vec2 normal, c2d_surface s)
+{
+    return c2d_real_collide_rough(a, b, &normal, &s);
 }
 
 #endif /* C2D_NO_DOUBLE */

@@ -12,6 +12,8 @@
 #define C2D_R_BODY c2d_bodyf
 #define C2D_R_VEC c2d_vec2f
 #define C2D_R_PAIRS c2d_pairsf
+#define C2D_R_DISK c2d_diskf
+#define C2D_R_SURFACE c2d_surfacef
 #define C2D_R_MANT 23
 #define C2D_R_EBIAS 127
 #define C2D_R_EMAX 127
@@ -40,6 +42,8 @@
 #include "real_batch.h"
 #include "real_sign.h"
 #include "real_toi.h"
+#include "real_dd.h"
+#include "real_rough.h"
 
 c2d_status c2d_collidef(c2d_bodyf *a, c2d_bodyf *b, float restitution)
 {
@@ -59,6 +63,16 @@ c2d_status c2d_time_of_impactf(const c2d_bodyf *a, const c2d_bodyf *b, float rad
 size_t c2d_collide_batchf(const c2d_pairsf *p, size_t count, float restitution, c2d_status *status)
 {
     return c2d_real_collide_batch(p, count, restitution, status);
+}
+
+c2d_status c2d_collide_roughf(c2d_diskf *a, c2d_diskf *b, c2d_surfacef s)
+{
+    return c2d_real_collide_rough(a, b, NULL, &s);
+}
+
+c2d_status c2d_collide_rough_normalf(c2d_diskf *a, c2d_diskf *b, c2d_vec2f normal, c2d_surfacef s)
+{
+    return c2d_real_collide_rough(a, b, &normal, &s);
 }
 
 #endif /* C2D_NO_FLOAT */

@@ -3,6 +3,7 @@
  * they define the type's parameters:
  *   C2D_R_TYPE, C2D_R_BITS_TYPE   the type and an unsigned integer as wide
  *   C2D_R_BODY, C2D_R_VEC, C2D_R_PAIRS   its public body, vector, batch types
+ *   C2D_R_DISK, C2D_R_SURFACE     its public rough disk and surface types
  *   C2D_R_MANT, C2D_R_EBIAS, C2D_R_EMAX, C2D_R_EMIN, C2D_R_MAX   the format
  *   C2D_R_SQRT(x)                 square root (__builtin_ on gcc)
  *   C2D_R_FABS(x)                 |x|, optional (__builtin_fabs on gcc)
@@ -27,6 +28,8 @@ typedef C2D_R_BITS_TYPE c2d_real_bits;
 typedef C2D_R_BODY c2d_real_body;
 typedef C2D_R_VEC c2d_real_vec;
 typedef C2D_R_PAIRS c2d_real_pairs;
+typedef C2D_R_DISK c2d_real_disk;
+typedef C2D_R_SURFACE c2d_real_surface;
 
 typedef union c2d_pun { c2d_real f; c2d_real_bits u; } c2d_pun;
 

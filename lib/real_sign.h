@@ -26,44 +26,60 @@
 #ifndef C2D_REAL_SIGN_H
 #define C2D_REAL_SIGN_H
 
-static c2d_xf c2d_xf_mul(c2d_xf a, c2d_xf b) { return c2d_xf_make(a.m * b.m, a.e + b.e); }
-
-/* b != 0 */
-static c2d_xf c2d_xf_div(c2d_xf a, c2d_xf b) { return c2d_xf_make(a.m / b.m, a.e - b.e); }
-
-static c2d_xf c2d_xf_neg(c2d_xf a)
+/* Results through pointers, inputs through const pointers that may alias
+ * the result: a struct passed or returned by value becomes a memcpy call at
+ * -Os on small cores. */
+static void c2d_xf_set(c2d_xf *r, c2d_real m, int e)
 {
-    a.m = -a.m;
-    return a;
+    if (m == 0) {
+        r->m = 0;
+        r->e = 0;
+    } else {
+        int k = c2d_ilogb(m);
+        r->m = c2d_scale2(m, -k);
+        r->e = e + k;
+    }
 }
 
-/* a + b, one rounding. */
-static c2d_xf c2d_xf_add(c2d_xf a, c2d_xf b)
+static void c2d_xf_mul(c2d_xf *r, const c2d_xf *a, const c2d_xf *b) { c2d_xf_set(r, a->m * b->m, a->e + b->e); }
+
+/* r = a / b, b != 0. */
+static void c2d_xf_div(c2d_xf *r, const c2d_xf *a, const c2d_xf *b) { c2d_xf_set(r, a->m / b->m, a->e - b->e); }
+
+/* r = a + sign b (sign +1 or -1), one rounding. */
+static void c2d_xf_add(c2d_xf *r, const c2d_xf *a, const c2d_xf *b, int sign)
 {
-    int k = a.e - b.e;
-    if (b.m == 0) return a;
-    if (a.m == 0) return b;
+    c2d_real am = a->m, bm = sign < 0 ? -b->m : b->m;
+    int ae = a->e, be = b->e, k = a->e - b->e;
     /* |b| < 2^(b.e + 1) <= half an ulp of a when k >= MANT + 3: a + b rounds to a. */
-    if (k >= C2D_R_MANT + 3) return a;
-    if (k <= -(C2D_R_MANT + 3)) return b;
-    if (k >= 0) return c2d_xf_make(a.m + c2d_scale2(b.m, -k), a.e);
-    return c2d_xf_make(c2d_scale2(a.m, k) + b.m, b.e);
+    if (bm == 0 || (am != 0 && k >= C2D_R_MANT + 3)) {
+        c2d_xf_set(r, am, ae);
+    } else if (am == 0 || k <= -(C2D_R_MANT + 3)) {
+        c2d_xf_set(r, bm, be);
+    } else if (k >= 0) {
+        c2d_xf_set(r, am + c2d_scale2(bm, -k), ae);
+    } else {
+        c2d_xf_set(r, c2d_scale2(am, k) + bm, be);
+    }
 }
 
-/* sqrt(a) for a >= 0. */
-static c2d_xf c2d_xf_sqrt(c2d_xf a)
+/* r = sqrt(a), a >= 0. */
+static void c2d_xf_sqrt(c2d_xf *r, const c2d_xf *a)
 {
-    c2d_real m = a.m;
-    int e = a.e;
-    if (m <= 0) return c2d_xf_make(0, 0);
+    c2d_real m = a->m;
+    int e = a->e;
+    if (m <= 0) {
+        c2d_xf_set(r, 0, 0);
+        return;
+    }
     if ((e & 1) != 0) {
         m *= 2;
         e -= 1;
     }
-    return c2d_xf_make(C2D_R_SQRT(m), e / 2);
+    c2d_xf_set(r, C2D_R_SQRT(m), e / 2);
 }
 
-static int c2d_xf_sign(c2d_xf a) { return (a.m > 0) - (a.m < 0); }
+static int c2d_xf_sign(const c2d_xf *a) { return (a->m > 0) - (a->m < 0); }
 
 /* The exact sum of atom[0..n) rewritten in place as at most n components
  * (their sum is exact; each window's are nonoverlapping).  Returns the new
@@ -88,7 +104,7 @@ static int c2d_compress(c2d_xf *atom, int n)
                 c2d_xf_copy(&atom[rest++], &atom[i]);
             }
         }
-        for (i = 0; i < k; i++) atom[--top] = c2d_xf_make(ex[i], emax);
+        for (i = 0; i < k; i++) c2d_xf_set(&atom[--top], ex[i], emax);
         n = rest;
     }
     for (i = top; i < end; i++) c2d_xf_copy(&atom[i - top], &atom[i]);
@@ -110,18 +126,41 @@ static void c2d_acc_clear(c2d_acc *acc)
 }
 
 /* acc += sign * x * y, exactly (sign is +1 or -1). */
-static void c2d_acc_product(c2d_acc *acc, c2d_xf x, c2d_xf y, int sign)
+static void c2d_acc_product(c2d_acc *acc, const c2d_xf *x, const c2d_xf *y, int sign)
 {
+    c2d_real lo, hi;
     if (acc->n + 2 > C2D_ATOMS) acc->n = c2d_compress(acc->atom, acc->n);
     if (acc->n + 2 > C2D_ATOMS) {
         acc->full = 1;
         return;
     }
-    if (sign < 0) x.m = -x.m;
-    acc->n = c2d_push_product(acc->atom, acc->n, x, y);
+    hi = c2d_two_prod(sign < 0 ? -x->m : x->m, y->m, &lo);
+    c2d_xf_set(&acc->atom[acc->n++], hi, x->e + y->e);
+    c2d_xf_set(&acc->atom[acc->n++], lo, x->e + y->e);
 }
 
-/* The sum so far, correctly rounded, its sign exact (unless acc->full). */
-static c2d_xf c2d_acc_value(c2d_acc *acc) { return c2d_exact_sum(acc->atom, acc->n); }
+/* acc += sign * x * y for floating x, y (exactly). */
+static void c2d_acc_product_of(c2d_acc *acc, c2d_real x, c2d_real y, int sign)
+{
+    c2d_xf xx, yy;
+    c2d_xf_set(&xx, x, 0);
+    c2d_xf_set(&yy, y, 0);
+    c2d_acc_product(acc, &xx, &yy, sign);
+}
+
+/* acc += sign * x * y for two numbers given exactly as hi + lo. */
+static void c2d_acc_pair_product(c2d_acc *acc, const c2d_xf x[2], const c2d_xf y[2], int sign)
+{
+    int i, j;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) c2d_acc_product(acc, &x[i], &y[j], sign);
+}
+
+/* r = the sum so far, correctly rounded, its sign exact (unless acc->full). */
+static void c2d_acc_value(c2d_xf *r, c2d_acc *acc)
+{
+    c2d_xf s = c2d_exact_sum(acc->atom, acc->n);
+    c2d_xf_copy(r, &s);
+}
 
 #endif /* C2D_REAL_SIGN_H */

@@ -83,24 +83,16 @@ static void c2d_toi_pair_load(c2d_toi_pair *p, const c2d_real_body *a, const c2d
     c2d_exact_diff(b->pos.y, a->pos.y, &p->d[1][0], &p->d[1][1]);
     c2d_exact_diff(b->vel.x, a->vel.x, &p->v[0][0], &p->v[0][1]);
     c2d_exact_diff(b->vel.y, a->vel.y, &p->v[1][0], &p->v[1][1]);
-    p->r = c2d_xf_make(radius_sum, 0);
+    c2d_xf_set(&p->r, radius_sum, 0);
 }
 
-/* acc += sign * x * y for two exact hi + lo components. */
-static void c2d_acc_pair_product(c2d_acc *acc, const c2d_xf x[2], const c2d_xf y[2], int sign)
-{
-    int i, j;
-    for (i = 0; i < 2; i++)
-        for (j = 0; j < 2; j++) c2d_acc_product(acc, x[i], y[j], sign);
-}
-
-/* d.v, correctly rounded, sign exact. */
-static c2d_xf c2d_toi_dot(c2d_acc *acc, const c2d_toi_pair *p)
+/* r = d.v, correctly rounded, sign exact. */
+static void c2d_toi_dot(c2d_xf *r, c2d_acc *acc, const c2d_toi_pair *p)
 {
     c2d_acc_clear(acc);
     c2d_acc_pair_product(acc, p->d[0], p->v[0], 1);
     c2d_acc_pair_product(acc, p->d[1], p->v[1], 1);
-    return c2d_acc_value(acc);
+    c2d_acc_value(r, acc);
 }
 
 /* d x v = dx vy - dy vx, left in acc (not yet rounded). */
@@ -111,52 +103,63 @@ static void c2d_toi_cross(c2d_acc *acc, const c2d_toi_pair *p)
     c2d_acc_pair_product(acc, p->d[1], p->v[0], -1);
 }
 
-/* |d|^2 - R^2, correctly rounded, sign exact. */
-static c2d_xf c2d_toi_gap(c2d_acc *acc, const c2d_toi_pair *p)
+/* r = |d|^2 - R^2, correctly rounded, sign exact. */
+static void c2d_toi_gap(c2d_xf *r, c2d_acc *acc, const c2d_toi_pair *p)
 {
     c2d_acc_clear(acc);
     c2d_acc_pair_product(acc, p->d[0], p->d[0], 1);
     c2d_acc_pair_product(acc, p->d[1], p->d[1], 1);
-    c2d_acc_product(acc, p->r, p->r, -1);
-    return c2d_acc_value(acc);
+    c2d_acc_product(acc, &p->r, &p->r, -1);
+    c2d_acc_value(r, acc);
 }
 
 enum { C2D_TOI_PARTS = 16 }; /* exact components of |v|^2 or d x v, at most */
 
-/* R^2 |v|^2 - (d x v)^2 = b^2 - ac, correctly rounded, sign exact: |v|^2
- * and d x v are compressed to their exact components first and multiplied
- * component by component.  Only if those products overflow the
- * accumulator even after compression (never seen; it needs inputs whose
- * exact differences scatter over many exponent ranges) is the value
- * formed from the rounded factors instead. */
-static c2d_xf c2d_toi_disc(c2d_acc *acc, const c2d_toi_pair *p)
+/* Compress acc's exact sum and copy its components to parts; their count. */
+static int c2d_toi_parts(c2d_xf *parts, c2d_acc *acc)
 {
-    c2d_xf vv[C2D_TOI_PARTS], cr[C2D_TOI_PARTS], r2[2];
+    int i, n = c2d_compress(acc->atom, acc->n);
+    for (i = 0; i < n; i++) c2d_xf_copy(&parts[i], &acc->atom[i]);
+    return n;
+}
+
+/* r = R^2 |v|^2 - (d x v)^2 = b^2 - ac, correctly rounded, sign exact:
+ * |v|^2 and d x v are compressed to their exact components first and
+ * multiplied component by component.  Only if those products overflow the
+ * accumulator even after compression (never seen; it needs inputs whose
+ * exact differences scatter over many exponent ranges) is the value formed
+ * from the rounded factors instead. */
+static void c2d_toi_disc(c2d_xf *r, c2d_acc *acc, const c2d_toi_pair *p)
+{
+    c2d_xf vv[C2D_TOI_PARTS], cr[C2D_TOI_PARTS], r2[2], twice;
     c2d_real lo;
     int i, j, nv, nc;
     c2d_acc_clear(acc);
     c2d_acc_pair_product(acc, p->v[0], p->v[0], 1);
     c2d_acc_pair_product(acc, p->v[1], p->v[1], 1);
-    nv = c2d_compress(acc->atom, acc->n);
-    for (i = 0; i < nv; i++) c2d_xf_copy(&vv[i], &acc->atom[i]);
+    nv = c2d_toi_parts(vv, acc);
     c2d_toi_cross(acc, p);
-    nc = c2d_compress(acc->atom, acc->n);
-    for (i = 0; i < nc; i++) c2d_xf_copy(&cr[i], &acc->atom[i]);
-    r2[0] = c2d_xf_make(c2d_two_prod(p->r.m, p->r.m, &lo), 2 * p->r.e);
-    r2[1] = c2d_xf_make(lo, 2 * p->r.e);
+    nc = c2d_toi_parts(cr, acc);
+    c2d_xf_set(&r2[0], c2d_two_prod(p->r.m, p->r.m, &lo), 2 * p->r.e);
+    c2d_xf_set(&r2[1], lo, 2 * p->r.e);
     c2d_acc_clear(acc);
     for (i = 0; i < 2; i++)
-        for (j = 0; j < nv; j++) c2d_acc_product(acc, r2[i], vv[j], 1);
+        for (j = 0; j < nv; j++) c2d_acc_product(acc, &r2[i], &vv[j], 1);
     for (i = 0; i < nc; i++) {
         for (j = 0; j < i; j++) {
-            c2d_acc_product(acc, cr[i], c2d_xf_make(cr[j].m, cr[j].e + 1), -1);
+            c2d_xf_set(&twice, cr[j].m, cr[j].e + 1);
+            c2d_acc_product(acc, &cr[i], &twice, -1);
         }
-        c2d_acc_product(acc, cr[i], cr[i], -1);
+        c2d_acc_product(acc, &cr[i], &cr[i], -1);
     }
-    if (acc->full == 0) return c2d_acc_value(acc);
-    {
-        c2d_xf v2 = c2d_exact_sum(vv, nv), c = c2d_exact_sum(cr, nc);
-        return c2d_xf_add(c2d_xf_mul(c2d_xf_mul(p->r, p->r), v2), c2d_xf_neg(c2d_xf_mul(c, c)));
+    if (acc->full == 0) {
+        c2d_acc_value(r, acc);
+    } else {
+        c2d_xf v2 = c2d_exact_sum(vv, nv), c = c2d_exact_sum(cr, nc), rr;
+        c2d_xf_mul(&rr, &p->r, &p->r);
+        c2d_xf_mul(&rr, &rr, &v2);
+        c2d_xf_mul(&c, &c, &c);
+        c2d_xf_add(r, &rr, &c, -1);
     }
 }
 
@@ -171,18 +174,20 @@ C2D_COLD c2d_status c2d_toi_exact(const c2d_real_body *a, const c2d_real_body *b
     c2d_toi_pair_load(&p, a, b, radius_sum);
     if (p.v[0][0].m == 0 && p.v[1][0].m == 0) return C2D_SEPARATING; /* no relative motion */
     if (p.d[0][0].m == 0 && p.d[1][0].m == 0) return C2D_SEPARATING; /* coincident: not approaching */
-    dv = c2d_toi_dot(&acc, &p);
-    gap = c2d_toi_gap(&acc, &p);
-    if (c2d_xf_sign(gap) <= 0) {
-        if (c2d_xf_sign(dv) >= 0) return C2D_SEPARATING;
+    c2d_toi_dot(&dv, &acc, &p);
+    c2d_toi_gap(&gap, &acc, &p);
+    if (c2d_xf_sign(&gap) <= 0) {
+        if (c2d_xf_sign(&dv) >= 0) return C2D_SEPARATING;
         *t = 0;
         return C2D_OK;
     }
-    if (c2d_xf_sign(dv) >= 0) return C2D_SEPARATING;
-    disc = c2d_toi_disc(&acc, &p);
-    if (c2d_xf_sign(disc) <= 0) return C2D_SEPARATING; /* misses, or grazes */
-    tt = c2d_xf_div(gap, c2d_xf_add(c2d_xf_sqrt(disc), c2d_xf_neg(dv)));
-    value = c2d_xf_value(tt);
+    if (c2d_xf_sign(&dv) >= 0) return C2D_SEPARATING;
+    c2d_toi_disc(&disc, &acc, &p);
+    if (c2d_xf_sign(&disc) <= 0) return C2D_SEPARATING; /* misses, or grazes */
+    c2d_xf_sqrt(&tt, &disc);
+    c2d_xf_add(&tt, &tt, &dv, -1);
+    c2d_xf_div(&tt, &gap, &tt);
+    value = c2d_scale2(tt.m, tt.e);
     if (!(value <= C2D_R_MAX)) return C2D_RANGE;
     *t = value;
     return C2D_OK;

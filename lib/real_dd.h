@@ -1,0 +1,158 @@
+/* real_dd.h - template: double-length numbers with an extended exponent
+ * ("dx"), for models whose results depend on differences that may cancel.
+ * Needs real_bits.h, real_exact.h and real_sign.h first.
+ *
+ * WHY
+ *   The rough contact (real_rough.h) needs the slip speed at the contact,
+ *   g_t = (vb - va).t^ - (wa ra + wb rb), which vanishes for rolling
+ *   contact however fast the bodies move, and divides by |n| (a square
+ *   root).  In working precision its error would be u times the bodies'
+ *   speeds, ruinous for a light body whose own scale is small.  Carried as
+ *   a double-length value (h + l) 2^e, every step keeps about 2p bits, so
+ *   g_t is accurate to u |g_t| + O(u^2) of the speeds; the extended
+ *   exponent means nothing over- or underflows until the final result is
+ *   rounded to its body once.
+ *
+ * ARITHMETIC (u = 2^-(MANT+1); each operation's relative error is a small
+ * multiple of u^2, the classical double-double bounds)
+ *   add: TwoSum of the high parts and of the low parts, renormalised twice
+ *        (an operand entirely below the other's low part is dropped).
+ *   mul: TwoProduct of the high parts plus the cross terms.
+ *   div: q1 = ah / bh, the remainder a - q1 b in double length, q2 = r / bh.
+ *   sqrt: s = sqrt(h), one Newton correction (a - s^2) / 2s with s^2 exact.
+ *   h is kept in [1, 2) (or 0) and |l| <= ulp(h) / 2.
+ */
+#ifndef C2D_REAL_DD_H
+#define C2D_REAL_DD_H
+
+/* Results are written through pointers and inputs read through const
+ * pointers (which may alias the result): a struct passed or returned by
+ * value becomes a memcpy call at -Os on small cores, and the library links
+ * no C library. */
+typedef struct c2d_dx { c2d_real h, l; int e; } c2d_dx;
+
+/* r = (h + l) 2^e, renormalised. */
+static void c2d_dx_set(c2d_dx *r, c2d_real h, c2d_real l, int e)
+{
+    c2d_real err, s = c2d_two_sum(h, l, &err);
+    if (s == 0) {
+        r->h = 0;
+        r->l = 0;
+        r->e = 0;
+    } else {
+        int k = c2d_ilogb(s);
+        r->h = c2d_scale2(s, -k);
+        r->l = c2d_scale2(err, -k);
+        r->e = e + k;
+    }
+}
+
+static void c2d_dx_of(c2d_dx *r, c2d_real x) { c2d_dx_set(r, x, 0, 0); }
+
+static void c2d_dx_negate(c2d_dx *a)
+{
+    a->h = -a->h;
+    a->l = -a->l;
+}
+
+static int c2d_dx_sign(const c2d_dx *a) { return (a->h > 0) - (a->h < 0); }
+
+/* r = a + sign b (sign +1 or -1). */
+static void c2d_dx_add(c2d_dx *r, const c2d_dx *a, const c2d_dx *b, int sign)
+{
+    c2d_real ah = a->h, al = a->l, bh = sign < 0 ? -b->h : b->h, bl = sign < 0 ? -b->l : b->l, s, t, e1, e2;
+    int e = a->e, k = a->e - b->e;
+    if (bh == 0) {
+        c2d_dx_set(r, ah, al, e);
+        return;
+    }
+    if (ah == 0 || k < -(2 * C2D_R_MANT + 6)) { /* a is below b's low part */
+        c2d_dx_set(r, bh, bl, b->e);
+        return;
+    }
+    if (k > 2 * C2D_R_MANT + 6) { /* b is below a's low part */
+        c2d_dx_set(r, ah, al, e);
+        return;
+    }
+    if (k >= 0) {
+        bh = c2d_scale2(bh, -k);
+        bl = c2d_scale2(bl, -k);
+    } else {
+        ah = c2d_scale2(ah, k);
+        al = c2d_scale2(al, k);
+        e = b->e;
+    }
+    s = c2d_two_sum(ah, bh, &e1);
+    t = c2d_two_sum(al, bl, &e2);
+    e1 += t;
+    s = c2d_two_sum(s, e1, &e1);
+    e1 += e2;
+    c2d_dx_set(r, s, e1, e);
+}
+
+static void c2d_dx_mul(c2d_dx *r, const c2d_dx *a, const c2d_dx *b)
+{
+    c2d_real err, p = c2d_two_prod(a->h, b->h, &err);
+    err += a->h * b->l + a->l * b->h;
+    c2d_dx_set(r, p, err, a->e + b->e);
+}
+
+/* r = a / b, b != 0. */
+static void c2d_dx_div(c2d_dx *r, const c2d_dx *a, const c2d_dx *b)
+{
+    c2d_real q1 = a->h / b->h, err, p = c2d_two_prod(q1, b->h, &err);
+    c2d_real rem = ((a->h - p) - err + a->l) - q1 * b->l; /* a->h - p is exact: p ~ a->h */
+    c2d_dx_set(r, q1, rem / b->h, a->e - b->e);
+}
+
+/* r = sqrt(a), a >= 0. */
+static void c2d_dx_sqrt(c2d_dx *r, const c2d_dx *a)
+{
+    c2d_real h = a->h, l = a->l, s, err, p;
+    int e = a->e;
+    if (h <= 0) {
+        c2d_dx_of(r, 0);
+        return;
+    }
+    if ((e & 1) != 0) {
+        h *= 2;
+        l *= 2;
+        e -= 1;
+    }
+    s = C2D_R_SQRT(h);
+    p = c2d_two_prod(s, s, &err);
+    c2d_dx_set(r, s, ((h - p) - err + l) / (2 * s), e / 2);
+}
+
+/* The value rounded to the working format (Inf beyond it). */
+static c2d_real c2d_dx_value(const c2d_dx *a) { return c2d_scale2(a->h + a->l, a->e); }
+
+/* |a| > |b| (to within the low parts: used only where either answer is
+ * right at equality). */
+static int c2d_dx_abs_greater(const c2d_dx *a, const c2d_dx *b)
+{
+    if (b->h == 0) return a->h != 0;
+    if (a->h == 0) return 0;
+    if (a->e != b->e) return a->e > b->e;
+    return c2d_abs(a->h + a->l) > c2d_abs(b->h + b->l);
+}
+
+/* r = the exact sum in acc, as its rounded value plus the rounded value of
+ * the remainder. */
+static void c2d_dx_of_acc(c2d_dx *r, c2d_acc *acc)
+{
+    c2d_xf hi, lo, parts[C2D_ATOMS + 1];
+    int i, n = c2d_compress(acc->atom, acc->n);
+    for (i = 0; i < n; i++) c2d_xf_copy(&parts[i], &acc->atom[i]);
+    hi = c2d_exact_sum(acc->atom, n);
+    if (hi.m == 0) {
+        c2d_dx_of(r, 0);
+        return;
+    }
+    parts[n].m = -hi.m;
+    parts[n].e = hi.e;
+    lo = c2d_exact_sum(parts, n + 1);
+    c2d_dx_set(r, hi.m, lo.m == 0 ? 0 : c2d_scale2(lo.m, lo.e - hi.e), hi.e);
+}
+
+#endif /* C2D_REAL_DD_H */
