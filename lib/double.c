@@ -33,6 +33,8 @@
 #define C2D_R_WINDOW 600     /* exact-sum window, binades */
 #define C2D_R_MARGIN 70      /* window sum must dominate the rest by 2^70 */
 
+#define C2D_R_QUICK 200        /* front end's window: [2^-200, 2^200] (real_fast.h) */
+
 #include "real_bits.h"
 #include "real_exact.h"
 #include "real_fast.h"

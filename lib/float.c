@@ -34,6 +34,8 @@
 #define C2D_R_WINDOW 72      /* exact-sum window, binades */
 #define C2D_R_MARGIN 36      /* window sum must dominate the rest by 2^36 */
 
+#define C2D_R_QUICK 20        /* front end's window: [2^-20, 2^20] (real_fast.h) */
+
 #include "real_bits.h"
 #include "real_exact.h"
 #include "real_fast.h"
