@@ -1,4 +1,4 @@
-// sim.cpp - scene set-up, the exact event-driven engine (collide2d), the
+// sim.cpp - the exact event-driven engine (collide2d), the
 // Box2D-solver engine for comparison, and the independent frame checker.
 #include "sim.h"
 
@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <queue>
+#include <utility>
 
 extern "C" {
 #include "collide2d.h"
@@ -23,16 +24,10 @@ namespace {
 // converting to and from Box2D units is exact.
 constexpr double kUnitsPerMetre = 8.0;
 
-constexpr double kTableLength = 2.54;
-constexpr double kTableWidth = 1.27;
-constexpr double kCornerMouth = 0.08;   // cushion nose to the corner, along each rail
-constexpr double kSideMouth = 0.065;    // half-width of a side pocket opening
 constexpr double kBallRestitution = 0.95;
 constexpr double kCushionRestitution = 0.8;
 constexpr double kRollingDeceleration = 0.15;  // m/s^2, rolling resistance ~0.015 g
 constexpr double kStopSpeed = 0.01;            // m/s
-constexpr double kGasAreaFraction = 0.1;
-
 
 uint64_t pair_key(int i, int j) {
     if (i > j) std::swap(i, j);
@@ -52,98 +47,10 @@ b2AABB aabb_of_disk_path(double x0, double y0, double x1, double y1, double radi
     return box;
 }
 
-Segment make_segment(double ax, double ay, double bx, double by, double nx, double ny) {
-    return Segment{ax, ay, bx, by, nx, ny};
-}
-
-void add_rectangle_cushions(Table &t) {
-    const double L = t.length, W = t.width;
-    t.cushions.push_back(make_segment(0, 0, L, 0, 0, 1));
-    t.cushions.push_back(make_segment(0, W, L, W, 0, -1));
-    t.cushions.push_back(make_segment(0, 0, 0, W, 1, 0));
-    t.cushions.push_back(make_segment(L, 0, L, W, -1, 0));
-}
-
-void add_pocketed_cushions(Table &t) {
-    const double L = t.length, W = t.width, m = kCornerMouth, g = kSideMouth;
-    for (double y : {0.0, W}) {
-        const double ny = y == 0.0 ? 1.0 : -1.0;
-        t.cushions.push_back(make_segment(m, y, L / 2 - g, y, 0, ny));
-        t.cushions.push_back(make_segment(L / 2 + g, y, L - m, y, 0, ny));
-    }
-    t.cushions.push_back(make_segment(0, m, 0, W - m, 1, 0));
-    t.cushions.push_back(make_segment(L, m, L, W - m, -1, 0));
-    // A capture radius of at least the mouth width means a ball crossing a
-    // rail line through an opening is already inside the pocket's circle.
-    for (double x : {0.0, L})
-        for (double y : {0.0, W}) t.pockets.push_back(Pocket{x, y, m, 0.062});
-    for (double y : {0.0, W}) t.pockets.push_back(Pocket{L / 2, y, g, 0.066});
-}
-
-Ball make_ball(double x, double y, int number) { return Ball{x, y, 0, 0, number, true}; }
-
-// 15 balls in a triangle behind the foot spot, touching: the 1 at the apex,
-// the 8 in the middle of the third row, the others shuffled by the seed.
-void rack(std::vector<Ball> &balls, const Table &t, uint64_t seed) {
-    std::vector<int> order = {2, 3, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15};
-    Rng rng(seed);
-    for (size_t i = order.size() - 1; i > 0; --i)
-        std::swap(order[i], order[static_cast<size_t>(rng.next() % (i + 1))]);
-    const double apex_x = 0.75 * t.length, cy = 0.5 * t.width;
-    const double row_step = kBallRadius * std::sqrt(3.0);
-    size_t next = 0;
-    for (int row = 0; row < 5; ++row) {
-        for (int k = 0; k <= row; ++k) {
-            int number;
-            if (row == 0) number = 1;
-            else if (row == 2 && k == 1) number = 8;
-            else number = order[next++];
-            balls.push_back(make_ball(apex_x + row * row_step,
-                                      cy + (k - 0.5 * row) * kBallDiameter, number));
-        }
-    }
-}
-
-void gas(std::vector<Ball> &balls, Table &t, int count, uint64_t seed) {
-    const double side = std::sqrt(count * M_PI * kBallRadius * kBallRadius / kGasAreaFraction);
-    t.length = t.width = side;
-    const int per_row = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
-    const double cell = side / per_row;
-    const double jitter = cell / 2 - kBallRadius * 1.01;
-    Rng rng(seed);
-    double mean_vx = 0, mean_vy = 0;
-    for (int i = 0; i < count; ++i) {
-        const int column = i % per_row, row = i / per_row; // integer division intended: grid cell
-        const double cx = (column + 0.5) * cell, cy = (row + 0.5) * cell;
-        Ball b = make_ball(cx + jitter * (2 * rng.uniform() - 1), cy + jitter * (2 * rng.uniform() - 1), i);
-        // far from equilibrium on purpose: uniform components, not Gaussian
-        b.vx = 2 * rng.uniform() - 1;
-        b.vy = 2 * rng.uniform() - 1;
-        mean_vx += b.vx;
-        mean_vy += b.vy;
-        balls.push_back(b);
-    }
-    mean_vx /= count;
-    mean_vy /= count;
-    for (Ball &b : balls) {
-        b.vx -= mean_vx;
-        b.vy -= mean_vy;
-    }
-}
-
 c2d_body body_of(const Ball &b) { return c2d_body{{b.x, b.y}, {b.vx, b.vy}, kBallMass}; }
 c2d_body static_body(double x, double y) { return c2d_body{{x, y}, {0, 0}, INFINITY}; }
 
 }  // namespace
-
-uint64_t Rng::next() {
-    uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-double Rng::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 
 // ------------------------------------------------------------------ engines
 
@@ -818,19 +725,9 @@ void Simulation::check_frame(const std::vector<Ball> &before, double dt) {
 // ---------------------------------------------------------------- simulation
 
 Simulation::Simulation(const SimConfig &config) : config_(config), frame_log_(new FrameLog), checker_(new Checker) {
-    table_.length = kTableLength;
-    table_.width = kTableWidth;
-    table_.rail = 0.1;
-    if (config.scene == Scene::Gas) {
-        gas(balls_initial_, table_, config.gas_balls, config.seed);
-        table_.rail = std::max(0.05, table_.length / 40);
-        add_rectangle_cushions(table_);
-    } else {
-        balls_initial_.push_back(make_ball(0.25 * table_.length, 0.5 * table_.width, 0));
-        rack(balls_initial_, table_, config.seed);
-        if (config.scene == Scene::Break) add_pocketed_cushions(table_);
-        else add_rectangle_cushions(table_);
-    }
+    Layout start = set_up(config.scene, config.gas_balls, config.seed);
+    table_ = std::move(start.table);
+    balls_initial_ = std::move(start.balls);
     if (config.response == Response::Box2d)
         engine_.reset(new Box2dEngine(balls_initial_, table_, lossless()));
     else
@@ -869,17 +766,8 @@ int Simulation::object_balls_left() const {
 void Simulation::respot_cue() {
     Ball &cue = engine_->balls_[0];
     if (cue.active || config_.scene == Scene::Gas) return;
-    double x = 0.25 * table_.length;
-    const double y = 0.5 * table_.width;
-    // slide towards the head rail until the spot is free
-    for (;;) {
-        bool free = true;
-        for (const Ball &b : engine_->balls_)
-            if (b.active && std::hypot(b.x - x, b.y - y) < kBallDiameter * 1.01) free = false;
-        if (free || x < 2 * kBallDiameter) break;
-        x -= kBallRadius;
-    }
-    cue = Ball{x, y, 0, 0, 0, true};
+    const Point spot = free_head_spot(table_, engine_->balls_);
+    cue = Ball{spot.x, spot.y, 0, 0, 0, true};
     engine_->ball_placed(0);
 }
 

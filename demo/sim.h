@@ -13,9 +13,10 @@
 #include <memory>
 #include <vector>
 
+#include "scene.h"
+
 namespace demo {
 
-enum class Scene { Break, Elastic, Gas };
 enum class Response { Collide2d, Box2d };
 
 struct Shot {
@@ -30,22 +31,6 @@ struct SimConfig {
     uint64_t seed = 1;
 };
 
-struct Ball {
-    double x, y, vx, vy;
-    int number;  // 0 = cue ball, 1..15 object balls; gas: index
-    bool active;
-};
-
-struct Segment { double ax, ay, bx, by, nx, ny; };  // cushion face, n points into the table
-struct Pocket { double x, y, capture_radius, draw_radius; };
-
-struct Table {
-    double length, width;   // playing surface [0,length] x [0,width]
-    double rail;            // drawn rail width
-    std::vector<Segment> cushions;
-    std::vector<Pocket> pockets;
-};
-
 struct Stats {
     long steps = 0;
     double sim_seconds = 0;
@@ -58,9 +43,6 @@ struct Stats {
     long event_cap_frames = 0;    // frames whose event budget ran out
 };
 
-constexpr double kBallDiameter = 0.05715;
-constexpr double kBallRadius = kBallDiameter / 2;
-constexpr double kBallMass = 0.17;
 constexpr double kFrameDt = 1.0 / 60.0;
 constexpr double kMaxShotSpeed = 15.0;  // Box2D moves at most 2 units/step: 15 m/s at our scale
 
@@ -109,17 +91,6 @@ private:
     std::vector<char> escaped_flag_;
     struct Checker;
     std::unique_ptr<Checker> checker_;
-};
-
-// Seeded, platform-independent generator (splitmix64), so scenes and runs are
-// identical on every machine.
-class Rng {
-public:
-    explicit Rng(uint64_t seed) : state_(seed) {}
-    uint64_t next();
-    double uniform();  // [0, 1)
-private:
-    uint64_t state_;
 };
 
 }  // namespace demo
