@@ -94,9 +94,9 @@ Options parse(int argc, char **argv) {
             std::exit(0);
         } else if (flag == "--scene") {
             const std::string v = value();
-            if (v == "break") o.config.scene = Scene::Break;
-            else if (v == "elastic") o.config.scene = Scene::Elastic;
-            else if (v == "gas") o.config.scene = Scene::Gas;
+            if (v == "break") o.config.set_scene(Scene::Break);
+            else if (v == "elastic") o.config.set_scene(Scene::Elastic);
+            else if (v == "gas") o.config.set_scene(Scene::Gas);
             else fail("--scene: unknown scene '" + v + "' (break, elastic or gas)");
         } else if (flag == "--response") {
             const std::string v = value();

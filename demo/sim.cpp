@@ -24,9 +24,6 @@ namespace {
 // converting to and from Box2D units is exact.
 constexpr double kUnitsPerMetre = 8.0;
 
-constexpr double kBallRestitution = 0.95;
-constexpr double kCushionRestitution = 0.8;
-constexpr double kRollingDeceleration = 0.15;  // m/s^2, rolling resistance ~0.015 g
 constexpr double kStopSpeed = 0.01;            // m/s
 
 uint64_t pair_key(int i, int j) {
@@ -102,7 +99,7 @@ struct Event {
 // the two swept last.
 class ExactEngine : public Engine {
 public:
-    ExactEngine(const std::vector<Ball> &balls, const Table &table, bool lossless);
+    ExactEngine(const std::vector<Ball> &balls, const Table &table, Restitution restitution);
     void step(double dt, Stats &stats, FrameLog &log) override;
     void velocities_changed() override;
     void ball_placed(int i) override;
@@ -143,10 +140,8 @@ void *tag(int kind, int index) {
     return reinterpret_cast<void *>(static_cast<uintptr_t>(index) * 4 + static_cast<uintptr_t>(kind)); // NOLINT(performance-no-int-to-ptr)
 }
 
-ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, bool lossless)
-    : table_(table),
-      e_ball_(lossless ? 1.0 : kBallRestitution),
-      e_cushion_(lossless ? 1.0 : kCushionRestitution) {
+ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, Restitution restitution)
+    : table_(table), e_ball_(restitution.ball), e_cushion_(restitution.cushion) {
     balls_ = balls;
     tb_.assign(balls.size(), 0.0);
     horizon_.assign(balls.size(), 0.0);
@@ -399,7 +394,7 @@ void ExactEngine::step(double dt, Stats &stats, FrameLog &log) {
 
 class Box2dEngine : public Engine, public b2ContactListener {
 public:
-    Box2dEngine(const std::vector<Ball> &balls, const Table &table, bool lossless);
+    Box2dEngine(const std::vector<Ball> &balls, const Table &table, Restitution restitution);
     void step(double dt, Stats &stats, FrameLog &log) override;
     void velocities_changed() override;
     void ball_placed(int i) override;
@@ -424,10 +419,8 @@ int Box2dEngine::ball_index(b2Fixture *f) {
     return static_cast<int>(f->GetUserData().pointer) - 1;
 }
 
-Box2dEngine::Box2dEngine(const std::vector<Ball> &balls, const Table &table, bool lossless)
-    : world_(b2Vec2(0, 0)),
-      e_ball_(lossless ? 1.0 : kBallRestitution),
-      e_cushion_(lossless ? 1.0 : kCushionRestitution) {
+Box2dEngine::Box2dEngine(const std::vector<Ball> &balls, const Table &table, Restitution restitution)
+    : world_(b2Vec2(0, 0)), e_ball_(restitution.ball), e_cushion_(restitution.cushion) {
     balls_ = balls;
     world_.SetContactListener(this);
     b2BodyDef ground_def;
@@ -729,9 +722,9 @@ Simulation::Simulation(const SimConfig &config) : config_(config), frame_log_(ne
     table_ = std::move(start.table);
     balls_initial_ = std::move(start.balls);
     if (config.response == Response::Box2d)
-        engine_.reset(new Box2dEngine(balls_initial_, table_, lossless()));
+        engine_.reset(new Box2dEngine(balls_initial_, table_, config.losses.restitution));
     else
-        engine_.reset(new ExactEngine(balls_initial_, table_, lossless()));
+        engine_.reset(new ExactEngine(balls_initial_, table_, config.losses.restitution));
     escaped_flag_.assign(balls_initial_.size(), 0);
 }
 
@@ -806,13 +799,13 @@ void Simulation::step() {
     engine_->step(kFrameDt, stats_, *frame_log_);
     check_frame(before, kFrameDt);
     count_escaped();
-    if (!lossless()) {
+    if (config_.losses.rolling_deceleration > 0) {
         // rolling resistance changes velocities only between frames, so the
         // motion inside a frame stays straight and its impacts exact
         for (Ball &b : engine_->balls_) {
             const double speed = std::hypot(b.vx, b.vy);
             if (speed == 0) continue;
-            const double slower = speed - kRollingDeceleration * kFrameDt;
+            const double slower = speed - config_.losses.rolling_deceleration * kFrameDt;
             const double scale = slower < kStopSpeed ? 0.0 : slower / speed;
             b.vx *= scale;
             b.vy *= scale;

@@ -24,11 +24,30 @@ struct Shot {
     double speed;      // m/s
 };
 
+// Restitution of ball-ball and ball-cushion impacts; 1 is elastic.
+struct Restitution { double ball, cushion; };
+
+// What a scene loses.  The break plays like a real table; the elastic and
+// gas scenes lose nothing, so their kinetic energy checks the engine.
+struct Losses {
+    Restitution restitution;
+    double rolling_deceleration;  // m/s^2, applied between frames; 0: none
+    bool none() const { return restitution.ball == 1 && restitution.cushion == 1 && rolling_deceleration == 0; }
+};
+constexpr Losses kTableLosses = {{0.95, 0.8}, 0.15};  // rolling resistance ~0.015 g
+constexpr Losses kNoLosses = {{1.0, 1.0}, 0.0};
+
 struct SimConfig {
     Scene scene = Scene::Break;
     Response response = Response::Collide2d;
     int gas_balls = 1000;
     uint64_t seed = 1;
+    Losses losses = kTableLosses;
+    // The scene with the losses that go with it.
+    void set_scene(Scene s) {
+        scene = s;
+        losses = s == Scene::Break ? kTableLosses : kNoLosses;
+    }
 };
 
 struct Stats {
@@ -74,7 +93,7 @@ public:
     int object_balls_left() const;
     double energy() const;
     void momentum(double out[2]) const;
-    bool lossless() const { return config_.scene != Scene::Break; }
+    bool lossless() const { return config_.losses.none(); }
 
 private:
     void index_waypoints(size_t n);
