@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "engine.h"
 #include "scene.h"
 
 namespace demo {
@@ -23,9 +24,6 @@ struct Shot {
     double angle_deg;  // 0 = towards the foot rail (+x), counter-clockwise
     double speed;      // m/s
 };
-
-// Restitution of ball-ball and ball-cushion impacts; 1 is elastic.
-struct Restitution { double ball, cushion; };
 
 // What a scene loses.  The break plays like a real table; the elastic and
 // gas scenes lose nothing, so their kinetic energy checks the engine.
@@ -50,23 +48,8 @@ struct SimConfig {
     }
 };
 
-struct Stats {
-    long steps = 0;
-    double sim_seconds = 0;
-    long ball_ball_collisions = 0;
-    long cushion_collisions = 0;
-    int pocketed = 0;
-    int escaped = 0;
-    long tunnelled = 0;
-    double max_overlap = 0;       // fraction of a diameter
-    long event_cap_frames = 0;    // frames whose event budget ran out
-};
-
-constexpr double kFrameDt = 1.0 / 60.0;
 constexpr double kMaxShotSpeed = 15.0;  // Box2D moves at most 2 units/step: 15 m/s at our scale
 
-class Engine;
-struct FrameLog;
 
 class Simulation {
 public:
