@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "checker.h"
 #include "engine.h"
 #include "scene.h"
 
@@ -79,10 +80,6 @@ public:
     bool lossless() const { return config_.losses.none(); }
 
 private:
-    void index_waypoints(size_t n);
-    void check_frame(const std::vector<Ball> &before, double dt);
-    template <typename Visit> void for_each_close_pair(Visit visit);
-    void count_escaped();
 
     SimConfig config_;
     Table table_;
@@ -90,9 +87,7 @@ private:
     std::unique_ptr<Engine> engine_;
     std::unique_ptr<FrameLog> frame_log_;
     Stats stats_;
-    std::vector<char> escaped_flag_;
-    struct Checker;
-    std::unique_ptr<Checker> checker_;
+    Checker checker_;
 };
 
 }  // namespace demo
