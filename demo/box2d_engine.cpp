@@ -13,8 +13,8 @@ class Box2dEngine : public Engine, public b2ContactListener {
 public:
     Box2dEngine(const std::vector<Ball> &balls, const Table &table, Restitution restitution);
     void step(double dt, Stats &stats, FrameLog &log) override;
-    void velocities_changed() override;
-    void ball_placed(int i) override;
+    void set_velocity(int i, double vx, double vy) override;
+    void place_ball(int i, Point p) override;
 
     void BeginContact(b2Contact *contact) override;
     void PreSolve(b2Contact *contact, const b2Manifold *old) override;
@@ -22,6 +22,7 @@ public:
 
 private:
     static int ball_index(b2Fixture *f);
+    void add_body(int i);
     void drop_pocketed(Stats &stats);
 
     b2World world_;
@@ -37,8 +38,7 @@ int Box2dEngine::ball_index(b2Fixture *f) {
 }
 
 Box2dEngine::Box2dEngine(const std::vector<Ball> &balls, const Table &table, Restitution restitution)
-    : world_(b2Vec2(0, 0)), e_ball_(restitution.ball), e_cushion_(restitution.cushion) {
-    balls_ = balls;
+    : Engine(balls), world_(b2Vec2(0, 0)), e_ball_(restitution.ball), e_cushion_(restitution.cushion) {
     world_.SetContactListener(this);
     b2BodyDef ground_def;
     b2Body *ground = world_.CreateBody(&ground_def);
@@ -66,12 +66,11 @@ Box2dEngine::Box2dEngine(const std::vector<Ball> &balls, const Table &table, Res
         ground->CreateFixture(&fd);
     }
     bodies_.assign(balls_.size(), nullptr);
-    // Qualified: no virtual dispatch from a constructor.
-    for (size_t i = 0; i < balls_.size(); ++i) Box2dEngine::ball_placed(static_cast<int>(i));
+    for (size_t i = 0; i < balls_.size(); ++i) add_body(static_cast<int>(i));
 }
 
-void Box2dEngine::ball_placed(int i) {
-    Ball &b = balls_[static_cast<size_t>(i)];
+void Box2dEngine::add_body(int i) {
+    const Ball &b = balls_[static_cast<size_t>(i)];
     if (!b.active || bodies_[static_cast<size_t>(i)]) return;
     b2BodyDef def;
     def.type = b2_dynamicBody;
@@ -91,11 +90,20 @@ void Box2dEngine::ball_placed(int i) {
     bodies_[static_cast<size_t>(i)] = body;
 }
 
-void Box2dEngine::velocities_changed() {
-    for (size_t i = 0; i < balls_.size(); ++i)
-        if (bodies_[i])
-            bodies_[i]->SetLinearVelocity(b2Vec2(static_cast<float>(balls_[i].vx * kUnitsPerMetre),
-                                                 static_cast<float>(balls_[i].vy * kUnitsPerMetre)));
+void Box2dEngine::set_velocity(int i, double vx, double vy) {
+    Ball &b = balls_[static_cast<size_t>(i)];
+    b2Body *body = bodies_[static_cast<size_t>(i)];
+    if (!b.active || !body) return;
+    b.vx = vx;
+    b.vy = vy;
+    body->SetLinearVelocity(b2Vec2(static_cast<float>(vx * kUnitsPerMetre), static_cast<float>(vy * kUnitsPerMetre)));
+}
+
+void Box2dEngine::place_ball(int i, Point p) {
+    Ball &b = balls_[static_cast<size_t>(i)];
+    if (b.active) return;
+    b = Ball{p.x, p.y, 0, 0, b.number, true};
+    add_body(i);
 }
 
 void Box2dEngine::BeginContact(b2Contact *contact) {

@@ -55,13 +55,25 @@ struct FrameLog {
     std::vector<Waypoint> waypoints;   // exact engine only: Box2D moves straight per step
 };
 
+// The balls are the engine's state: the simulation reads them, and changes
+// them only through set_velocity and place_ball, so an engine learns exactly
+// which balls changed and keeps what it knows of the others.
 class Engine {
 public:
     virtual ~Engine() = default;
+    // Moves every ball on by dt, resolving the impacts on the way: counts
+    // them in stats, records them in log (which the caller has emptied).
     virtual void step(double dt, Stats &stats, FrameLog &log) = 0;
-    // Called after the caller changed balls_[i] (shot, rolling resistance, respot).
-    virtual void velocities_changed() = 0;
-    virtual void ball_placed(int i) = 0;
+    // A new velocity for a ball on the table (a shot, rolling resistance),
+    // from now on; ignored for a pocketed ball.
+    virtual void set_velocity(int i, double vx, double vy) = 0;
+    // A pocketed ball back on the table, at rest at p; ignored for a ball
+    // still on the table.
+    virtual void place_ball(int i, Point p) = 0;
+    const std::vector<Ball> &balls() const { return balls_; }
+
+protected:
+    explicit Engine(const std::vector<Ball> &balls) : balls_(balls) {}
     std::vector<Ball> balls_;
 };
 

@@ -50,21 +50,28 @@ struct Event {
 // ball's proxy in Box2D's dynamic tree covers its straight path over a
 // horizon of a few diameters; a ball re-queries the tree when its motion
 // changes or its horizon runs out, so a pair is always found by whichever of
-// the two swept last.
+// the two swept last.  An event carries the generations of its balls, and a
+// ball's generation is bumped whenever its motion changes: an event a later
+// change made stale is skipped when it comes up, never searched for.
 class ExactEngine : public Engine {
 public:
     ExactEngine(const std::vector<Ball> &balls, const Table &table, Restitution restitution);
     void step(double dt, Stats &stats, FrameLog &log) override;
-    void velocities_changed() override;
-    void ball_placed(int i) override;
+    void set_velocity(int i, double vx, double vy) override;
+    void place_ball(int i, Point p) override;
 
     bool QueryCallback(int32 proxy);
 
 private:
     void insert_statics();
+    void insert_ball(int i);
+    bool moving(int i) const;
     void advance(int i, double t);
     void sweep(int i);
-    void find_events(int i, bool initial);
+    void mark_changed(int i);
+    void find_events_of_changed();
+    bool leaves_pair_to(int i, int j) const;
+    void find_events(int i);
     void event_with_ball(int i, int j);
     void event_with_cushion(int i, int c);
     void event_with_point(int i, double px, double py, double radius, int kind, int index);
@@ -80,6 +87,8 @@ private:
     std::vector<double> tb_;         // time of the stored position
     std::vector<double> horizon_;    // end of the ball's swept box
     std::vector<unsigned> gen_;      // bumped whenever a ball's motion changes
+    std::vector<int> changed_;       // balls changed from outside since the last step
+    std::vector<char> is_changed_;
     std::vector<int32> proxy_;
     std::vector<b2AABB> swept_;
     b2DynamicTree tree_;
@@ -95,16 +104,15 @@ void *tag(int kind, int index) {
 }
 
 ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, Restitution restitution)
-    : table_(table), e_ball_(restitution.ball), e_cushion_(restitution.cushion) {
-    balls_ = balls;
+    : Engine(balls), table_(table), e_ball_(restitution.ball), e_cushion_(restitution.cushion) {
     tb_.assign(balls.size(), 0.0);
     horizon_.assign(balls.size(), 0.0);
     gen_.assign(balls.size(), 0u);
     proxy_.assign(balls.size(), b2_nullNode);
     swept_.resize(balls.size());
+    is_changed_.assign(balls.size(), 0);
     insert_statics();
-    // Qualified: no virtual dispatch from a constructor.
-    for (size_t i = 0; i < balls_.size(); ++i) ExactEngine::ball_placed(static_cast<int>(i));
+    for (size_t i = 0; i < balls_.size(); ++i) insert_ball(static_cast<int>(i));
     restart();
 }
 
@@ -128,7 +136,7 @@ void ExactEngine::insert_statics() {
     }
 }
 
-void ExactEngine::ball_placed(int i) {
+void ExactEngine::insert_ball(int i) {
     const Ball &b = balls_[static_cast<size_t>(i)];
     if (proxy_[static_cast<size_t>(i)] != b2_nullNode || !b.active) return;
     tb_[static_cast<size_t>(i)] = now_;
@@ -206,22 +214,17 @@ void ExactEngine::event_with_point(int i, double px, double py, double radius, i
     if (c2d_time_of_impact(&a, &p, radius, &t) == C2D_OK) push(now_ + t, i, kind, index);
 }
 
-// Ball i must be at now_.  initial: every ball is being swept at once, so a
-// pair of moving balls is left to its lower index.
-void ExactEngine::find_events(int i, bool initial) {
+// Ball i must be at now_.
+void ExactEngine::find_events(int i) {
     hits_.clear();
     tree_.Query(this, swept_[static_cast<size_t>(i)]);
     for (int32 proxy : hits_) {
         const uintptr_t t = reinterpret_cast<uintptr_t>(tree_.GetUserData(proxy));
         const int kind = static_cast<int>(t & 3u), index = static_cast<int>(t >> 2);
         switch (kind) {
-        case kBallProxy: {
-            if (index == i) break;
-            const Ball &o = balls_[static_cast<size_t>(index)];
-            if (initial && index < i && (o.vx != 0 || o.vy != 0)) break;
-            event_with_ball(i, index);
+        case kBallProxy:
+            if (index != i && !leaves_pair_to(i, index)) event_with_ball(i, index);
             break;
-        }
         case kCushionProxy: event_with_cushion(i, index); break;
         case kJawProxy:
             event_with_point(i, jaw_x_[static_cast<size_t>(index)], jaw_y_[static_cast<size_t>(index)], kBallRadius, kind, index);
@@ -241,23 +244,63 @@ void ExactEngine::remove(int i) {
     ++gen_[static_cast<size_t>(i)];
 }
 
-// Every ball's motion may have changed (shot, rolling resistance): forget all
-// events and find them again.
+// Forgets every event and finds them all again: at the start, and after a
+// frame whose event budget ran out.
 void ExactEngine::restart() {
     queue_ = {};
-    const int n = static_cast<int>(balls_.size());
-    for (int i = 0; i < n; ++i) {
-        if (!balls_[static_cast<size_t>(i)].active) continue;
+    for (size_t i = 0; i < balls_.size(); ++i) mark_changed(static_cast<int>(i));
+    find_events_of_changed();
+}
+
+void ExactEngine::set_velocity(int i, double vx, double vy) {
+    Ball &b = balls_[static_cast<size_t>(i)];
+    if (!b.active) return;
+    advance(i, now_);
+    b.vx = vx;
+    b.vy = vy;
+    mark_changed(i);
+}
+
+void ExactEngine::place_ball(int i, Point p) {
+    Ball &b = balls_[static_cast<size_t>(i)];
+    if (b.active) return;
+    b = Ball{p.x, p.y, 0, 0, b.number, true};
+    insert_ball(i);
+    mark_changed(i);
+}
+
+// Changes from outside come between frames, several at once (rolling
+// resistance slows every moving ball): they are collected, and their events
+// found when the next frame starts, all balls swept first.
+void ExactEngine::mark_changed(int i) {
+    if (!balls_[static_cast<size_t>(i)].active || is_changed_[static_cast<size_t>(i)]) return;
+    is_changed_[static_cast<size_t>(i)] = 1;
+    changed_.push_back(i);
+}
+
+void ExactEngine::find_events_of_changed() {
+    std::sort(changed_.begin(), changed_.end());
+    for (int i : changed_) {
         ++gen_[static_cast<size_t>(i)];
         sweep(i);
     }
-    for (int i = 0; i < n; ++i) {
-        const Ball &b = balls_[static_cast<size_t>(i)];
-        if (b.active && (b.vx != 0 || b.vy != 0)) find_events(i, true);
-    }
+    for (int i : changed_) find_events(i);
+    for (int i : changed_) is_changed_[static_cast<size_t>(i)] = 0;
+    changed_.clear();
 }
 
-void ExactEngine::velocities_changed() { restart(); }
+// Of a pair changed together, one ball finds the pair's event, so it is not
+// queued twice (the time seen from either ball can differ in the last bit):
+// the moving one, or of two moving ones the lower index.  Two balls at rest
+// never meet.
+bool ExactEngine::leaves_pair_to(int i, int j) const {
+    return is_changed_[static_cast<size_t>(j)] && moving(j) && (!moving(i) || j < i);
+}
+
+bool ExactEngine::moving(int i) const {
+    const Ball &b = balls_[static_cast<size_t>(i)];
+    return b.vx != 0 || b.vy != 0;
+}
 
 void ExactEngine::motion_changed(int i) {
     ++gen_[static_cast<size_t>(i)];
@@ -304,6 +347,7 @@ bool ExactEngine::resolve(const Event &e, Stats &stats, FrameLog &log) {
 }
 
 void ExactEngine::step(double dt, Stats &stats, FrameLog &log) {
+    find_events_of_changed();
     const double frame_start = now_, frame_end = now_ + dt;
     // Every impact makes a pair separate or removes a ball, but chains of
     // simultaneous contacts (inelastic collapse) could go on for ever.
@@ -322,16 +366,16 @@ void ExactEngine::step(double dt, Stats &stats, FrameLog &log) {
         now_ = e.t;
         if (e.kind == kSweepExpires) {
             sweep(e.a);
-            find_events(e.a, false);
+            find_events(e.a);
             continue;
         }
         if (!resolve(e, stats, log)) continue;
         motion_changed(e.a);
         if (e.kind == kBallProxy) {
             motion_changed(e.b);
-            find_events(e.b, false);
+            find_events(e.b);
         }
-        find_events(e.a, false);
+        find_events(e.a);
     }
     now_ = frame_end;
     for (size_t i = 0; i < balls_.size(); ++i)

@@ -73,19 +73,19 @@ public:
     const Table &table() const { return table_; }
     const std::vector<Ball> &balls() const;
     const Stats &stats() const { return stats_; }
-    int balls_total() const { return static_cast<int>(balls_initial_.size()); }
+    int balls_total() const { return static_cast<int>(balls().size()); }
     int object_balls_left() const;
     double energy() const;
     void momentum(double out[2]) const;
     bool lossless() const { return config_.losses.none(); }
 
 private:
+    void roll();
 
     SimConfig config_;
     Table table_;
-    std::vector<Ball> balls_initial_;
     std::unique_ptr<Engine> engine_;
-    std::unique_ptr<FrameLog> frame_log_;
+    FrameLog frame_log_;
     Stats stats_;
     Checker checker_;
 };
