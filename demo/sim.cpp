@@ -32,6 +32,8 @@ Simulation::Simulation(const SimConfig &config) : config_(config) {
 }
 
 Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation &&) noexcept = default;
+Simulation &Simulation::operator=(Simulation &&) noexcept = default;
 
 const std::vector<Ball> &Simulation::balls() const { return engine_->balls(); }
 
@@ -101,6 +103,16 @@ void Simulation::step() {
     if (config_.losses.rolling_deceleration > 0) roll();
     ++stats_.steps;
     stats_.sim_seconds = static_cast<double>(stats_.steps) * kFrameDt;
+}
+
+void run(Simulation &sim, Driver &driver) {
+    while (driver.next_frame(sim)) {
+        const bool at_rest = sim.at_rest();
+        if (at_rest) sim.respot_cue();
+        if (!driver.before_step(sim, at_rest)) return;
+        sim.step();
+        driver.after_step(sim);
+    }
 }
 
 }  // namespace demo

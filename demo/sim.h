@@ -58,6 +58,8 @@ public:
     ~Simulation();
     Simulation(const Simulation &) = delete;
     Simulation &operator=(const Simulation &) = delete;
+    Simulation(Simulation &&) noexcept;
+    Simulation &operator=(Simulation &&) noexcept;  // the window's re-rack
 
     // Strikes the cue ball (break scenes; ignored if it is off the table).
     void shoot(const Shot &shot);
@@ -89,6 +91,25 @@ private:
     Stats stats_;
     Checker checker_;
 };
+
+// What makes a run of the one main loop (run) a window game or a headless
+// run: where shots and the end come from, and what becomes of each frame.
+class Driver {
+public:
+    virtual ~Driver() = default;
+    // Start of a frame: false ends the run.  May shoot or re-rack.
+    virtual bool next_frame(Simulation &sim) = 0;
+    // The cue ball is back on the table if the table was at rest; false ends
+    // the run.
+    virtual bool before_step(Simulation &sim, bool was_at_rest) = 0;
+    // The frame has been simulated.
+    virtual void after_step(const Simulation &sim) = 0;
+};
+
+// The main loop of the window and of headless runs: frame by frame until the
+// driver ends it; whenever the table is at rest, a pocketed cue ball goes
+// back on the head spot.
+void run(Simulation &sim, Driver &driver);
 
 }  // namespace demo
 
