@@ -1,4 +1,7 @@
-// box2d_engine.cpp - see box2d_engine.h.
+// box2d_engine.cpp - see box2d_engine.h.  Balls are dynamic circles
+// without friction or rotation, cushions two-sided edges, pockets sensors
+// that drop a ball once its centre is inside; lengths are scaled by
+// kUnitsPerMetre on the way in and out.
 #include "box2d_engine.h"
 
 #include <box2d/box2d.h>

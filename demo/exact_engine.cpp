@@ -1,4 +1,11 @@
-// exact_engine.cpp - see exact_engine.h.
+// exact_engine.cpp - see exact_engine.h.  Balls move straight between
+// impacts, so impact times are exact up to rounding: two balls meet at the
+// earliest t >= 0 with |dp + dv t| = 2r while approaching
+// (c2d_time_of_impact); a cushion at gap g = (p - a).n - r, approached at
+// speed -v.n > 0, is hit at t = g / (-v.n) if the contact lies on its face;
+// cushion ends (jaws) and pocket centres are fixed points, at r and at the
+// capture radius.  Impacts are resolved in time order (c2d_collide, or
+// c2d_collide_normal with the cushion's normal); a pocket removes the ball.
 #include "exact_engine.h"
 
 #include <box2d/box2d.h>

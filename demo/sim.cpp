@@ -1,24 +1,18 @@
 // sim.cpp - see sim.h.
 #include "sim.h"
 
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <utility>
 
 #include "box2d_engine.h"
-#include "checker.h"
 #include "exact_engine.h"
-
-extern "C" {
-#include "collide2d.h"
-}
 
 namespace demo {
 
 namespace {
 
-constexpr double kStopSpeed = 0.01;            // m/s
+// Below it a ball stops rather than crawl; and a last frame's slowing can
+// never reverse a ball.
+constexpr double kStopSpeed = 0.01;  // m/s
 
 }  // namespace
 
@@ -82,7 +76,7 @@ void Simulation::momentum(double out[2]) const {
 
 // Rolling resistance changes velocities only between frames, so the motion
 // inside a frame stays straight and its impacts exact.
-void Simulation::roll() {
+void Simulation::apply_rolling_resistance() {
     const double slowing = config_.losses.rolling_deceleration * kFrameDt;
     for (size_t i = 0; i < balls().size(); ++i) {
         const Ball &b = balls()[i];
@@ -100,7 +94,7 @@ void Simulation::step() {
     frame_log_.waypoints.clear();
     engine_->step(kFrameDt, stats_, frame_log_);
     checker_.check_frame(before, balls(), frame_log_, table_, kFrameDt, stats_);
-    if (config_.losses.rolling_deceleration > 0) roll();
+    if (config_.losses.rolling_deceleration > 0) apply_rolling_resistance();
     ++stats_.steps;
     stats_.sim_seconds = static_cast<double>(stats_.steps) * kFrameDt;
 }

@@ -1,11 +1,10 @@
-// sim.h - billiards / disk-gas simulation for the collide2d demo (no SDL).
-//
-// The state (positions, velocities) is kept in double in SI units (m, m/s,
-// kg, s).  Box2D 2.4.1 is used only as a broadphase: its dynamic AABB tree
-// finds candidate pairs; impacts are found and ordered with
-// c2d_time_of_impact and resolved with c2d_collide / c2d_collide_normal.
-// Response::Box2d instead hands the same scene to Box2D's own solver, for
-// comparison.
+// sim.h - a run of the demo, without SDL: its configuration (scene, engine,
+// losses); the Simulation, which sets up the scene, steps the engine frame
+// by frame, has the checker check every frame, and applies rolling
+// resistance between frames (each moving ball's speed drops by
+// rolling_deceleration * kFrameDt; below 1 cm/s it stops); and the one main
+// loop that the window and the headless runs share.  State is in double, SI
+// units (m, m/s, kg, s).
 #ifndef C2D_DEMO_SIM_H
 #define C2D_DEMO_SIM_H
 
@@ -51,7 +50,6 @@ struct SimConfig {
 
 constexpr double kMaxShotSpeed = 15.0;  // Box2D moves at most 2 units/step: 15 m/s at our scale
 
-
 class Simulation {
 public:
     explicit Simulation(const SimConfig &config);
@@ -82,7 +80,7 @@ public:
     bool lossless() const { return config_.losses.none(); }
 
 private:
-    void roll();
+    void apply_rolling_resistance();
 
     SimConfig config_;
     Table table_;
