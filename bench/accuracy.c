@@ -7,13 +7,13 @@
 
 #define Q16_MAX (2147483647.0 / 65536.0)
 
-void gen_impact(rng *r, ref_case *c)
+void gen_impact(c2d_rng *r, ref_case *c)
 {
     /* Relative velocity in a random direction; the contact normal makes an
      * angle asin(beta) with the approach direction, beta (the impact
      * parameter over the radius sum) uniform in (-1, 1) as for disks
      * thrown at each other at random. */
-    double beta = rng_range(r, -1, 1), dist = rng_range(r, 0.5, 2.0);
+    double beta = c2d_rng_range(r, -1, 1), dist = c2d_rng_range(r, 0.5, 2.0);
     double th = asin(beta), ux, uy, rx, ry, len;
     int i;
     gen_plain(r, c);
@@ -97,7 +97,7 @@ static void derive(case_set *dst, const case_set *src, const char *name, void (*
 
 static void generate(case_set *s, const char *name, int n, unsigned long long seed, int extreme, int prec)
 {
-    rng r;
+    c2d_rng r;
     int i;
     r.s = seed;
     s->name = name;

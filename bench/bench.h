@@ -7,7 +7,7 @@
 
 #include "collide2d.h"
 #include "referee.h"
-#include "support.h"
+#include "cases.h"
 
 /* How a contender is called and which precision its answers have. */
 typedef enum bench_kind {
@@ -69,7 +69,7 @@ typedef struct acc_stats {
 void evaluate(const contender *k, const case_set *s, acc_stats *out);
 
 /* Generators shared by the accuracy and timing parts. */
-void gen_impact(rng *r, ref_case *c); /* uniform impact parameter */
+void gen_impact(c2d_rng *r, ref_case *c); /* uniform impact parameter */
 
 /* ---------------------------------------------------------------- timing */
 typedef struct timing_data timing_data;

@@ -152,7 +152,7 @@ static void check_timing_harness_runs(void)
 {
     ref_case cases[64];
     double ns[64];
-    rng r;
+    c2d_rng r;
     int i, all_ran = 1;
     timing_data *t;
     r.s = 99;

@@ -266,7 +266,7 @@ void roof_run(int is_float, size_t count, int reps, roof_result *out)
     void *arr[SOA_N], *v0[4];
     c2d_status *st = malloc(count * sizeof *st);
     double tb[64], tr[64];
-    rng r;
+    c2d_rng r;
     size_t i;
     int k, rep;
     r.s = 12345;

@@ -1,7 +1,7 @@
 # tests/fuzz/fuzz.mk - dynamic hardening runs, included by the top-level
 # Makefile: the libFuzzer harness for every public entry point, the
 # cross-compiler determinism hash, and the demo under valgrind.
-# (Static analysis: tests/lint.mk.)
+# (Static analysis: tests/build/lint.mk.)
 #   make fuzz          fuzz for FUZZ_SECONDS (new inputs: $(B)/fuzz/corpus,
 #                      crashes: $(B)/fuzz/crash-*); add a crash to
 #                      tests/fuzz/corpus/regress-NAME once the bug is fixed
@@ -65,7 +65,7 @@ TEST_TARGETS += test-fuzz
 .PHONY: test-determinism test-valgrind
 test-determinism: $(AMALGAMATION)
 	@sh scripts/deps.sh gcc clang
-	@sh tests/determinism.sh $(B)/determinism 100000 $(AMALGAMATION)
+	@sh tests/build/determinism.sh $(B)/determinism 100000 $(AMALGAMATION)
 
 TEST_TARGETS += test-determinism
 
@@ -79,7 +79,7 @@ test-valgrind:
 else
 test-valgrind: $(B)/billiards
 	@sh scripts/deps.sh $(VALGRIND_DEPS)
-	@sh tests/valgrind.sh $(B)/billiards $(B)/valgrind
+	@sh tests/build/valgrind.sh $(B)/billiards $(B)/valgrind
 endif
 
 TEST_TARGETS += test-valgrind

@@ -1,4 +1,4 @@
-/* MCU test harness: runs the library's shared test vectors (tests/vectors.c,
+/* MCU test harness: runs the library's shared test vectors (tests/vectors/vectors.c,
  * the table the host cmocka tests use) on a bare-metal target.  For each
  * variant compiled in it calls the function, compares the status, each
  * output within the vector's tolerance, and that nothing was written that
@@ -38,7 +38,7 @@ static void c2d_put_int(long v)
 
 #if !defined(C2D_NO_DOUBLE) || !defined(C2D_NO_FLOAT)
 /* An IEEE value from its fields in C99 %a form (0x1.8p+1), so a failure
- * shows the exact bits in the notation tests/vectors.c is written in. */
+ * shows the exact bits in the notation tests/vectors/vectors.c is written in. */
 static void c2d_put_hexfloat(int neg, int bexp, uint64_t mant, int mant_bits, int bias)
 {
     static const char hex[] = "0123456789abcdef";

@@ -6,7 +6,7 @@
 #                    sqrt/sqrtf, on recursion or unbounded stack, on double
 #                    arithmetic or a sqrtf call on M4F, and if the Q16.16 path
 #                    does not link on M0 with -nostdlib -lgcc.
-#   make test-mcu    runs the shared test vectors (tests/vectors.c) on the
+#   make test-mcu    runs the shared test vectors (tests/vectors/vectors.c) on the
 #                    four cores (plus Q16.16 alone on M0) under QEMU, each
 #                    linked once against lib/ and once against the
 #                    amalgamated single file (make amalgamate).
@@ -67,7 +67,7 @@ MCU_m0q16_QEMU := qemu-system-arm -M microbit
 # Only the compiler's own headers (stddef.h, stdint.h, float.h): no C
 # library's.  Asked of the compiler when the recipe runs, after deps.
 MCU_COMPILE = $(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_$*_OPTS) $(MCU_CFLAGS) \
-  -nostdinc -isystem "$$($(MCU_$*_CC) $(MCU_$*_ARCH) -print-file-name=include)" -Iinclude -Itests -I$(MCU_DIR)
+  -nostdinc -isystem "$$($(MCU_$*_CC) $(MCU_$*_ARCH) -print-file-name=include)" -Iinclude -Itests/vectors -I$(MCU_DIR)
 
 MCU_ARM := m0 m4f m7
 MCU_ARM_LINK := -nostdlib -T $(MCU_DIR)/arm.ld -Wl,--gc-sections
@@ -94,11 +94,11 @@ $(MCU_B)/%/lib.o: $(LIB_SRC) $(LIB_DEPS) $(MCU_DIR)/mcu.mk | mcu-deps
 	for f in $(LIB_SRC); do $(MCU_COMPILE) -c $$f -o $(@D)/lib/$$(basename $$f .c).o || exit 1; done
 	$(MCU_$*_CC) $(MCU_$*_ARCH) -nostdlib -r -o $@ $(patsubst lib/%.c,$(@D)/lib/%.o,$(LIB_SRC))
 
-$(MCU_B)/%/harness.o: $(MCU_DIR)/harness.c $(MCU_DIR)/harness_variant.h $(MCU_DIR)/mcu.h tests/vectors.h $(LIB_HDR) | mcu-deps
+$(MCU_B)/%/harness.o: $(MCU_DIR)/harness.c $(MCU_DIR)/harness_variant.h $(MCU_DIR)/mcu.h tests/vectors/vectors.h $(LIB_HDR) | mcu-deps
 	@mkdir -p $(@D)
 	$(MCU_COMPILE) -DC2D_MCU_NAME='"$*"' -c $< -o $@
 
-$(MCU_B)/%/vectors.o: tests/vectors.c tests/vectors.h $(LIB_HDR) | mcu-deps
+$(MCU_B)/%/vectors.o: tests/vectors/vectors.c tests/vectors/vectors.h $(LIB_HDR) | mcu-deps
 	@mkdir -p $(@D)
 	$(MCU_COMPILE) -c $< -o $@
 

@@ -59,7 +59,7 @@ same_public_symbols() {
 }
 check "amalgamation defines the same public symbols as lib/" same_public_symbols
 no_self_or_c_include() {
-    bad=$(grep -n '#include *"[^"]*\.c"' lib/* include/* tests/*.c bench/*.c 2>/dev/null)
+    bad=$(grep -rn --include='*.[ch]' --include='*.cpp' '#include *"[^"]*\.c"' lib include referee tests bench)
     for f in lib/*; do
         grep -q "#include *\"$(basename "$f")\"" "$f" && bad="$bad $f includes itself"
     done

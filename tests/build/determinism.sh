@@ -1,6 +1,6 @@
 #!/bin/sh
 # determinism.sh OUTDIR [COUNT [AMALGAMATION]] - the library's output bits over a fixed case
-# set (tests/hash_vectors.c) must hash the same under gcc and clang at -O0,
+# set (tests/build/hash_vectors.c) must hash the same under gcc and clang at -O0,
 # -O2 and -O3, all with -ffp-contract=off.  The harness is always compiled
 # the same way (gcc -O2 -ffp-contract=off) so only the library varies.
 # Then, for information only, one build without -ffp-contract=off (gcc -O3
@@ -14,7 +14,7 @@ mkdir -p "$out"
 pass=0
 fail=0
 std="-std=c99 -ffp-contract=off -Iinclude"
-if ! gcc -O2 $std -c tests/hash_vectors.c -o "$out/hash_vectors.o"; then
+if ! gcc -O2 $std -Ireferee -c tests/build/hash_vectors.c -o "$out/hash_vectors.o"; then
     echo "determinism: 0 passed, 1 failed (hash_vectors.c does not build)"
     exit 1
 fi

@@ -11,12 +11,12 @@ typedef struct soa {
 
 static void fill(soa *s, ref_case *cs, uint64_t seed)
 {
-    rng r;
+    c2d_rng r;
     int i;
     r.s = seed;
     for (i = 0; i < N; i++) {
         ref_case *c = &cs[i];
-        uint64_t k = rng_next(&r) % 10;
+        uint64_t k = c2d_rng_next(&r) % 10;
         if (k < 6) {
             gen_plain(&r, c);
         } else {
@@ -110,12 +110,12 @@ static void test_float_batch_is_bit_identical_to_scalar_calls(void **state)
     static ref_case cs[N];
     static c2d_status st[N];
     c2d_pairsf p;
-    rng r = {406};
+    c2d_rng r = {406};
     int i;
     (void)state;
     for (i = 0; i < N; i++) {
         ref_case *c = &cs[i];
-        if (rng_next(&r) % 4) gen_plain(&r, c); else gen_extreme(&r, c, 24, -126, 127);
+        if (c2d_rng_next(&r) % 4) gen_plain(&r, c); else gen_extreme(&r, c, 24, -126, 127);
         ax[i] = (float)c->pa[0], ay[i] = (float)c->pa[1], bx[i] = (float)c->pb[0], by[i] = (float)c->pb[1];
         avx[i] = (float)c->va[0], avy[i] = (float)c->va[1], bvx[i] = (float)c->vb[0], bvy[i] = (float)c->vb[1];
         ma[i] = (float)c->ma, mb[i] = (float)c->mb;

@@ -14,7 +14,7 @@
 
 #include "collide2d.h"
 #include "referee.h"
-#include "support.h"
+#include "cases.h"
 
 /* |got - want| <= tol, printing both on failure (cmocka has no double compare). */
 #define assert_close(got, want, tol)                                                          \

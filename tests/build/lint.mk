@@ -1,6 +1,6 @@
-# tests/lint.mk - static analysis of lib/ and demo/, included by the
+# tests/build/lint.mk - static analysis of lib/ and demo/, included by the
 # top-level Makefile.  Configurations: .clang-tidy (repo root) and
-# tests/cppcheck-suppressions.txt, each entry with its reason.
+# tests/build/cppcheck-suppressions.txt, each entry with its reason.
 #   make lint-tidy       clang-tidy-14, warnings are errors
 #   make lint-cppcheck   cppcheck 2.10, any finding is an error
 # lib/ is checked as written, one translation unit at a time (each
@@ -32,7 +32,7 @@ lint-tidy: lint-deps
 	echo "lint-tidy: $$pass passed, $$fail failed"; [ $$fail -eq 0 ]
 
 CPPCHECK := cppcheck --enable=warning,style,performance,portability --inline-suppr \
-  --error-exitcode=1 -q --suppressions-list=tests/cppcheck-suppressions.txt
+  --error-exitcode=1 -q --suppressions-list=tests/build/cppcheck-suppressions.txt
 
 lint-cppcheck: lint-deps
 	@mkdir -p $(LINT_DIR)

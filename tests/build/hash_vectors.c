@@ -1,16 +1,18 @@
 /* hash_vectors.c - hash the bits of every output and status of the library
- * over a fixed, generated set of cases, for tests/determinism.sh.
+ * over a fixed, generated set of cases, for tests/build/determinism.sh.
  *
  * Standalone on purpose (no GMP, no cmocka): it is compiled many times, by
  * gcc and clang at several optimisation levels, and must be cheap to build.
- * The cases come from a fixed splitmix64 stream: unit-scale scenes, grazing
- * impacts, whole-range extremes (every binade, subnormals, zeros, NaN, Inf,
- * mass ratios up to the full range, immovable bodies), and Q16.16 scenes;
- * each case runs through every entry point (double, float, Q16.16, time of
- * impact, and the batch kernels over the whole set).
+ * The cases come from a fixed splitmix64 stream (referee/rng.h, header-only):
+ * unit-scale scenes, grazing impacts, whole-range extremes (every binade,
+ * subnormals, zeros, NaN, Inf, mass ratios up to the full range, immovable
+ * bodies), and Q16.16 scenes; each case runs through every entry point
+ * (double, float, Q16.16, time of impact, and the batch kernels over the
+ * whole set).
  * Usage: hash_vectors [COUNT [DUMP]]  prints "hash_vectors: COUNT cases,
  * hash H"; DUMP receives the raw bytes hashed, to locate differences (cmp -l). */
 #include "collide2d.h"
+#include "rng.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -25,15 +27,9 @@ typedef struct scene {
     double e, radius;
 } scene;
 
-static uint64_t rng_state = 0x2545F4914F6CDD1Dull;
+static c2d_rng rng = {0x2545F4914F6CDD1Dull};
 
-static uint64_t next(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
+static uint64_t next(void) { return c2d_rng_next(&rng); }
 
 static double from_bits(uint64_t u)
 {
@@ -44,7 +40,7 @@ static double from_bits(uint64_t u)
 
 /* Uniform in [lo, hi): only + - * on exactly produced values, so the inputs
  * themselves are the same bits whatever the compiler does. */
-static double uniform(double lo, double hi) { return lo + (hi - lo) * ((double)(next() >> 11) * 0x1p-53); }
+static double uniform(double lo, double hi) { return c2d_rng_range(&rng, lo, hi); }
 
 /* Any finite double, exponent uniform over the whole range (subnormals
  * included), or occasionally a special value. */

@@ -1,4 +1,4 @@
-/* The shared vector table (tests/vectors.c, also run on emulated MCUs):
+/* The shared vector table (tests/vectors/vectors.c, also run on emulated MCUs):
  * every entry's status, outputs within its tolerance, and bodies untouched
  * on refusal.  `make test` also regenerates the table from the exact
  * referee and requires it to be unchanged. */
