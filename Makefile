@@ -98,15 +98,18 @@ clean:
 
 # ---------------------------------------------------------------- unit tests
 # One cmocka program per unit (tests/unit/test_*.c, tests/vectors/test_*.c).
-# The exact referee and the case generators (referee/, GMP rationals + MPFR)
-# and the shared vector table (tests/vectors/vectors.c, also run on emulated
-# MCUs) are linked into each.
+# The exact referee and the case generators (referee/, GMP rationals + MPFR),
+# the shared test helper (tests/harness/) and the shared vector table with
+# its checks (tests/vectors/, also run on emulated MCUs) are linked into each.
 TEST_DEPS := libcmocka-dev libgmp-dev libmpfr-dev pkg-config
 TEST_SRCS := $(wildcard tests/unit/test_*.c tests/vectors/test_*.c)
 TEST_BINS := $(patsubst %.c,$(B)/tests/%,$(notdir $(TEST_SRCS)))
-TEST_SUPPORT := referee/referee.c referee/cases.c tests/vectors/vectors.c
-TEST_SUPPORT_HDR := $(wildcard referee/*.h tests/unit/*.h tests/vectors/*.h)
-TEST_INC := -Ireferee -Itests/unit -Itests/vectors
+HARNESS_SRC := $(wildcard tests/harness/*.c)
+HARNESS_HDR := $(wildcard tests/harness/*.h)
+VECTORS_SRC := tests/vectors/vectors.c $(wildcard tests/vectors/check_*.c)
+TEST_SUPPORT := referee/referee.c referee/cases.c $(VECTORS_SRC) $(HARNESS_SRC)
+TEST_SUPPORT_HDR := $(wildcard referee/*.h tests/unit/*.h tests/vectors/*.h) $(HARNESS_HDR)
+TEST_INC := -Ireferee -Itests/harness -Itests/unit -Itests/vectors
 
 check-deps-test:
 	@sh scripts/deps.sh $(TEST_DEPS)

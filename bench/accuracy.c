@@ -202,19 +202,6 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-/* Batch results must be bit-identical to the scalar call (header promise). */
-static int batch_differs(const contender *k, const ref_case *c, c2d_status s, const double got[4])
-{
-    contender scalar = *k;
-    double ref[4];
-    c2d_status rs;
-    if (k->kind != KIND_BATCH && k->kind != KIND_BATCHF) return 0;
-    scalar.kind = k->kind == KIND_BATCH ? KIND_DOUBLE : KIND_FLOAT;
-    scalar.fn = c2d_collide;
-    rs = contender_run(&scalar, c, ref);
-    return rs != s || memcmp(ref, got, sizeof ref) != 0;
-}
-
 static void tally_finite(const double got[4], acc_stats *o)
 {
     int i, nan = 0, inf = 0;
@@ -252,7 +239,7 @@ void evaluate(const contender *k, const case_set *s, acc_stats *o)
         double got[4];
         c2d_status st = contender_run(k, c, got);
         o->wrong_status += !status_right(k, c, r, st);
-        o->batch_mismatch += batch_differs(k, c, st, got);
+        o->batch_mismatch += !contender_batch_agrees(k, c);
         tally_finite(got, o);
         /* Errors over real impacts only; a contender that writes where it
          * should not is already counted as a wrong status. */

@@ -6,8 +6,9 @@
 #include <stddef.h>
 
 #include "collide2d.h"
-#include "referee.h"
 #include "cases.h"
+#include "harness.h"
+#include "referee.h"
 
 /* How a contender is called and which precision its answers have. */
 typedef enum bench_kind {
@@ -58,6 +59,11 @@ const case_set *sets_for(const case_set *sets, const contender *k, int extreme);
 /* Run one contender on one case: status and the four output velocities
  * (inputs when nothing was written). */
 c2d_status contender_run(const contender *k, const ref_case *c, double got[4]);
+
+/* For a batch contender: every lane of its call on the case has the scalar
+ * call's status and bits, and the returned count is right (header promise).
+ * 1 for any other contender. */
+int contender_batch_agrees(const contender *k, const ref_case *c);
 
 typedef struct acc_stats {
     int n, evaluated, wrong_status, nan, inf, batch_mismatch;

@@ -34,9 +34,11 @@ $(FUZZ_BIN): $(FUZZ_SRC) $(LIB_SRC) $(LIB_DEPS) | fuzz-deps
 	@mkdir -p $(@D)
 	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) $(LIB_SRC) -lm
 
-$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) $(LIB_DEPS)
+# The replay counts its files with the shared helper's tally (tests/harness/).
+$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) $(LIB_DEPS) $(HARNESS_SRC) $(HARNESS_HDR)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -o $@ tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) -lm
+	$(CC) $(ALL_CFLAGS) -Itests/harness -o $@ tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) \
+	  tests/harness/harness.c tests/harness/put_stdio.c -lm
 
 $(FUZZ_DIR)/make_seeds: tests/fuzz/make_seeds.c
 	@mkdir -p $(@D)

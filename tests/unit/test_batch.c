@@ -5,17 +5,20 @@
 
 #define N 1003 /* not a multiple of 8 */
 
-typedef struct soa {
-    double ax[N], ay[N], bx[N], by[N], avx[N], avy[N], bvx[N], bvy[N], ma[N], mb[N];
-} soa;
+/* The batch's arrays (tests/harness: c2d_soa over one block). */
+static double block[C2D_SOA_FIELDS * N];
+static c2d_status status[N];
 
-static void fill(soa *s, ref_case *cs, uint64_t seed)
+/* N mixed cases into the batch's arrays; cs keeps them for the scalar calls. */
+static c2d_soa fill(ref_case *cs, uint64_t seed)
 {
+    c2d_soa s = c2d_soa_in(block, N, status);
     c2d_rng r;
     int i;
     r.s = seed;
     for (i = 0; i < N; i++) {
         ref_case *c = &cs[i];
+        c2d_body a, b;
         uint64_t k = c2d_rng_next(&r) % 10;
         if (k < 6) {
             gen_plain(&r, c);
@@ -24,46 +27,37 @@ static void fill(soa *s, ref_case *cs, uint64_t seed)
         }
         if (k == 9) c->va[0] = NAN;
         if (k == 8) c->ma = -1;
-        s->ax[i] = c->pa[0], s->ay[i] = c->pa[1], s->bx[i] = c->pb[0], s->by[i] = c->pb[1];
-        s->avx[i] = c->va[0], s->avy[i] = c->va[1], s->bvx[i] = c->vb[0], s->bvy[i] = c->vb[1];
-        s->ma[i] = c->ma, s->mb[i] = c->mb;
+        case_to_bodies(c, &a, &b);
+        c2d_soa_put(&s, (size_t)i, &a, &b);
     }
+    return s;
 }
 
-static c2d_pairs view(soa *s)
+/* Every lane had the scalar call's status and bits, and the count was right. */
+static void assert_lanes_agree(const c2d_batch_check *check, size_t done)
 {
-    c2d_pairs p;
-    p.pos_ax = s->ax, p.pos_ay = s->ay, p.pos_bx = s->bx, p.pos_by = s->by;
-    p.vel_ax = s->avx, p.vel_ay = s->avy, p.vel_bx = s->bvx, p.vel_by = s->bvy;
-    p.mass_a = s->ma, p.mass_b = s->mb;
-    return p;
+    if (check->differing != 0) print_error("batch lane %zu differs from the scalar call\n", check->first);
+    assert_int_equal(check->differing, 0);
+    assert_int_equal(done, check->resolved);
 }
 
 static void check_restitution(double e, uint64_t seed)
 {
-    static soa s;
     static ref_case cs[N];
-    static c2d_status st[N];
-    c2d_pairs p;
-    size_t done, expect_done = 0;
-    int i;
-    fill(&s, cs, seed);
-    p = view(&s);
-    done = c2d_collide_batch(&p, N, e, st);
+    const c2d_soa s = fill(cs, seed);
+    const c2d_pairs p = c2d_soa_pairs(&s);
+    c2d_batch_check check = {0, 0, 0};
+    size_t done, i;
+    done = c2d_collide_batch(&p, N, e, s.status);
     for (i = 0; i < N; i++) {
         c2d_body a, b;
         c2d_status want;
         case_to_bodies(&cs[i], &a, &b);
         want = c2d_collide(&a, &b, e);
-        assert_status(st[i], want);
-        if (want == C2D_OK) expect_done++;
         /* untouched on refusal is included: a and b keep their inputs */
-        assert_memory_equal(&s.avx[i], &a.vel.x, sizeof(double));
-        assert_memory_equal(&s.avy[i], &a.vel.y, sizeof(double));
-        assert_memory_equal(&s.bvx[i], &b.vel.x, sizeof(double));
-        assert_memory_equal(&s.bvy[i], &b.vel.y, sizeof(double));
+        c2d_batch_check_lane(&check, &s, i, want, &a, &b);
     }
-    assert_int_equal(done, expect_done);
+    assert_lanes_agree(&check, done);
 }
 
 static void test_batch_is_bit_identical_to_scalar_calls(void **state)
@@ -76,60 +70,56 @@ static void test_batch_is_bit_identical_to_scalar_calls(void **state)
 
 static void test_batch_with_invalid_restitution_refuses_every_pair(void **state)
 {
-    static soa s, s0;
     static ref_case cs[N];
-    static c2d_status st[N];
-    c2d_pairs p;
+    static double before[C2D_SOA_FIELDS * N];
+    const c2d_soa s = fill(cs, 404);
+    const c2d_pairs p = c2d_soa_pairs(&s);
     int i;
     (void)state;
-    fill(&s, cs, 404);
-    s0 = s;
-    p = view(&s);
-    assert_int_equal(c2d_collide_batch(&p, N, 1.5, st), 0);
-    for (i = 0; i < N; i++) assert_status(st[i], C2D_INVALID);
-    assert_memory_equal(&s, &s0, sizeof s);
-    assert_int_equal(c2d_collide_batch(NULL, N, 1.0, st), 0);
+    memcpy(before, block, sizeof block);
+    assert_int_equal(c2d_collide_batch(&p, N, 1.5, s.status), 0);
+    for (i = 0; i < N; i++) assert_status(s.status[i], C2D_INVALID);
+    assert_memory_equal(block, before, sizeof block);
+    assert_int_equal(c2d_collide_batch(NULL, N, 1.0, s.status), 0);
 }
 
 static void test_batch_without_status_array_and_tiny_counts(void **state)
 {
-    static soa s;
     static ref_case cs[N];
-    c2d_pairs p;
+    const c2d_soa s = fill(cs, 405);
+    const c2d_pairs p = c2d_soa_pairs(&s);
     size_t n;
     (void)state;
-    fill(&s, cs, 405);
-    p = view(&s);
     for (n = 0; n < 20; n++) (void)c2d_collide_batch(&p, n, 1.0, NULL);
     assert_int_equal(c2d_collide_batch(&p, 0, 1.0, NULL), 0);
 }
 
 static void test_float_batch_is_bit_identical_to_scalar_calls(void **state)
 {
-    static float ax[N], ay[N], bx[N], by[N], avx[N], avy[N], bvx[N], bvy[N], ma[N], mb[N];
+    static float blockf[C2D_SOA_FIELDS * N];
     static ref_case cs[N];
-    static c2d_status st[N];
-    c2d_pairsf p;
+    const c2d_soaf s = c2d_soa_inf(blockf, N, status);
+    const c2d_pairsf p = c2d_soa_pairsf(&s);
+    c2d_batch_check check = {0, 0, 0};
     c2d_rng r = {406};
-    int i;
+    size_t done, i;
     (void)state;
     for (i = 0; i < N; i++) {
         ref_case *c = &cs[i];
+        c2d_bodyf a, b;
         if (c2d_rng_next(&r) % 4) gen_plain(&r, c); else gen_extreme(&r, c, 24, -126, 127);
-        ax[i] = (float)c->pa[0], ay[i] = (float)c->pa[1], bx[i] = (float)c->pb[0], by[i] = (float)c->pb[1];
-        avx[i] = (float)c->va[0], avy[i] = (float)c->va[1], bvx[i] = (float)c->vb[0], bvy[i] = (float)c->vb[1];
-        ma[i] = (float)c->ma, mb[i] = (float)c->mb;
+        case_to_bodiesf(c, &a, &b);
+        c2d_soa_putf(&s, i, &a, &b);
     }
-    p.pos_ax = ax, p.pos_ay = ay, p.pos_bx = bx, p.pos_by = by;
-    p.vel_ax = avx, p.vel_ay = avy, p.vel_bx = bvx, p.vel_by = bvy, p.mass_a = ma, p.mass_b = mb;
-    (void)c2d_collide_batchf(&p, N, 0.9f, st);
+    done = c2d_collide_batchf(&p, N, 0.9f, s.status);
     for (i = 0; i < N; i++) {
         c2d_bodyf a, b;
+        c2d_status want;
         case_to_bodiesf(&cs[i], &a, &b);
-        assert_status(st[i], c2d_collidef(&a, &b, 0.9f));
-        assert_memory_equal(&avx[i], &a.vel.x, sizeof(float));
-        assert_memory_equal(&bvy[i], &b.vel.y, sizeof(float));
+        want = c2d_collidef(&a, &b, 0.9f);
+        c2d_batch_check_lanef(&check, &s, i, want, &a, &b);
     }
+    assert_lanes_agree(&check, done);
 }
 
 int main(void)
