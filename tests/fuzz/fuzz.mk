@@ -20,9 +20,15 @@ FUZZ_CLANG := clang-14
 FUZZ_DIR := $(B)/fuzz
 FUZZ_BIN := $(FUZZ_DIR)/fuzz_collide2d
 FUZZ_REPLAY := $(FUZZ_DIR)/replay
-FUZZ_SRC := tests/fuzz/fuzz_collide2d.c
+# The harness: the entry point and report, the decoder, the bounds, one
+# translation unit per variant (fuzz_template.h for double and float), and
+# the shared test helper (tests/harness/) for the batch arrays and checks.
+FUZZ_SRC := $(addprefix tests/fuzz/,fuzz_collide2d.c decode.c bounds.c fuzz_double.c fuzz_float.c fuzz_fixed.c) \
+  tests/harness/harness.c
+FUZZ_HDR := $(wildcard tests/fuzz/*.h) $(HARNESS_HDR)
 FUZZ_CORPUS := tests/fuzz/corpus
-FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off -Iinclude \
+FUZZ_INC := -Iinclude -Itests/harness -Itests/fuzz
+FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off $(FUZZ_INC) \
   -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
 .PHONY: fuzz-deps fuzz test-fuzz fuzz-seeds
@@ -30,19 +36,18 @@ FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off -Iinclude \
 fuzz-deps:
 	@sh scripts/deps.sh $(FUZZ_DEPS)
 
-$(FUZZ_BIN): $(FUZZ_SRC) $(LIB_SRC) $(LIB_DEPS) | fuzz-deps
+# c2d_put (the helper's output, for the replay's closing line) goes to stdout.
+$(FUZZ_BIN): $(FUZZ_SRC) $(FUZZ_HDR) $(LIB_SRC) $(LIB_DEPS) | fuzz-deps
 	@mkdir -p $(@D)
-	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) $(LIB_SRC) -lm
+	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) -lm
 
-# The replay counts its files with the shared helper's tally (tests/harness/).
-$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) $(LIB_DEPS) $(HARNESS_SRC) $(HARNESS_HDR)
+$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(FUZZ_HDR) $(LIB_SRC) $(LIB_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Itests/harness -o $@ tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) \
-	  tests/harness/harness.c tests/harness/put_stdio.c -lm
+	$(CC) $(ALL_CFLAGS) $(FUZZ_INC) -o $@ tests/fuzz/replay.c $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) -lm
 
-$(FUZZ_DIR)/make_seeds: tests/fuzz/make_seeds.c
+$(FUZZ_DIR)/make_seeds: tests/fuzz/make_seeds.c tests/fuzz/fuzz.h
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -std=c99 $(WARN) -o $@ $<
+	$(CC) $(CFLAGS) -std=c99 $(WARN) $(FUZZ_INC) -o $@ $<
 
 fuzz-seeds: $(FUZZ_DIR)/make_seeds
 	$(FUZZ_DIR)/make_seeds $(FUZZ_CORPUS)
