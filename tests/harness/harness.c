@@ -20,12 +20,17 @@ void c2d_put_int(long v)
 }
 
 #if !defined(C2D_NO_DOUBLE) || !defined(C2D_NO_FLOAT)
-/* An IEEE value from its fields in C99 %a form (0x1.8p+1), so a failure
- * shows the exact bits in the notation tests/vectors/vectors.c is written
- * in, with no printf on the target. */
-static void c2d_put_hexfloat(int neg, int bexp, uint64_t mant, int mant_bits, int bias)
+/* An IEEE value from its bits (mant_bits fraction bits below exp_bits
+ * exponent bits) in C99 %a form (0x1.8p+1), so a failure shows the exact
+ * bits in the notation tests/vectors/vectors.c is written in, with no
+ * printf on the target. */
+static void c2d_put_ieee(uint64_t bits, int mant_bits, int exp_bits)
 {
     static const char hex[] = "0123456789abcdef";
+    const int bias = (1 << (exp_bits - 1)) - 1;
+    const int neg = (int)(bits >> (mant_bits + exp_bits)) & 1;
+    const int bexp = (int)(bits >> mant_bits) & ((1 << exp_bits) - 1);
+    const uint64_t mant = bits & (((uint64_t)1 << mant_bits) - 1u);
     char buf[40];
     size_t n = 0;
     int digits = (mant_bits + 3) / 4, e;
@@ -62,7 +67,7 @@ void c2d_put_double(double x)
 {
     union { double f; uint64_t u; } p;
     p.f = x;
-    c2d_put_hexfloat((int)(p.u >> 63), (int)((p.u >> 52) & 0x7FFu), p.u & 0xFFFFFFFFFFFFFull, 52, 1023);
+    c2d_put_ieee(p.u, 52, 11);
 }
 #endif
 
@@ -71,7 +76,7 @@ void c2d_put_float(float x)
 {
     union { float f; uint32_t u; } p;
     p.f = x;
-    c2d_put_hexfloat((int)(p.u >> 31), (int)((p.u >> 23) & 0xFFu), p.u & 0x7FFFFFu, 23, 127);
+    c2d_put_ieee(p.u, 23, 8);
 }
 #endif
 
