@@ -231,7 +231,7 @@ static int c2d_toi_plain(const c2d_real_body *a, const c2d_real_body *b, c2d_rea
         const c2d_real x = c2d_abs(m[i]);
         in &= (int)(x == 0) | ((int)(x >= lo) & (int)(x <= hi));
     }
-    if (!in) return 0;
+    if (in == 0) return 0;
     if ((vx == 0 && vy == 0) || (dx == 0 && dy == 0)) { /* exact: moderate values subtract to 0 only if equal */
         *status = C2D_SEPARATING;
         return 1;
@@ -299,8 +299,8 @@ static c2d_status c2d_real_time_of_impact(const c2d_real_body *a, const c2d_real
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y) || !c2d_finite4(a->vel.x, a->vel.y, b->vel.x, b->vel.y) ||
         !(radius_sum >= 0 && radius_sum <= C2D_R_MAX))
         return C2D_INVALID;
-    if (c2d_toi_plain(a, b, radius_sum, t, &plain)) return plain;
-    if (c2d_toi_in_window(a, b, radius_sum)) {
+    if (c2d_toi_plain(a, b, radius_sum, t, &plain) != 0) return plain;
+    if (c2d_toi_in_window(a, b, radius_sum) != 0) {
         vh[0] = c2d_two_sum(b->vel.x, -a->vel.x, &vl[0]);
         vh[1] = c2d_two_sum(b->vel.y, -a->vel.y, &vl[1]);
         dh[0] = c2d_two_sum(b->pos.x, -a->pos.x, &dl[0]);

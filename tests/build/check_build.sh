@@ -9,16 +9,15 @@ set -u
 out=${1:-build/check-build}
 all=${2:-build/collide2d_all.c}
 mkdir -p "$out"
-pass=0
-fail=0
-check() { # name command...
+. tests/harness/tally.sh
+c2d_tally_name=check-build
+check() { # name command...: the command's output is shown when it fails
     name=$1
     shift
     if "$@" >"$out/log" 2>&1; then
-        pass=$((pass + 1))
+        c2d_passed
     else
-        fail=$((fail + 1))
-        echo "check-build: FAILED $name" >&2
+        c2d_failed "$name"
         cat "$out/log" >&2
     fi
 }
@@ -59,7 +58,7 @@ same_public_symbols() {
 }
 check "amalgamation defines the same public symbols as lib/" same_public_symbols
 no_self_or_c_include() {
-    bad=$(grep -n '#include *"[^"]*\.c"' lib/* include/* tests/*.c bench/*.c 2>/dev/null)
+    bad=$(grep -rn --include='*.[ch]' --include='*.cpp' '#include *"[^"]*\.c"' lib include referee tests bench)
     for f in lib/*; do
         grep -q "#include *\"$(basename "$f")\"" "$f" && bad="$bad $f includes itself"
     done
@@ -82,5 +81,4 @@ if [ "$(uname -m)" = x86_64 ]; then
         test "$(vectorised_loops clang -Rpass=loop-vectorize)" -ge 2
 fi
 check "header compiles as C++ (g++ -std=c++11)" g++ -std=c++11 -pedantic -Wall -Wextra -Werror -fsyntax-only -x c++ include/collide2d.h
-echo "check-build: $pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+c2d_summary

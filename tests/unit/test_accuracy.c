@@ -10,17 +10,6 @@
 
 typedef struct tally { int n_ok, n_range; double worst, sum; } tally;
 
-static void to_float_case(ref_case *c)
-{
-    int i;
-    for (i = 0; i < 2; i++) {
-        c->pa[i] = (float)c->pa[i], c->pb[i] = (float)c->pb[i];
-        c->va[i] = (float)c->va[i], c->vb[i] = (float)c->vb[i];
-        c->n[i] = (float)c->n[i];
-    }
-    c->ma = (float)c->ma, c->mb = (float)c->mb, c->e = (float)c->e;
-}
-
 static c2d_status run_double(const ref_case *c, double got[4])
 {
     c2d_body a, b;
@@ -86,7 +75,7 @@ static void check_one(const ref_case *c, int is_float, ref_answer *ans, tally *t
 
 static void run_suite(const char *what, int is_float, int extreme, int count, uint64_t seed)
 {
-    rng r;
+    c2d_rng r;
     ref_answer ans;
     tally t = {0, 0, 0, 0};
     int i;
@@ -98,7 +87,7 @@ static void run_suite(const char *what, int is_float, int extreme, int count, ui
             gen_extreme(&r, &c, is_float ? 24 : 53, is_float ? -126 : -1022, is_float ? 127 : 1023);
         } else {
             gen_plain(&r, &c);
-            if (is_float) to_float_case(&c);
+            if (is_float) case_to_float(&c);
         }
         check_one(&c, is_float, &ans, &t);
     }

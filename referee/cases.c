@@ -1,49 +1,36 @@
-#include "support.h"
+#include "cases.h"
 
 #include <math.h>
 
-uint64_t rng_next(rng *r)
+static double pick_restitution(c2d_rng *r)
 {
-    /* splitmix64: tiny, fast, and good enough to drive test cases */
-    uint64_t z = (r->s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
-double rng_unit(rng *r) { return (double)(rng_next(r) >> 11) * 0x1p-53; }
-
-double rng_range(rng *r, double lo, double hi) { return lo + (hi - lo) * rng_unit(r); }
-
-static double pick_restitution(rng *r)
-{
-    uint64_t k = rng_next(r) % 4;
+    uint64_t k = c2d_rng_next(r) % 4;
     if (k == 0) return 1.0;
     if (k == 1) return 0.0;
-    return rng_unit(r);
+    return c2d_rng_unit(r);
 }
 
-void gen_plain(rng *r, ref_case *c)
+void gen_plain(c2d_rng *r, ref_case *c)
 {
-    double ang = rng_range(r, 0, 6.283185307179586);
-    double dist = rng_range(r, 0.5, 2.0);
+    double ang = c2d_rng_range(r, 0, 6.283185307179586);
+    double dist = c2d_rng_range(r, 0.5, 2.0);
     int i;
-    c->pa[0] = rng_range(r, -10, 10);
-    c->pa[1] = rng_range(r, -10, 10);
+    c->pa[0] = c2d_rng_range(r, -10, 10);
+    c->pa[1] = c2d_rng_range(r, -10, 10);
     c->pb[0] = c->pa[0] + dist * cos(ang);
     c->pb[1] = c->pa[1] + dist * sin(ang);
     for (i = 0; i < 2; i++) {
-        c->va[i] = rng_range(r, -10, 10);
-        c->vb[i] = rng_range(r, -10, 10);
+        c->va[i] = c2d_rng_range(r, -10, 10);
+        c->vb[i] = c2d_rng_range(r, -10, 10);
     }
-    c->ma = exp(rng_range(r, log(0.1), log(10)));
-    c->mb = exp(rng_range(r, log(0.1), log(10)));
-    c->has_normal = (int)(rng_next(r) & 1);
+    c->ma = exp(c2d_rng_range(r, log(0.1), log(10)));
+    c->mb = exp(c2d_rng_range(r, log(0.1), log(10)));
+    c->has_normal = (int)(c2d_rng_next(r) & 1);
     c->n[0] = c->pb[0] - c->pa[0];
     c->n[1] = c->pb[1] - c->pa[1];
     c->e = pick_restitution(r);
     /* Make it an impact more often than not: flip b's velocity if receding. */
-    if ((c->vb[0] - c->va[0]) * c->n[0] + (c->vb[1] - c->va[1]) * c->n[1] > 0 && (rng_next(r) % 8) != 0) {
+    if ((c->vb[0] - c->va[0]) * c->n[0] + (c->vb[1] - c->va[1]) * c->n[1] > 0 && (c2d_rng_next(r) % 8) != 0) {
         c->vb[0] = -c->vb[0];
         c->vb[1] = -c->vb[1];
         c->va[0] = -c->va[0];
@@ -51,19 +38,19 @@ void gen_plain(rng *r, ref_case *c)
     }
 }
 
-double gen_magnitude(rng *r, int kmin, int kmax, int prec)
+double gen_magnitude(c2d_rng *r, int kmin, int kmax, int prec)
 {
-    int k = kmin + (int)(rng_next(r) % (uint64_t)(kmax - kmin + 1));
-    double m = 1.0 + rng_unit(r);
+    int k = kmin + (int)(c2d_rng_next(r) % (uint64_t)(kmax - kmin + 1));
+    double m = 1.0 + c2d_rng_unit(r);
     double v = ldexp(m, k);
     /* round to prec bits (also handles the subnormal range of the format) */
     if (prec < 53) v = (double)(float)v;
-    return (rng_next(r) & 1) ? -v : v;
+    return (c2d_rng_next(r) & 1) ? -v : v;
 }
 
-static double gen_field(rng *r, int prec, int emin, int emax)
+static double gen_field(c2d_rng *r, int prec, int emin, int emax)
 {
-    uint64_t k = rng_next(r) % 16;
+    uint64_t k = c2d_rng_next(r) % 16;
     int sub = emin - prec + 1; /* smallest subnormal exponent */
     if (k == 0) return 0.0;
     if (k < 4) return gen_magnitude(r, -4, 4, prec);          /* moderate */
@@ -72,14 +59,14 @@ static double gen_field(rng *r, int prec, int emin, int emax)
     return gen_magnitude(r, sub, emax - 1, prec);              /* anywhere */
 }
 
-static double gen_mass(rng *r, int prec, int emin, int emax)
+static double gen_mass(c2d_rng *r, int prec, int emin, int emax)
 {
-    uint64_t k = rng_next(r) % 10;
+    uint64_t k = c2d_rng_next(r) % 10;
     if (k == 0) return INFINITY;
     return fabs(gen_field(r, prec, emin, emax)) + (k == 1 ? ldexp(1.0, emin - prec + 1) : 0.0);
 }
 
-void gen_extreme(rng *r, ref_case *c, int prec, int emin, int emax)
+void gen_extreme(c2d_rng *r, ref_case *c, int prec, int emin, int emax)
 {
     int i;
     for (i = 0; i < 2; i++) {
@@ -93,11 +80,11 @@ void gen_extreme(rng *r, ref_case *c, int prec, int emin, int emax)
         c->ma = gen_mass(r, prec, emin, emax);
         c->mb = gen_mass(r, prec, emin, emax);
     } while (c->ma == 0 || c->mb == 0 || (isinf(c->ma) && isinf(c->mb)));
-    c->has_normal = (int)(rng_next(r) & 1);
+    c->has_normal = (int)(c2d_rng_next(r) & 1);
     c->e = pick_restitution(r);
     if (prec < 53) c->e = (double)(float)c->e;
     /* Approach more often than not (otherwise half the cases are trivial). */
-    if ((rng_next(r) % 4) != 0) {
+    if ((c2d_rng_next(r) % 4) != 0) {
         double nx = c->has_normal ? c->n[0] : c->pb[0] - c->pa[0];
         double ny = c->has_normal ? c->n[1] : c->pb[1] - c->pa[1];
         double d = (c->vb[0] - c->va[0]) * nx + (c->vb[1] - c->va[1]) * ny;
@@ -136,4 +123,15 @@ void case_to_bodiesf(const ref_case *c, c2d_bodyf *a, c2d_bodyf *b)
     b->vel.x = (float)c->vb[0];
     b->vel.y = (float)c->vb[1];
     b->mass = (float)c->mb;
+}
+
+void case_to_float(ref_case *c)
+{
+    int i;
+    for (i = 0; i < 2; i++) {
+        c->pa[i] = (float)c->pa[i], c->pb[i] = (float)c->pb[i];
+        c->va[i] = (float)c->va[i], c->vb[i] = (float)c->vb[i];
+        c->n[i] = (float)c->n[i];
+    }
+    c->ma = (float)c->ma, c->mb = (float)c->mb, c->e = (float)c->e;
 }

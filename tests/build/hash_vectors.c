@@ -1,16 +1,21 @@
 /* hash_vectors.c - hash the bits of every output and status of the library
- * over a fixed, generated set of cases, for tests/determinism.sh.
+ * over a fixed, generated set of cases, for tests/build/determinism.sh.
  *
- * Standalone on purpose (no GMP, no cmocka): it is compiled many times, by
- * gcc and clang at several optimisation levels, and must be cheap to build.
- * The cases come from a fixed splitmix64 stream: unit-scale scenes, grazing
- * impacts, whole-range extremes (every binade, subnormals, zeros, NaN, Inf,
- * mass ratios up to the full range, immovable bodies), and Q16.16 scenes;
- * each case runs through every entry point (double, float, Q16.16, time of
- * impact, and the batch kernels over the whole set).
+ * Standalone on purpose (no GMP, no cmocka; the shared helper of
+ * tests/harness/ for the batch arrays): it is compiled once, with gcc -O2,
+ * and linked against the library built by gcc and clang at several
+ * optimisation levels.
+ * The cases come from a fixed splitmix64 stream (referee/rng.h, header-only):
+ * unit-scale scenes, grazing impacts, whole-range extremes (every binade,
+ * subnormals, zeros, NaN, Inf, mass ratios up to the full range, immovable
+ * bodies), and Q16.16 scenes; each case runs through every entry point
+ * (double, float, Q16.16, time of impact, and the batch kernels over the
+ * whole set).
  * Usage: hash_vectors [COUNT [DUMP]]  prints "hash_vectors: COUNT cases,
  * hash H"; DUMP receives the raw bytes hashed, to locate differences (cmp -l). */
 #include "collide2d.h"
+#include "harness.h"
+#include "rng.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -25,15 +30,9 @@ typedef struct scene {
     double e, radius;
 } scene;
 
-static uint64_t rng_state = 0x2545F4914F6CDD1Dull;
+static c2d_rng rng = {0x2545F4914F6CDD1Dull};
 
-static uint64_t next(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
+static uint64_t next(void) { return c2d_rng_next(&rng); }
 
 static double from_bits(uint64_t u)
 {
@@ -44,7 +43,7 @@ static double from_bits(uint64_t u)
 
 /* Uniform in [lo, hi): only + - * on exactly produced values, so the inputs
  * themselves are the same bits whatever the compiler does. */
-static double uniform(double lo, double hi) { return lo + (hi - lo) * ((double)(next() >> 11) * 0x1p-53); }
+static double uniform(double lo, double hi) { return c2d_rng_range(&rng, lo, hi); }
 
 /* Any finite double, exponent uniform over the whole range (subnormals
  * included), or occasionally a special value. */
@@ -214,12 +213,15 @@ static void run_fixed(const scene *s)
     mix(&t, sizeof t);
 }
 
-/* The batch entry points over the whole set, one restitution per call. */
+/* The batch entry points over the whole set, one restitution per call:
+ * statuses, then the four velocity arrays in c2d_pairs' order. */
 static void run_batches(const scene *set, size_t count)
 {
-    double *d = malloc(10 * count * sizeof *d);
-    float *f = malloc(10 * count * sizeof *f);
+    double *d = malloc(C2D_SOA_FIELDS * count * sizeof *d);
+    float *f = malloc(C2D_SOA_FIELDS * count * sizeof *f);
     c2d_status *st = malloc(count * sizeof *st);
+    c2d_soa s;
+    c2d_soaf sf;
     c2d_pairs p;
     c2d_pairsf pf;
     size_t i, k;
@@ -227,24 +229,21 @@ static void run_batches(const scene *set, size_t count)
         fprintf(stderr, "hash_vectors: out of memory\n");
         exit(2);
     }
+    s = c2d_soa_in(d, count, st);
+    sf = c2d_soa_inf(f, count, st);
+    p = c2d_soa_pairs(&s);
+    pf = c2d_soa_pairsf(&sf);
     for (i = 0; i < count; i++) {
-        const double v[10] = {set[i].a.pos.x, set[i].a.pos.y, set[i].b.pos.x, set[i].b.pos.y, set[i].a.vel.x,
-                              set[i].a.vel.y, set[i].b.vel.x, set[i].b.vel.y, set[i].a.mass, set[i].b.mass};
-        for (k = 0; k < 10; k++) {
-            d[k * count + i] = v[k];
-            f[k * count + i] = (float)v[k];
-        }
+        const c2d_bodyf a = to_float(&set[i].a), b = to_float(&set[i].b);
+        c2d_soa_put(&s, i, &set[i].a, &set[i].b);
+        c2d_soa_putf(&sf, i, &a, &b);
     }
-    p.pos_ax = d, p.pos_ay = d + count, p.pos_bx = d + 2 * count, p.pos_by = d + 3 * count;
-    p.vel_ax = d + 4 * count, p.vel_ay = d + 5 * count, p.vel_bx = d + 6 * count, p.vel_by = d + 7 * count;
-    p.mass_a = d + 8 * count, p.mass_b = d + 9 * count;
-    pf.pos_ax = f, pf.pos_ay = f + count, pf.pos_bx = f + 2 * count, pf.pos_by = f + 3 * count;
-    pf.vel_ax = f + 4 * count, pf.vel_ay = f + 5 * count, pf.vel_bx = f + 6 * count, pf.vel_by = f + 7 * count;
-    pf.mass_a = f + 8 * count, pf.mass_b = f + 9 * count;
     k = c2d_collide_batch(&p, count, 0.9, st);
-    mix(&k, sizeof k), mix(st, count * sizeof *st), mix(d + 4 * count, 4 * count * sizeof *d);
+    mix(&k, sizeof k), mix(st, count * sizeof *st);
+    for (i = C2D_SOA_VEL_AX; i <= C2D_SOA_VEL_BY; i++) mix(s.field[i], count * sizeof *d);
     k = c2d_collide_batchf(&pf, count, 0.9f, st);
-    mix(&k, sizeof k), mix(st, count * sizeof *st), mix(f + 4 * count, 4 * count * sizeof *f);
+    mix(&k, sizeof k), mix(st, count * sizeof *st);
+    for (i = C2D_SOA_VEL_AX; i <= C2D_SOA_VEL_BY; i++) mix(sf.field[i], count * sizeof *f);
     free(d);
     free(f);
     free(st);

@@ -6,8 +6,8 @@ set -u
 bin=$1
 out=${2:-build/valgrind}
 mkdir -p "$out"
-pass=0
-fail=0
+. tests/harness/tally.sh
+c2d_tally_name=valgrind
 vg() { # name expected-exit args...  (valgrind's own failure exit: 99)
     name=$1
     want=$2
@@ -16,11 +16,10 @@ vg() { # name expected-exit args...  (valgrind's own failure exit: 99)
         --log-file="$out/$name.log" "$bin" "$@" >"$out/$name.out" 2>"$out/$name.err"
     rc=$?
     if [ "$rc" -eq "$want" ]; then
-        pass=$((pass + 1))
+        c2d_passed
         echo "valgrind: $name: $(grep -h 'ERROR SUMMARY' "$out/$name.log" | sed 's/^==[0-9]*== //')"
     else
-        fail=$((fail + 1))
-        echo "valgrind: FAILED $name: exit $rc, want $want (log: $out/$name.log)" >&2
+        c2d_failed "$name: exit $rc, want $want (log: $out/$name.log)"
         grep -h -A12 'Invalid\|uninitialised\|definitely lost\|ERROR SUMMARY' "$out/$name.log" | head -40 >&2
         cat "$out/$name.err" >&2
     fi
@@ -30,5 +29,4 @@ vg break-box2d 0 --headless --response box2d --seconds 2 --json
 vg gas 0 --headless --scene gas --balls 200 --seconds 1 --json
 # a refused flag: exit 2 with a message, and still nothing leaked or misread
 vg bad-flag 2 --headless --seconds -1
-echo "valgrind: $pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+c2d_summary

@@ -1,6 +1,6 @@
-# tests/lint.mk - static analysis of lib/ and demo/, included by the
+# tests/build/lint.mk - static analysis of lib/ and demo/, included by the
 # top-level Makefile.  Configurations: .clang-tidy (repo root) and
-# tests/cppcheck-suppressions.txt, each entry with its reason.
+# tests/build/cppcheck-suppressions.txt, each entry with its reason.
 #   make lint-tidy       clang-tidy-14, warnings are errors
 #   make lint-cppcheck   cppcheck 2.10, any finding is an error
 # lib/ is checked as written, one translation unit at a time (each
@@ -8,7 +8,7 @@
 # The demo part runs only when demo/*.cpp exist; it is C++17 against Debian's
 # Box2D and SDL2 headers, taken as system headers (their own macros are
 # not ours to lint).  Each prints "lint-NAME: N passed, N failed" (one per
-# source file).
+# source file; tests/harness/tally.sh).
 
 LINT_DEPS := clang-tidy-14 cppcheck
 LINT_DEMO_DEPS := libbox2d-dev libsdl2-dev libpng-dev
@@ -23,28 +23,26 @@ lint-deps:
 	@sh scripts/deps.sh $(LINT_DEPS) $(if $(LINT_DEMO_SRC),$(LINT_DEMO_DEPS))
 
 lint-tidy: lint-deps
-	@pass=0; fail=0; \
+	@. tests/harness/tally.sh; c2d_tally_name=lint-tidy; \
 	for f in $(LIB_SRC) $(LINT_DEMO_SRC); do \
 	  case $$f in *.cpp) flags="$(LINT_DEMO_FLAGS)";; *) flags="$(LINT_LIB_FLAGS)";; esac; \
-	  if clang-tidy-14 --quiet $$f -- $$flags; then pass=$$((pass + 1)); \
-	  else fail=$$((fail + 1)); echo "lint-tidy: FAILED $$f"; fi; \
+	  c2d_check $$f clang-tidy-14 --quiet $$f -- $$flags; \
 	done; \
-	echo "lint-tidy: $$pass passed, $$fail failed"; [ $$fail -eq 0 ]
+	c2d_summary
 
 CPPCHECK := cppcheck --enable=warning,style,performance,portability --inline-suppr \
-  --error-exitcode=1 -q --suppressions-list=tests/cppcheck-suppressions.txt
+  --error-exitcode=1 -q --suppressions-list=tests/build/cppcheck-suppressions.txt
 
 lint-cppcheck: lint-deps
 	@mkdir -p $(LINT_DIR)
-	@pass=0; fail=0; \
-	run() { if "$$@"; then pass=$$((pass + 1)); else fail=$$((fail + 1)); echo "lint-cppcheck: FAILED $$*"; fi; }; \
+	@. tests/harness/tally.sh; c2d_tally_name=lint-cppcheck; \
 	for f in $(LIB_SRC); do \
-	  run $(CPPCHECK) --std=c99 --language=c -Iinclude -Ilib -UC2D_HEADER $$f; \
+	  c2d_check $$f $(CPPCHECK) --std=c99 --language=c -Iinclude -Ilib -UC2D_HEADER $$f; \
 	done; \
 	for f in $(LINT_DEMO_SRC); do \
-	  run $(CPPCHECK) --std=c++17 --language=c++ -Iinclude -I/usr/include/SDL2 -D_REENTRANT $$f; \
+	  c2d_check $$f $(CPPCHECK) --std=c++17 --language=c++ -Iinclude -I/usr/include/SDL2 -D_REENTRANT $$f; \
 	done; \
-	echo "lint-cppcheck: $$pass passed, $$fail failed"; [ $$fail -eq 0 ]
+	c2d_summary
 
 LINT_TARGETS += lint-tidy lint-cppcheck
 TEST_TARGETS += lint-tidy lint-cppcheck

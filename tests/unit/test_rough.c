@@ -26,15 +26,15 @@ static void diskf_from(c2d_diskf *d, const ref_disk *r)
 /* A unit-scale contact: radii 0.1..1 touching (to rounding) along a random
  * line, speeds and spin x radius up to 10, inertia k m r^2 with k in
  * [0.1, 1] or INFINITY, restitution, friction and beta all over their range. */
-static void gen_rough(rng *r, ref_rough_case *c)
+static void gen_rough(c2d_rng *r, ref_rough_case *c)
 {
     ref_case base;
-    double ang = rng_range(r, 0, 6.283185307179586);
+    double ang = c2d_rng_range(r, 0, 6.283185307179586);
     int i;
     ref_disk *d[2];
     gen_plain(r, &base);
     d[0] = &c->a, d[1] = &c->b;
-    c->a.radius = rng_range(r, 0.1, 1), c->b.radius = rng_range(r, 0.1, 1);
+    c->a.radius = c2d_rng_range(r, 0.1, 1), c->b.radius = c2d_rng_range(r, 0.1, 1);
     c->a.pos[0] = base.pa[0], c->a.pos[1] = base.pa[1];
     c->b.pos[0] = base.pa[0] + (c->a.radius + c->b.radius) * cos(ang);
     c->b.pos[1] = base.pa[1] + (c->a.radius + c->b.radius) * sin(ang);
@@ -44,21 +44,21 @@ static void gen_rough(rng *r, ref_rough_case *c)
     }
     c->a.mass = base.ma, c->b.mass = base.mb;
     for (i = 0; i < 2; i++) {
-        d[i]->spin = rng_range(r, -10, 10) / d[i]->radius;
-        d[i]->inertia = rng_next(r) % 8 == 0 ? INFINITY : rng_range(r, 0.1, 1) * d[i]->mass * d[i]->radius * d[i]->radius;
+        d[i]->spin = c2d_rng_range(r, -10, 10) / d[i]->radius;
+        d[i]->inertia = c2d_rng_next(r) % 8 == 0 ? INFINITY : c2d_rng_range(r, 0.1, 1) * d[i]->mass * d[i]->radius * d[i]->radius;
     }
-    if (rng_next(r) % 10 == 0) c->b.mass = INFINITY;
-    c->has_normal = (int)(rng_next(r) & 1);
+    if (c2d_rng_next(r) % 10 == 0) c->b.mass = INFINITY;
+    c->has_normal = (int)(c2d_rng_next(r) & 1);
     c->e = base.e;
-    c->mu = kMu[rng_next(r) % 5];
-    c->beta = rng_next(r) % 4 == 0 ? 1.0 : rng_range(r, -1, 1);
+    c->mu = kMu[c2d_rng_next(r) % 5];
+    c->beta = c2d_rng_next(r) % 4 == 0 ? 1.0 : c2d_rng_range(r, -1, 1);
     /* approach more often than not */
     if ((c->b.vel[0] - c->a.vel[0]) * c->n[0] + (c->b.vel[1] - c->a.vel[1]) * c->n[1] > 0)
         for (i = 0; i < 2; i++) c->a.vel[i] = -c->a.vel[i], c->b.vel[i] = -c->b.vel[i];
 }
 
 /* The normal part anywhere in the range (gen_extreme), spins and radii too. */
-static void gen_rough_extreme(rng *r, ref_rough_case *c, int prec, int emin, int emax)
+static void gen_rough_extreme(c2d_rng *r, ref_rough_case *c, int prec, int emin, int emax)
 {
     ref_case base;
     int i;
@@ -70,12 +70,12 @@ static void gen_rough_extreme(rng *r, ref_rough_case *c, int prec, int emin, int
     c->a.mass = base.ma, c->b.mass = base.mb, c->has_normal = base.has_normal, c->e = base.e;
     c->a.spin = gen_magnitude(r, emin - prec + 1, emax - 4, prec);
     c->b.spin = gen_magnitude(r, emin - prec + 1, emax - 4, prec);
-    c->a.radius = fabs(gen_magnitude(r, emin, emax - 4, prec)) * (rng_next(r) % 8 != 0);
-    c->b.radius = fabs(gen_magnitude(r, emin, emax - 4, prec)) * (rng_next(r) % 8 != 0);
-    c->a.inertia = rng_next(r) % 6 == 0 ? INFINITY : fabs(gen_magnitude(r, emin, emax - 1, prec));
-    c->b.inertia = rng_next(r) % 6 == 0 ? INFINITY : fabs(gen_magnitude(r, emin, emax - 1, prec));
-    c->mu = kMu[rng_next(r) % 5];
-    c->beta = rng_next(r) % 3 == 0 ? 1.0 : (prec < 53 ? (double)(float)rng_range(r, -1, 1) : rng_range(r, -1, 1));
+    c->a.radius = fabs(gen_magnitude(r, emin, emax - 4, prec)) * (c2d_rng_next(r) % 8 != 0);
+    c->b.radius = fabs(gen_magnitude(r, emin, emax - 4, prec)) * (c2d_rng_next(r) % 8 != 0);
+    c->a.inertia = c2d_rng_next(r) % 6 == 0 ? INFINITY : fabs(gen_magnitude(r, emin, emax - 1, prec));
+    c->b.inertia = c2d_rng_next(r) % 6 == 0 ? INFINITY : fabs(gen_magnitude(r, emin, emax - 1, prec));
+    c->mu = kMu[c2d_rng_next(r) % 5];
+    c->beta = c2d_rng_next(r) % 3 == 0 ? 1.0 : (prec < 53 ? (double)(float)c2d_rng_range(r, -1, 1) : c2d_rng_range(r, -1, 1));
 }
 
 static c2d_status run_double(const ref_rough_case *c, double out[6])
@@ -137,7 +137,7 @@ static void run_against_referee(int is_float, int extreme, uint64_t seed)
     const double limit = is_float ? FLT_MAX : DBL_MAX;
     double worst = 0, sum = 0;
     int i, ok = 0;
-    rng r;
+    c2d_rng r;
     ref_rough_answer ans;
     r.s = seed;
     ref_rough_init(&ans);
@@ -216,7 +216,7 @@ static c2d_status smooth_float(const ref_rough_case *c, double out[4])
 /* mu = 0 or beta = -1: c2d_collide's velocities bit for bit, spins kept. */
 static void test_smooth_contacts_are_c2d_collide_bit_for_bit(void **state)
 {
-    rng r = {305};
+    c2d_rng r = {305};
     int i, k;
     (void)state;
     for (i = 0; i < 2 * CASES; i++) {
@@ -244,7 +244,7 @@ static void test_smooth_contacts_are_c2d_collide_bit_for_bit(void **state)
  * energy never gained, and kept at e = beta = 1. */
 static void test_momenta_are_conserved_and_energy_never_grows(void **state)
 {
-    rng r = {306};
+    c2d_rng r = {306};
     int i, kept = 0;
     (void)state;
     for (i = 0; i < CASES; i++) {
@@ -253,11 +253,11 @@ static void test_momenta_are_conserved_and_energy_never_grows(void **state)
         gen_rough(&r, &c);
         /* touching exactly: |d| = 5/8 = ra + rb, a 3-4-5 triangle */
         c.a.radius = 0.25, c.b.radius = 0.375;
-        ang = (double)(rng_next(&r) % 4);
+        ang = (double)(c2d_rng_next(&r) % 4);
         c.b.pos[0] = c.a.pos[0] + (ang < 2 ? 0.375 : -0.5) * (ang == 1 ? -1 : 1);
         c.b.pos[1] = c.a.pos[1] + (ang < 2 ? 0.5 : 0.375);
         c.has_normal = 0;
-        c.a.mass = fmin(c.a.mass, 1e3), c.b.mass = 1 + rng_unit(&r);
+        c.a.mass = fmin(c.a.mass, 1e3), c.b.mass = 1 + c2d_rng_unit(&r);
         c.a.inertia = 0.4 * c.a.mass * 0.0625, c.b.inertia = 0.5 * c.b.mass * 0.140625;
         if (i % 3 == 0) c.e = 1, c.beta = 1, c.mu = INFINITY;
         ref_rough_invariants(&c, NULL, before);
@@ -397,7 +397,7 @@ static void test_rough_gas_reaches_equipartition(void **state)
 {
     static gas g;
     const c2d_surface rough = {1, INFINITY, 1};
-    rng r = {307};
+    c2d_rng r = {307};
     double e0, trans, rot, sum_t = 0, sum_r = 0;
     long events = 0, samples = 0;
     int i, j;
@@ -405,7 +405,7 @@ static void test_rough_gas_reaches_equipartition(void **state)
     for (i = 0; i < GAS_N; i++) {
         c2d_disk *d = &g.d[i];
         d->pos.x = 0.0625 + 0.125 * (i % 8), d->pos.y = 0.0625 + 0.125 * (i / 8);
-        d->vel.x = rng_range(&r, -1, 1), d->vel.y = rng_range(&r, -1, 1);
+        d->vel.x = c2d_rng_range(&r, -1, 1), d->vel.y = c2d_rng_range(&r, -1, 1);
         d->spin = 0, d->mass = 1, d->radius = GAS_RADIUS, d->inertia = 0.5 * GAS_RADIUS * GAS_RADIUS;
     }
     gas_energy(&g, &trans, &rot);

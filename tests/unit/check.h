@@ -13,8 +13,9 @@
 #include <string.h>
 
 #include "collide2d.h"
+#include "cases.h"
+#include "harness.h"
 #include "referee.h"
-#include "support.h"
 
 /* |got - want| <= tol, printing both on failure (cmocka has no double compare). */
 #define assert_close(got, want, tol)                                                          \

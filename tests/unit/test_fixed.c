@@ -9,19 +9,19 @@
 static double q2d(c2d_fixed x) { return x / 65536.0; }
 static c2d_fixed d2q(double x) { return (c2d_fixed)lrint(x * 65536.0); }
 
-static void gen_fixed(rng *r, c2d_bodyx *a, c2d_bodyx *b, c2d_fixed *e, double scale)
+static void gen_fixed(c2d_rng *r, c2d_bodyx *a, c2d_bodyx *b, c2d_fixed *e, double scale)
 {
-    double ang = rng_range(r, 0, 6.283185307179586), dist = rng_range(r, 0.05, 2) * scale;
-    a->pos.x = d2q(rng_range(r, -100, 100));
-    a->pos.y = d2q(rng_range(r, -100, 100));
+    double ang = c2d_rng_range(r, 0, 6.283185307179586), dist = c2d_rng_range(r, 0.05, 2) * scale;
+    a->pos.x = d2q(c2d_rng_range(r, -100, 100));
+    a->pos.y = d2q(c2d_rng_range(r, -100, 100));
     b->pos.x = a->pos.x + d2q(dist * cos(ang));
     b->pos.y = a->pos.y + d2q(dist * sin(ang));
-    a->vel.x = d2q(rng_range(r, -1, 1) * scale), a->vel.y = d2q(rng_range(r, -1, 1) * scale);
-    b->vel.x = d2q(rng_range(r, -1, 1) * scale), b->vel.y = d2q(rng_range(r, -1, 1) * scale);
-    a->mass = rng_next(r) % 16 == 0 ? C2D_FIXED_INFINITE_MASS : d2q(exp(rng_range(r, log(0.01), log(1000))));
-    b->mass = a->mass == C2D_FIXED_INFINITE_MASS || rng_next(r) % 16 ? d2q(exp(rng_range(r, log(0.01), log(1000))))
+    a->vel.x = d2q(c2d_rng_range(r, -1, 1) * scale), a->vel.y = d2q(c2d_rng_range(r, -1, 1) * scale);
+    b->vel.x = d2q(c2d_rng_range(r, -1, 1) * scale), b->vel.y = d2q(c2d_rng_range(r, -1, 1) * scale);
+    a->mass = c2d_rng_next(r) % 16 == 0 ? C2D_FIXED_INFINITE_MASS : d2q(exp(c2d_rng_range(r, log(0.01), log(1000))));
+    b->mass = a->mass == C2D_FIXED_INFINITE_MASS || c2d_rng_next(r) % 16 ? d2q(exp(c2d_rng_range(r, log(0.01), log(1000))))
                                                                      : C2D_FIXED_INFINITE_MASS;
-    *e = rng_next(r) % 3 == 0 ? C2D_FIXED_ONE : (c2d_fixed)(rng_next(r) % 65537);
+    *e = c2d_rng_next(r) % 3 == 0 ? C2D_FIXED_ONE : (c2d_fixed)(c2d_rng_next(r) % 65537);
 }
 
 static void to_case(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed e, ref_case *c)
@@ -36,7 +36,7 @@ static void to_case(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed e, ref_cas
 
 static void run(double scale, uint64_t seed, const char *what)
 {
-    rng r;
+    c2d_rng r;
     ref_answer ans;
     int i, n_ok = 0;
     double worst = 0, worst_vs_double = 0;
@@ -152,16 +152,16 @@ static void test_fixed_refusals_match_double_semantics(void **state)
 
 static void test_fixed_time_of_impact_within_bound(void **state)
 {
-    rng r = {304};
+    c2d_rng r = {304};
     int i, hits = 0;
     (void)state;
     for (i = 0; i < CASES; i++) {
         c2d_bodyx a, b;
-        c2d_fixed e, t = -1, rad = d2q(rng_range(&r, 0.05, 3));
+        c2d_fixed e, t = -1, rad = d2q(c2d_rng_range(&r, 0.05, 3));
         ref_case c;
         double want = 0, unit = 0;
         c2d_status s, ws;
-        gen_fixed(&r, &a, &b, &e, rng_next(&r) % 2 ? 10 : 1000);
+        gen_fixed(&r, &a, &b, &e, c2d_rng_next(&r) % 2 ? 10 : 1000);
         b.pos.x = a.pos.x + (b.pos.x - a.pos.x) * 8;
         to_case(&a, &b, e, &c);
         s = c2d_time_of_impactx(&a, &b, rad, &t);

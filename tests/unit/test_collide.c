@@ -28,7 +28,7 @@ static void test_seed_45_degree_case_conserves_momentum(void **state)
 
 static void test_collide_equal_masses_swap_normal_components(void **state)
 {
-    rng r = {11};
+    c2d_rng r = {11};
     int i;
     (void)state;
     for (i = 0; i < CASES; i++) {
@@ -57,7 +57,7 @@ static void test_collide_equal_masses_swap_normal_components(void **state)
  * exact referee so the check itself adds no error. */
 static void test_collide_conserves_momentum_and_elastic_energy(void **state)
 {
-    rng r = {12};
+    c2d_rng r = {12};
     int i, n_ok = 0;
     double worst_p = 0, worst_e = 0;
     (void)state;
@@ -86,7 +86,7 @@ static void test_collide_conserves_momentum_and_elastic_energy(void **state)
 /* Newton's law: relative normal velocity after = -e x before, for any e. */
 static void test_collide_obeys_newtons_restitution_law(void **state)
 {
-    rng r = {13};
+    c2d_rng r = {13};
     int i;
     (void)state;
     for (i = 0; i < CASES; i++) {
@@ -108,7 +108,7 @@ static void test_collide_obeys_newtons_restitution_law(void **state)
 /* Swapping a and b (and flipping a given normal) mirrors the result. */
 static void test_collide_swapping_bodies_mirrors_result(void **state)
 {
-    rng r = {14};
+    c2d_rng r = {14};
     int i;
     (void)state;
     for (i = 0; i < CASES; i++) {
