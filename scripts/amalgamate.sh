@@ -39,7 +39,7 @@ template_names() {
                       if ($2 ~ /^(struct|union|enum)$/) print $3 }
         /^enum / { if ($2 ~ /^c2d_/) print $2 }
         /^ *C2D_[A-Z0-9_]+ = / { s = $0; sub(/^ */, "", s); sub(/ .*/, "", s); print s }
-        /^enum \{ *C2D_[A-Z0-9_]+ = / { s = $0; sub(/^enum \{ */, "", s); sub(/ .*/, "", s); print s }' |
+        /^enum \{/ { s = $0; while (match(s, /C2D_[A-Z0-9_]+ =/)) { print substr(s, RSTART, RLENGTH - 2); s = substr(s, RSTART + RLENGTH) } }' |
         sort -u
 }
 
