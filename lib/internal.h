@@ -60,7 +60,8 @@ typedef enum c2d_verdict {
     C2D_VERDICT_SEPARATING, /* valid, not approaching */
     C2D_VERDICT_RANGE,      /* valid, a result overflows */
     C2D_VERDICT_ACCURATE,   /* valid and in the window, but d cancels: recompute d in double-double */
-    C2D_VERDICT_GENERAL     /* outside the window: validate in full and take the general path */
+    C2D_VERDICT_GENERAL,    /* outside the window: validate in full and take the general path */
+    C2D_VERDICT_AXIS        /* the normal has a zero component: correctly rounded (real_axis.h) */
 } c2d_verdict;
 
 /* "No exponent": the exponent reported for a zero vector (int is >= 16 bits;
