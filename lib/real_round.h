@@ -111,7 +111,7 @@ static void c2d_round_quotient(c2d_real *r, const c2d_xf *num, int nn, const c2d
     q = c2d_scale2(qx.m, qx.e);
     if (!(q - q == 0)) q = q > 0 ? C2D_R_MAX : -C2D_R_MAX; /* the steps decide overflow exactly */
     /* q starts within a few ulp; each step moves one ulp towards N / D. */
-    for (step = 0; step < 8 && decided == 0 && q - q == 0; step++) {
+    for (step = 0; step < 8 && decided == 0; step++) {
         const int r_sign = c2d_remainder_sign(num, nn, den, nd, q);
         if (r_sign == 0) {
             decided = 1; /* exact */
@@ -127,6 +127,7 @@ static void c2d_round_quotient(c2d_real *r, const c2d_xf *num, int nn, const c2d
                 decided = 1;
             } else {
                 q = q_next;
+                if (!(q - q == 0)) decided = 1; /* Inf: past the largest finite value */
             }
         }
     }
