@@ -165,10 +165,10 @@ static size_t c2d_real_collide_batch(const c2d_real_pairs *p, size_t count, c2d_
     for (base = 0; base < count; base += C2D_BLOCK) {
         c2d_real_bits lane[C2D_BLOCK];
         const size_t width = c2d_block_width(count - base);
-        size_t j;
         if (width == (size_t)C2D_BLOCK && e_ok != 0) {
             c2d_batch_kernel(p, base, e1, lane);
         } else {
+            size_t j;
             for (j = 0; j < width; j++) lane[j] = (c2d_real_bits)C2D_LANE_SCALAR;
         }
         done += c2d_batch_finish_block(p, base, width, lane, restitution, status);
