@@ -12,6 +12,7 @@ CXXFLAGS ?= -O2
 PREFIX ?= /usr/local
 LIBDIR ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
+MANDIR ?= $(PREFIX)/share/man
 DESTDIR ?=
 
 VERSION_MAJOR := $(shell sed -n 's/^\#define C2D_VERSION_MAJOR \([0-9]*\)/\1/p' include/collide2d.h)
@@ -42,6 +43,7 @@ SONAME := libcollide2d.so.$(VERSION_MAJOR)
 SHARED := $(B)/libcollide2d.so.$(VERSION)
 AMALGAMATION := $(B)/collide2d_all.c
 
+FORCE:
 .PHONY: all lib amalgamate test test-unit check-deps-test check-vectors check-build vectors install uninstall clean demo play bench cross test-mcu lint fuzz
 all: lib
 lib: $(STATIC) $(B)/libcollide2d.so $(B)/collide2d.pc
@@ -65,12 +67,21 @@ $(B)/libcollide2d.so: $(SHARED)
 	ln -sf libcollide2d.so.$(VERSION) $(B)/$(SONAME)
 	ln -sf libcollide2d.so.$(VERSION) $@
 
-$(B)/collide2d.pc: Makefile $(LIB_HDR)
+# collide2d.pc names libdir and includedir relative to ${prefix} when they
+# lie under it (so pkg-config --define-prefix works on a moved tree), and is
+# rebuilt whenever PREFIX, LIBDIR or INCLUDEDIR change: the stamp holds their
+# values and is rewritten only when they differ.
+pc_dir = $(if $(filter $(PREFIX)/%,$(1)),$${prefix}/$(patsubst $(PREFIX)/%,%,$(1)),$(1))
+PC_VARS := 'prefix=$(PREFIX)' 'libdir=$(call pc_dir,$(LIBDIR))' 'includedir=$(call pc_dir,$(INCLUDEDIR))'
+$(B)/collide2d.pc.vars: FORCE
 	@mkdir -p $(@D)
-	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
+	@printf '%s\n' $(PC_VARS) | cmp -s - $@ || printf '%s\n' $(PC_VARS) > $@
+
+$(B)/collide2d.pc: $(B)/collide2d.pc.vars Makefile $(LIB_HDR)
+	{ cat $(B)/collide2d.pc.vars; printf '%s\n' '' \
 	  'Name: collide2d' 'Description: Exact, robust 2-D disk collisions (C99, no dependencies)' \
 	  'Version: $(VERSION)' 'Libs: -L$${libdir} -lcollide2d' 'Libs.private: -lm' \
-	  'Cflags: -I$${includedir}' > $@
+	  'Cflags: -I$${includedir}'; } > $@
 
 # The whole library as one self-contained source, for firmware trees that
 # take one .c file beside the header (scripts/amalgamate.sh).
@@ -79,19 +90,26 @@ $(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(wildcard lib/*.h)
 	@mkdir -p $(@D)
 	sh scripts/amalgamate.sh $@
 
+# Directories install creates are listed in build/install-dirs.txt, so
+# uninstall removes those (once empty) and no other (scripts/installdirs.sh).
+MAN_PAGES := $(wildcard man/*.3)
+INSTALL_DIRS = $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR) $(if $(MAN_PAGES),$(DESTDIR)$(MANDIR)/man3)
 install: lib
-	install -d $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR)
+	sh scripts/installdirs.sh create build/install-dirs.txt $(INSTALL_DIRS)
 	install -m 644 $(LIB_HDR) $(DESTDIR)$(INCLUDEDIR)/collide2d.h
 	install -m 644 $(STATIC) $(DESTDIR)$(LIBDIR)/libcollide2d.a
 	install -m 755 $(SHARED) $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)
 	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcollide2d.so
 	install -m 644 $(B)/collide2d.pc $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
+	$(if $(MAN_PAGES),install -m 644 $(MAN_PAGES) $(DESTDIR)$(MANDIR)/man3)
 
 uninstall:
 	rm -f $(DESTDIR)$(INCLUDEDIR)/collide2d.h $(DESTDIR)$(LIBDIR)/libcollide2d.a \
 	  $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME) \
-	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
+	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc \
+	  $(addprefix $(DESTDIR)$(MANDIR)/man3/,$(notdir $(MAN_PAGES)))
+	sh scripts/installdirs.sh remove build/install-dirs.txt $(INSTALL_DIRS)
 
 clean:
 	rm -rf build
