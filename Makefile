@@ -67,21 +67,18 @@ $(B)/libcollide2d.so: $(SHARED)
 	ln -sf libcollide2d.so.$(VERSION) $(B)/$(SONAME)
 	ln -sf libcollide2d.so.$(VERSION) $@
 
-# collide2d.pc names libdir and includedir relative to ${prefix} when they
-# lie under it (so pkg-config --define-prefix works on a moved tree), and is
-# rebuilt whenever PREFIX, LIBDIR or INCLUDEDIR change: the stamp holds their
-# values and is rewritten only when they differ.
+# collide2d.pc (from collide2d.pc.in, as CMake writes it) names libdir and
+# includedir relative to ${prefix} when they lie under it, so pkg-config
+# --define-prefix works on a moved tree.  Regenerated on every make and
+# replaced only when it differs: a change of PREFIX, LIBDIR or INCLUDEDIR
+# rebuilds it, an unchanged one keeps its time stamp.
 pc_dir = $(if $(filter $(PREFIX)/%,$(1)),$${prefix}/$(patsubst $(PREFIX)/%,%,$(1)),$(1))
-PC_VARS := 'prefix=$(PREFIX)' 'libdir=$(call pc_dir,$(LIBDIR))' 'includedir=$(call pc_dir,$(INCLUDEDIR))'
-$(B)/collide2d.pc.vars: FORCE
+$(B)/collide2d.pc: collide2d.pc.in FORCE
 	@mkdir -p $(@D)
-	@printf '%s\n' $(PC_VARS) | cmp -s - $@ || printf '%s\n' $(PC_VARS) > $@
-
-$(B)/collide2d.pc: $(B)/collide2d.pc.vars Makefile $(LIB_HDR)
-	{ cat $(B)/collide2d.pc.vars; printf '%s\n' '' \
-	  'Name: collide2d' 'Description: Exact, robust 2-D disk collisions (C99, no dependencies)' \
-	  'Version: $(VERSION)' 'Libs: -L$${libdir} -lcollide2d' 'Libs.private: -lm' \
-	  'Cflags: -I$${includedir}'; } > $@
+	@sed -e 's|@C2D_PC_PREFIX@|$(PREFIX)|' -e 's|@C2D_PC_LIBDIR@|$(call pc_dir,$(LIBDIR))|' \
+	  -e 's|@C2D_PC_INCLUDEDIR@|$(call pc_dir,$(INCLUDEDIR))|' -e 's|@C2D_PC_VERSION@|$(VERSION)|' \
+	  -e 's|@C2D_PC_CFLAGS@||' collide2d.pc.in > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@ && echo "wrote $@ (prefix $(PREFIX))"; fi
 
 # The whole library as one self-contained source, for firmware trees that
 # take one .c file beside the header (scripts/amalgamate.sh).
@@ -166,6 +163,7 @@ LINT_TARGETS :=
 -include tests/mcu/mcu.mk
 -include tests/fuzz/fuzz.mk
 -include tests/lint.mk
+-include tests/consumers/consumers.mk
 
 # Static analysis: fragments append to LINT_TARGETS.
 lint: $(LINT_TARGETS)
