@@ -164,6 +164,7 @@ LINT_TARGETS :=
 -include tests/fuzz/fuzz.mk
 -include tests/lint.mk
 -include tests/consumers/consumers.mk
+-include examples/examples.mk
 
 # Static analysis: fragments append to LINT_TARGETS.
 lint: $(LINT_TARGETS)
