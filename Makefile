@@ -165,6 +165,7 @@ LINT_TARGETS :=
 -include tests/lint.mk
 -include tests/consumers/consumers.mk
 -include examples/examples.mk
+-include python/python.mk
 
 # Static analysis: fragments append to LINT_TARGETS.
 lint: $(LINT_TARGETS)
