@@ -90,7 +90,8 @@ $(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(wildcard lib/*.h)
 # Directories install creates are listed in build/install-dirs.txt, so
 # uninstall removes those (once empty) and no other (scripts/installdirs.sh).
 MAN_PAGES := $(wildcard man/*.3)
-INSTALL_DIRS = $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR) $(if $(MAN_PAGES),$(DESTDIR)$(MANDIR)/man3)
+MAN3 = $(DESTDIR)$(MANDIR)/man3
+INSTALL_DIRS = $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR) $(MAN3)
 install: lib
 	sh scripts/installdirs.sh create build/install-dirs.txt $(INSTALL_DIRS)
 	install -m 644 $(LIB_HDR) $(DESTDIR)$(INCLUDEDIR)/collide2d.h
@@ -99,13 +100,15 @@ install: lib
 	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcollide2d.so
 	install -m 644 $(B)/collide2d.pc $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
-	$(if $(MAN_PAGES),install -m 644 $(MAN_PAGES) $(DESTDIR)$(MANDIR)/man3)
+	install -m 644 $(MAN_PAGES) $(MAN3)
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do ln -sf $$page $(MAN3)/$$name || exit 1; done
 
 uninstall:
 	rm -f $(DESTDIR)$(INCLUDEDIR)/collide2d.h $(DESTDIR)$(LIBDIR)/libcollide2d.a \
 	  $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME) \
 	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc \
-	  $(addprefix $(DESTDIR)$(MANDIR)/man3/,$(notdir $(MAN_PAGES)))
+	  $(addprefix $(MAN3)/,$(notdir $(MAN_PAGES)))
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do rm -f $(MAN3)/$$name; done
 	sh scripts/installdirs.sh remove build/install-dirs.txt $(INSTALL_DIRS)
 
 clean:
@@ -166,6 +169,7 @@ LINT_TARGETS :=
 -include tests/consumers/consumers.mk
 -include examples/examples.mk
 -include python/python.mk
+-include man/man.mk
 
 # Static analysis: fragments append to LINT_TARGETS.
 lint: $(LINT_TARGETS)
