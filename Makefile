@@ -115,40 +115,49 @@ clean:
 	rm -rf build
 
 # ---------------------------------------------------------------- unit tests
-# One cmocka program per unit (tests/test_*.c).  The exact referee
-# (tests/referee.c, GMP rationals + MPFR) and the shared vector table
-# (tests/vectors.c, also run on emulated MCUs) are linked into each.
+# One cmocka program per unit (tests/unit/test_*.c, tests/vectors/test_*.c).
+# The exact referee and the case generators (referee/, GMP rationals + MPFR),
+# the shared test helper (tests/harness/) and the shared vector table with
+# its checks (tests/vectors/, also run on emulated MCUs) are linked into each.
 TEST_DEPS := libcmocka-dev libgmp-dev libmpfr-dev pkg-config
-TEST_SRCS := $(wildcard tests/test_*.c)
-TEST_BINS := $(patsubst tests/%.c,$(B)/tests/%,$(TEST_SRCS))
-TEST_SUPPORT := tests/referee.c tests/vectors.c tests/support.c tests/ref_rough.c
-TEST_SUPPORT_HDR := $(wildcard tests/*.h)
+TEST_SRCS := $(wildcard tests/unit/test_*.c tests/vectors/test_*.c)
+TEST_BINS := $(patsubst %.c,$(B)/tests/%,$(notdir $(TEST_SRCS)))
+HARNESS_SRC := $(wildcard tests/harness/*.c)
+HARNESS_HDR := $(wildcard tests/harness/*.h)
+VECTORS_SRC := tests/vectors/vectors.c $(wildcard tests/vectors/check_*.c)
+TEST_SUPPORT := referee/referee.c referee/cases.c referee/ref_rough.c $(VECTORS_SRC) $(HARNESS_SRC)
+TEST_SUPPORT_HDR := $(wildcard referee/*.h tests/unit/*.h tests/vectors/*.h) $(HARNESS_HDR)
+TEST_INC := -Ireferee -Itests/harness -Itests/unit -Itests/vectors
 
 check-deps-test:
 	@sh scripts/deps.sh $(TEST_DEPS)
 
-$(B)/tests/%: tests/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
+$(B)/tests/%: tests/unit/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
+	$(CC) $(ALL_CFLAGS) -Wno-conversion $(TEST_INC) -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
 
-$(B)/gen_vectors: tests/gen_vectors.c tests/referee.c tests/referee.h tests/vectors.h $(LIB_HDR)
+$(B)/tests/%: tests/vectors/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -std=c99 -Iinclude -Itests -o $@ tests/gen_vectors.c tests/referee.c -lmpfr -lgmp -lm
+	$(CC) $(ALL_CFLAGS) -Wno-conversion $(TEST_INC) -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
+
+$(B)/gen_vectors: tests/vectors/gen_vectors.c referee/referee.c referee/referee.h tests/vectors/vectors.h $(LIB_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -std=c99 -Iinclude -Ireferee -Itests/vectors -o $@ tests/vectors/gen_vectors.c referee/referee.c -lmpfr -lgmp -lm
 
 # Regenerate the shared vector table from the exact referee.
 vectors: check-deps-test $(B)/gen_vectors
-	$(B)/gen_vectors tests/vectors.c
+	$(B)/gen_vectors tests/vectors/vectors.c
 
 # The committed table must be exactly what the referee gives today.
 check-vectors: check-deps-test $(B)/gen_vectors
-	@$(B)/gen_vectors $(B)/vectors.c && cmp -s $(B)/vectors.c tests/vectors.c && \
+	@$(B)/gen_vectors $(B)/vectors.c && cmp -s $(B)/vectors.c tests/vectors/vectors.c && \
 	  echo "check-vectors: 1 passed, 0 failed" || \
-	  { echo "check-vectors: tests/vectors.c differs from the referee (make vectors)"; exit 1; }
+	  { echo "check-vectors: tests/vectors/vectors.c differs from the referee (make vectors)"; exit 1; }
 
 check-build: $(AMALGAMATION)
-	@sh tests/check_build.sh $(B)/check-build $(AMALGAMATION)
+	@sh tests/build/check_build.sh $(B)/check-build $(AMALGAMATION)
 
-$(B)/tests/cxx_smoke: tests/cxx_smoke.cpp $(STATIC)
+$(B)/tests/cxx_smoke: tests/unit/cxx_smoke.cpp $(STATIC)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -std=c++11 -pedantic -Wall -Wextra -Werror -Iinclude -o $@ $< $(STATIC) -lm
 
@@ -165,7 +174,7 @@ LINT_TARGETS :=
 -include bench/bench.mk
 -include tests/mcu/mcu.mk
 -include tests/fuzz/fuzz.mk
--include tests/lint.mk
+-include tests/build/lint.mk
 -include tests/consumers/consumers.mk
 -include examples/examples.mk
 -include python/python.mk

@@ -41,7 +41,7 @@ typedef struct results {
 static ref_case *timing_cases(int impacts, unsigned long long seed)
 {
     ref_case *c = malloc(PAIRS_IN_CACHE * sizeof *c);
-    rng r;
+    c2d_rng r;
     int i;
     r.s = seed;
     for (i = 0; i < PAIRS_IN_CACHE; i++) {

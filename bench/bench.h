@@ -6,8 +6,9 @@
 #include <stddef.h>
 
 #include "collide2d.h"
+#include "cases.h"
+#include "harness.h"
 #include "referee.h"
-#include "support.h"
 
 /* How a contender is called and which precision its answers have. */
 typedef enum bench_kind {
@@ -59,6 +60,11 @@ const case_set *sets_for(const case_set *sets, const contender *k, int extreme);
  * (inputs when nothing was written). */
 c2d_status contender_run(const contender *k, const ref_case *c, double got[4]);
 
+/* For a batch contender: every lane of its call on the case has the scalar
+ * call's status and bits, and the returned count is right (header promise).
+ * 1 for any other contender. */
+int contender_batch_agrees(const contender *k, const ref_case *c);
+
 typedef struct acc_stats {
     int n, evaluated, wrong_status, nan, inf, batch_mismatch;
     double max_ulp, med_ulp;      /* in the contender's own ulp (Q16.16: steps) */
@@ -69,7 +75,7 @@ typedef struct acc_stats {
 void evaluate(const contender *k, const case_set *s, acc_stats *out);
 
 /* Generators shared by the accuracy and timing parts. */
-void gen_impact(rng *r, ref_case *c); /* uniform impact parameter */
+void gen_impact(c2d_rng *r, ref_case *c); /* uniform impact parameter */
 
 /* ---------------------------------------------------------------- timing */
 typedef struct timing_data timing_data;

@@ -11,8 +11,8 @@ BENCH_TEST_DEPS := libgmp-dev libmpfr-dev libbox2d-dev g++
 BENCH_DIR := $(B)/bench
 BENCH_BIN := $(BENCH_DIR)/bench
 BENCH_C := bench/bench.c bench/accuracy.c bench/contenders.c bench/timing.c bench/smoke.c \
-  bench/approaches.c tests/referee.c tests/support.c
-BENCH_HDR := $(wildcard bench/*.h) tests/referee.h tests/support.h $(LIB_HDR)
+  bench/approaches.c referee/referee.c referee/cases.c $(HARNESS_SRC)
+BENCH_HDR := $(wildcard bench/*.h referee/*.h) $(HARNESS_HDR) $(LIB_HDR)
 BENCH_OBJ := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(BENCH_C)) $(BENCH_DIR)/obj/bench/box2d_contender.o
 BENCH_CG := $(BENCH_DIR)/callgrind
 BENCH_OUT := bench/RESULTS.md
@@ -26,10 +26,11 @@ check-deps-bench:
 check-deps-test-bench:
 	@sh scripts/deps.sh $(BENCH_TEST_DEPS)
 
-# Referee and generators come from tests/ (shared with the unit tests).
+# Referee and generators come from referee/, the batch storage and checks
+# and the pass/fail line from tests/harness/ (shared with the unit tests).
 $(BENCH_DIR)/obj/%.o: %.c $(BENCH_HDR)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests -Ibench -c $< -o $@
+	$(CC) $(ALL_CFLAGS) -Wno-conversion -Ireferee -Itests/harness -Ibench -c $< -o $@
 
 $(BENCH_DIR)/obj/bench/box2d_contender.o: bench/box2d_contender.cpp bench/box2d_contender.h $(LIB_HDR)
 	@mkdir -p $(@D)

@@ -11,16 +11,11 @@
 #include "approaches.h"
 #include "box2d_contender.h"
 
-static int passed, failed;
+static c2d_tally tally;
 
 static void check(int ok, const char *what)
 {
-    if (ok) {
-        passed++;
-    } else {
-        failed++;
-        printf("FAIL: %s\n", what);
-    }
+    if (!c2d_tally_add(&tally, ok)) printf("FAIL: %s\n", what);
 }
 
 typedef struct hand_case {
@@ -152,7 +147,7 @@ static void check_timing_harness_runs(void)
 {
     ref_case cases[64];
     double ns[64];
-    rng r;
+    c2d_rng r;
     int i, all_ran = 1;
     timing_data *t;
     r.s = 99;
@@ -171,6 +166,6 @@ int bench_smoke(void)
     check_contenders_on_hand_cases();
     check_random_sets();
     check_timing_harness_runs();
-    printf("%d passed, %d failed\n", passed, failed);
-    return failed == 0 ? 0 : 1;
+    c2d_put_tally(NULL, &tally);
+    return c2d_tally_status(&tally);
 }

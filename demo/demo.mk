@@ -11,8 +11,8 @@
 DEMO_DEPS := libbox2d-dev libsdl2-dev
 DEMO_TEST_DEPS := xvfb xauth libpng-dev
 DEMO_PLOT_DEPS := gnuplot-nox
-DEMO_SRC := demo/main.cpp demo/sim.cpp demo/render.cpp demo/png.cpp
-DEMO_HDR := demo/sim.h demo/render.h demo/png.h
+DEMO_SRC := demo/main.cpp demo/scene.cpp demo/exact_engine.cpp demo/box2d_engine.cpp demo/checker.cpp demo/sim.cpp demo/render.cpp demo/png.cpp
+DEMO_HDR := demo/scene.h demo/engine.h demo/exact_engine.h demo/box2d_engine.h demo/checker.h demo/sim.h demo/render.h demo/png.h
 DEMO_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SRC))
 DEMO_BIN := $(B)/billiards
 DEMO_CXXFLAGS = $(CXXFLAGS) -std=c++17 -Wall -Wextra -ffp-contract=off -Iinclude $(SAN_FLAGS)

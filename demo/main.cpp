@@ -8,6 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render.h"
@@ -94,9 +95,9 @@ Options parse(int argc, char **argv) {
             std::exit(0);
         } else if (flag == "--scene") {
             const std::string v = value();
-            if (v == "break") o.config.scene = Scene::Break;
-            else if (v == "elastic") o.config.scene = Scene::Elastic;
-            else if (v == "gas") o.config.scene = Scene::Gas;
+            if (v == "break") o.config.set_scene(Scene::Break);
+            else if (v == "elastic") o.config.set_scene(Scene::Elastic);
+            else if (v == "gas") o.config.set_scene(Scene::Gas);
             else fail("--scene: unknown scene '" + v + "' (break, elastic or gas)");
         } else if (flag == "--response") {
             const std::string v = value();
@@ -160,34 +161,51 @@ private:
     FILE *f_;
 };
 
-bool out_of_time(const Simulation &sim, long frames) { return frames >= 0 && sim.stats().steps >= frames; }
-
 // Shots are played one after another, each once the table is at rest; without
 // --seconds the run ends when the last shot has come to rest.
+class Headless : public demo::Driver {
+public:
+    Headless(std::vector<Shot> shots, long frames, Trace &trace)
+        : shots_(std::move(shots)), frames_(frames), safety_frames_(3600L * 60L * static_cast<long>(shots_.size() + 1)),
+          trace_(trace) {}
+    // Takes the next shot, if any is left.
+    bool shoot_next(Simulation &sim) {
+        if (next_shot_ == shots_.size()) return false;
+        sim.shoot(shots_[next_shot_++]);
+        return true;
+    }
+    bool next_frame(Simulation &sim) override {
+        const long steps = sim.stats().steps;
+        return !(frames_ >= 0 && steps >= frames_) && steps < safety_frames_;
+    }
+    bool before_step(Simulation &sim, bool was_at_rest) override {
+        return !was_at_rest || shoot_next(sim) || frames_ >= 0;
+    }
+    void after_step(const Simulation &sim) override { trace_.row(sim); }
+
+private:
+    std::vector<Shot> shots_;
+    size_t next_shot_ = 0;
+    long frames_;  // < 0: until the last shot has come to rest
+    long safety_frames_;
+    Trace &trace_;
+};
+
 Totals run_headless(Simulation &sim, const Options &o) {
     std::vector<Shot> shots = o.shots;
     if (shots.empty() && o.config.scene != Scene::Gas) shots.push_back(Shot{0, 12});
     double seconds = o.seconds;
     if (seconds < 0 && sim.lossless()) seconds = 60;
     const long frames = seconds < 0 ? -1 : static_cast<long>(std::ceil(seconds / demo::kFrameDt - 1e-9));
-    const long safety_frames = 3600L * 60L * static_cast<long>(shots.size() + 1);
     Trace trace(o.trace);
-    size_t next_shot = 0;
-    if (!shots.empty()) sim.shoot(shots[next_shot++]);
+    Headless headless(shots, frames, trace);
+    headless.shoot_next(sim);
     Totals t;
     t.energy_start = sim.energy();
     sim.momentum(t.momentum_start);
     trace.row(sim);
     const auto start = std::chrono::steady_clock::now();
-    while (!out_of_time(sim, frames) && sim.stats().steps < safety_frames) {
-        if (sim.at_rest()) {
-            sim.respot_cue();
-            if (next_shot < shots.size()) sim.shoot(shots[next_shot++]);
-            else if (frames < 0) break;
-        }
-        sim.step();
-        trace.row(sim);
-    }
+    demo::run(sim, headless);
     t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     t.energy_end = sim.energy();
     sim.momentum(t.momentum_end);

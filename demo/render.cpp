@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <memory>
 #include <vector>
 
 #include "png.h"
@@ -263,56 +262,76 @@ WindowResult screenshot_window(const Simulation &sim, const std::string &path, s
 
 namespace {
 
-struct Game {
-    std::unique_ptr<Simulation> sim;
-    Hud hud;
-    bool dragging = false;
-    double press_x = 0, press_y = 0;  // logical pixels
-    double mouse_x = 0, mouse_y = 0;
+// The player's side of the main loop: aim with the mouse, shoot on release;
+// each frame is drawn and held until its time comes (real time).
+class Game : public Driver {
+public:
+    Game(const SimConfig &config, SDL_Renderer *renderer)
+        : config_(config), renderer_(renderer), next_tick_(SDL_GetTicks64()) {
+        hud_.show = config.scene != Scene::Gas;
+    }
+    bool next_frame(Simulation &sim) override;
+    bool before_step(Simulation &sim, bool) override {
+        update_aim(sim);
+        return true;
+    }
+    void after_step(const Simulation &sim) override;
+
+private:
+    void update_aim(const Simulation &sim);
+    bool handle_event(Simulation &sim, const SDL_Event &e);
+
+    const SimConfig config_;
+    SDL_Renderer *renderer_;
+    uint64_t next_tick_;  // ms, when the next frame is due
+    Hud hud_;
+    bool dragging_ = false;
+    double press_x_ = 0, press_y_ = 0;  // logical pixels
+    double mouse_x_ = 0, mouse_y_ = 0;
 };
 
-void update_aim(Game &g) {
-    const View v(g.sim->table());
-    const bool can_shoot = g.sim->at_rest() && g.sim->cue_on_table() && g.sim->object_balls_left() > 0;
-    g.hud.aim.visible = can_shoot;
+void Game::update_aim(const Simulation &sim) {
+    const View v(sim.table());
+    const bool can_shoot = sim.at_rest() && sim.cue_on_table() && sim.object_balls_left() > 0;
+    hud_.aim.visible = can_shoot;
     if (!can_shoot) return;
-    const Ball &cue = g.sim->balls()[0];
-    if (!g.dragging) g.hud.aim.angle = std::atan2(v.wy(g.mouse_y) - cue.y, v.wx(g.mouse_x) - cue.x);
-    const double dragged = g.dragging ? std::hypot(g.mouse_x - g.press_x, g.mouse_y - g.press_y) : 0.0;
-    g.hud.aim.speed = std::min(kMaxPlaySpeed, dragged * kPowerPerPixel);
+    const Ball &cue = sim.balls()[0];
+    if (!dragging_) hud_.aim.angle = std::atan2(v.wy(mouse_y_) - cue.y, v.wx(mouse_x_) - cue.x);
+    const double dragged = dragging_ ? std::hypot(mouse_x_ - press_x_, mouse_y_ - press_y_) : 0.0;
+    hud_.aim.speed = std::min(kMaxPlaySpeed, dragged * kPowerPerPixel);
 }
 
 // Returns false when the player quits.
-bool handle_event(Game &g, const SDL_Event &e, const SimConfig &config) {
+bool Game::handle_event(Simulation &sim, const SDL_Event &e) {
     switch (e.type) {
     case SDL_QUIT: return false;
     case SDL_KEYDOWN:
         if (e.key.keysym.sym == SDLK_ESCAPE) return false;
         if (e.key.keysym.sym == SDLK_r) {
-            g.sim.reset(new Simulation(config));
-            g.hud.shots = 0;
-            g.dragging = false;
+            sim = Simulation(config_);
+            hud_.shots = 0;
+            dragging_ = false;
         }
         break;
     case SDL_MOUSEMOTION:
-        g.mouse_x = e.motion.x;
-        g.mouse_y = e.motion.y;
+        mouse_x_ = e.motion.x;
+        mouse_y_ = e.motion.y;
         break;
     case SDL_MOUSEBUTTONDOWN:
-        if (e.button.button == SDL_BUTTON_LEFT && g.hud.aim.visible) {
-            g.dragging = true;
-            g.press_x = g.mouse_x = e.button.x;
-            g.press_y = g.mouse_y = e.button.y;
+        if (e.button.button == SDL_BUTTON_LEFT && hud_.aim.visible) {
+            dragging_ = true;
+            press_x_ = mouse_x_ = e.button.x;
+            press_y_ = mouse_y_ = e.button.y;
         } else if (e.button.button == SDL_BUTTON_RIGHT) {
-            g.dragging = false;
+            dragging_ = false;
         }
         break;
     case SDL_MOUSEBUTTONUP:
-        if (e.button.button == SDL_BUTTON_LEFT && g.dragging) {
-            g.dragging = false;
-            if (g.hud.aim.speed > 0) {
-                g.sim->shoot(Shot{g.hud.aim.angle * 180.0 / M_PI, g.hud.aim.speed});
-                ++g.hud.shots;
+        if (e.button.button == SDL_BUTTON_LEFT && dragging_) {
+            dragging_ = false;
+            if (hud_.aim.speed > 0) {
+                sim.shoot(Shot{hud_.aim.angle * 180.0 / M_PI, hud_.aim.speed});
+                ++hud_.shots;
             }
         }
         break;
@@ -321,32 +340,34 @@ bool handle_event(Game &g, const SDL_Event &e, const SimConfig &config) {
     return true;
 }
 
+bool Game::next_frame(Simulation &sim) {
+    SDL_Event e;
+    while (SDL_PollEvent(&e))
+        if (!handle_event(sim, e)) return false;
+    return true;
+}
+
+void Game::after_step(const Simulation &sim) {
+    draw_frame(renderer_, sim, hud_);
+    SDL_RenderPresent(renderer_);
+    // keep real time even without vsync
+    next_tick_ += 1000 / 60;
+    const uint64_t now = SDL_GetTicks64();
+    if (next_tick_ > now) SDL_Delay(static_cast<uint32_t>(next_tick_ - now));
+    else next_tick_ = now;
+}
+
 }  // namespace
 
 WindowResult play_window(const SimConfig &config, std::string &error) {
-    Game g;
-    g.sim.reset(new Simulation(config));
-    g.hud.show = config.scene != Scene::Gas;
+    Simulation sim(config);
     Window w;
-    const WindowResult opened = open_window(*g.sim, w, error);
+    const WindowResult opened = open_window(sim, w, error);
     if (opened != WindowResult::Ok) return opened;
-    if (config.scene != Scene::Break) g.sim->shoot(Shot{0, kMaxPlaySpeed});
-    uint64_t next_frame = SDL_GetTicks64();
-    for (;;) {
-        SDL_Event e;
-        while (SDL_PollEvent(&e))
-            if (!handle_event(g, e, config)) return WindowResult::Ok;
-        if (g.sim->at_rest()) g.sim->respot_cue();
-        update_aim(g);
-        g.sim->step();
-        draw_frame(w.renderer, *g.sim, g.hud);
-        SDL_RenderPresent(w.renderer);
-        // keep real time even without vsync
-        next_frame += 1000 / 60;
-        const uint64_t now = SDL_GetTicks64();
-        if (next_frame > now) SDL_Delay(static_cast<uint32_t>(next_frame - now));
-        else next_frame = now;
-    }
+    if (config.scene != Scene::Break) sim.shoot(Shot{0, kMaxPlaySpeed});
+    Game game(config, w.renderer);
+    run(sim, game);
+    return WindowResult::Ok;
 }
 
 }  // namespace demo

@@ -1,11 +1,10 @@
-// sim.h - billiards / disk-gas simulation for the collide2d demo (no SDL).
-//
-// The state (positions, velocities) is kept in double in SI units (m, m/s,
-// kg, s).  Box2D 2.4.1 is used only as a broadphase: its dynamic AABB tree
-// finds candidate pairs; impacts are found and ordered with
-// c2d_time_of_impact and resolved with c2d_collide / c2d_collide_normal.
-// Response::Box2d instead hands the same scene to Box2D's own solver, for
-// comparison.
+// sim.h - a run of the demo, without SDL: its configuration (scene, engine,
+// losses); the Simulation, which sets up the scene, steps the engine frame
+// by frame, has the checker check every frame, and applies rolling
+// resistance between frames (each moving ball's speed drops by
+// rolling_deceleration * kFrameDt; below 1 cm/s it stops); and the one main
+// loop that the window and the headless runs share.  State is in double, SI
+// units (m, m/s, kg, s).
 #ifndef C2D_DEMO_SIM_H
 #define C2D_DEMO_SIM_H
 
@@ -13,9 +12,12 @@
 #include <memory>
 #include <vector>
 
+#include "checker.h"
+#include "engine.h"
+#include "scene.h"
+
 namespace demo {
 
-enum class Scene { Break, Elastic, Gas };
 enum class Response { Collide2d, Box2d };
 
 struct Shot {
@@ -23,49 +25,30 @@ struct Shot {
     double speed;      // m/s
 };
 
+// What a scene loses.  The break plays like a real table; the elastic and
+// gas scenes lose nothing, so their kinetic energy checks the engine.
+struct Losses {
+    Restitution restitution;
+    double rolling_deceleration;  // m/s^2, applied between frames; 0: none
+    bool none() const { return restitution.ball == 1 && restitution.cushion == 1 && rolling_deceleration == 0; }
+};
+constexpr Losses kTableLosses = {{0.95, 0.8}, 0.15};  // rolling resistance ~0.015 g
+constexpr Losses kNoLosses = {{1.0, 1.0}, 0.0};
+
 struct SimConfig {
     Scene scene = Scene::Break;
     Response response = Response::Collide2d;
     int gas_balls = 1000;
     uint64_t seed = 1;
+    Losses losses = kTableLosses;
+    // The scene with the losses that go with it.
+    void set_scene(Scene s) {
+        scene = s;
+        losses = s == Scene::Break ? kTableLosses : kNoLosses;
+    }
 };
 
-struct Ball {
-    double x, y, vx, vy;
-    int number;  // 0 = cue ball, 1..15 object balls; gas: index
-    bool active;
-};
-
-struct Segment { double ax, ay, bx, by, nx, ny; };  // cushion face, n points into the table
-struct Pocket { double x, y, capture_radius, draw_radius; };
-
-struct Table {
-    double length, width;   // playing surface [0,length] x [0,width]
-    double rail;            // drawn rail width
-    std::vector<Segment> cushions;
-    std::vector<Pocket> pockets;
-};
-
-struct Stats {
-    long steps = 0;
-    double sim_seconds = 0;
-    long ball_ball_collisions = 0;
-    long cushion_collisions = 0;
-    int pocketed = 0;
-    int escaped = 0;
-    long tunnelled = 0;
-    double max_overlap = 0;       // fraction of a diameter
-    long event_cap_frames = 0;    // frames whose event budget ran out
-};
-
-constexpr double kBallDiameter = 0.05715;
-constexpr double kBallRadius = kBallDiameter / 2;
-constexpr double kBallMass = 0.17;
-constexpr double kFrameDt = 1.0 / 60.0;
 constexpr double kMaxShotSpeed = 15.0;  // Box2D moves at most 2 units/step: 15 m/s at our scale
-
-class Engine;
-struct FrameLog;
 
 class Simulation {
 public:
@@ -73,6 +56,8 @@ public:
     ~Simulation();
     Simulation(const Simulation &) = delete;
     Simulation &operator=(const Simulation &) = delete;
+    Simulation(Simulation &&) noexcept;
+    Simulation &operator=(Simulation &&) noexcept;  // the window's re-rack
 
     // Strikes the cue ball (break scenes; ignored if it is off the table).
     void shoot(const Shot &shot);
@@ -88,39 +73,41 @@ public:
     const Table &table() const { return table_; }
     const std::vector<Ball> &balls() const;
     const Stats &stats() const { return stats_; }
-    int balls_total() const { return static_cast<int>(balls_initial_.size()); }
+    int balls_total() const { return static_cast<int>(balls().size()); }
     int object_balls_left() const;
     double energy() const;
     void momentum(double out[2]) const;
-    bool lossless() const { return config_.scene != Scene::Break; }
+    bool lossless() const { return config_.losses.none(); }
 
 private:
-    void index_waypoints(size_t n);
-    void check_frame(const std::vector<Ball> &before, double dt);
-    template <typename Visit> void for_each_close_pair(Visit visit);
-    void count_escaped();
+    void apply_rolling_resistance();
 
     SimConfig config_;
     Table table_;
-    std::vector<Ball> balls_initial_;
     std::unique_ptr<Engine> engine_;
-    std::unique_ptr<FrameLog> frame_log_;
+    FrameLog frame_log_;
     Stats stats_;
-    std::vector<char> escaped_flag_;
-    struct Checker;
-    std::unique_ptr<Checker> checker_;
+    Checker checker_;
 };
 
-// Seeded, platform-independent generator (splitmix64), so scenes and runs are
-// identical on every machine.
-class Rng {
+// What makes a run of the one main loop (run) a window game or a headless
+// run: where shots and the end come from, and what becomes of each frame.
+class Driver {
 public:
-    explicit Rng(uint64_t seed) : state_(seed) {}
-    uint64_t next();
-    double uniform();  // [0, 1)
-private:
-    uint64_t state_;
+    virtual ~Driver() = default;
+    // Start of a frame: false ends the run.  May shoot or re-rack.
+    virtual bool next_frame(Simulation &sim) = 0;
+    // The cue ball is back on the table if the table was at rest; false ends
+    // the run.
+    virtual bool before_step(Simulation &sim, bool was_at_rest) = 0;
+    // The frame has been simulated.
+    virtual void after_step(const Simulation &sim) = 0;
 };
+
+// The main loop of the window and of headless runs: frame by frame until the
+// driver ends it; whenever the table is at rest, a pocketed cue ball goes
+// back on the head spot.
+void run(Simulation &sim, Driver &driver);
 
 }  // namespace demo
 

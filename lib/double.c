@@ -33,6 +33,10 @@
 #define C2D_R_WINDOW 600     /* exact-sum window, binades */
 #define C2D_R_MARGIN 70      /* window sum must dominate the rest by 2^70 */
 
+#define C2D_R_QUICK 200        /* front end's window: [2^-200, 2^200] (real_fast.h) */
+
+#define C2D_R_TOI_WINDOW 100   /* time of impact unscaled within [2^-100, 2^100] (real_toi.h) */
+
 #include "real_bits.h"
 #include "real_exact.h"
 #include "real_fast.h"

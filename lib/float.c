@@ -34,6 +34,10 @@
 #define C2D_R_WINDOW 72      /* exact-sum window, binades */
 #define C2D_R_MARGIN 36      /* window sum must dominate the rest by 2^36 */
 
+#define C2D_R_QUICK 20        /* front end's window: [2^-20, 2^20] (real_fast.h) */
+
+#define C2D_R_TOI_WINDOW 12   /* time of impact unscaled within [2^-12, 2^12] (real_toi.h) */
+
 #include "real_bits.h"
 #include "real_exact.h"
 #include "real_fast.h"

@@ -128,7 +128,51 @@ C2D_COLD c2d_status c2d_collide_accurate(c2d_real_body *a, c2d_real_body *b, c2d
     return c2d_resolve(a, b, &nh, &nl, restitution);
 }
 
-/* c2d_collide: the fast path, then the tier its verdict names. */
+/* Tier 2 for a pair the front end (c2d_quick) found valid and inside its
+ * window, but whose d cancels: c2d_accurate's arithmetic without the checks
+ * the window makes redundant.  With k, n.n and the masses in [W^-1, W] and
+ * |d| >= 2^-KAPPA2 k, c = (1+e) d / (n.n (ma + mb)), la and lb are normal, so
+ * c2d_finish cannot decline; the rest is c2d_accurate's own route. */
+C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *nh,
+                                         const c2d_real_vec *nl, c2d_real restitution)
+{
+    const c2d_real rx = b->vel.x - a->vel.x, ry = b->vel.y - a->vel.y;
+    const c2d_real k = c2d_abs(rx * nh->x) + c2d_abs(ry * nh->y);
+    const c2d_real split = c2d_abs(rx) + c2d_abs(ry) + c2d_abs(nh->x) + c2d_abs(nh->y);
+    c2d_real d, fa, fb, den, c, la, lb;
+    if (!(split <= c2d_pow2(C2D_R_EMAX / 2))) return c2d_resolve(a, b, nh, nl, restitution);
+    d = c2d_dot2(nh, nl, &a->vel, &b->vel);
+    if (!(c2d_abs(d) * c2d_pow2(C2D_R_EXP_KAPPA2) >= k)) return c2d_resolve(a, b, nh, nl, restitution);
+    if (d >= 0) return C2D_SEPARATING;
+    fa = a->mass > C2D_R_MAX ? (c2d_real)1.0 : (b->mass > C2D_R_MAX ? (c2d_real)0.0 : a->mass);
+    fb = b->mass > C2D_R_MAX ? (c2d_real)1.0 : (a->mass > C2D_R_MAX ? (c2d_real)0.0 : b->mass);
+    den = (nh->x * nh->x + nh->y * nh->y) * (fa + fb);
+    c = (1 + restitution) * d / den;
+    la = c * fb;
+    lb = c * fa;
+    a->vel.x = a->vel.x + la * nh->x;
+    a->vel.y = a->vel.y + la * nh->y;
+    b->vel.x = b->vel.x - lb * nh->x;
+    b->vel.y = b->vel.y - lb * nh->y;
+    return C2D_OK;
+}
+
+/* What c2d_collide's front end could not decide: the fast path, then the
+ * tier its verdict names.  Out of line, so the front end stays small. */
+C2D_COLD c2d_status c2d_collide_fallback(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
+{
+    c2d_real out[4];
+    c2d_pair p;
+    c2d_verdict v;
+    c2d_pair_of(&p, a, b, b->pos.x - a->pos.x, b->pos.y - a->pos.y);
+    v = c2d_fast(&p, 1 + restitution, out);
+    if (v == C2D_VERDICT_ACCURATE) return c2d_collide_accurate(a, b, restitution);
+    if (v == C2D_VERDICT_GENERAL) return c2d_collide_slow(a, b, restitution);
+    if (v == C2D_VERDICT_OK) c2d_store(a, b, out);
+    return c2d_verdict_status(v);
+}
+
+/* c2d_collide: the input-only front end (real_fast.h), else the fallback. */
 static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
 {
     c2d_real out[4];
@@ -136,11 +180,21 @@ static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2
     c2d_verdict v;
     if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
     c2d_pair_of(&p, a, b, b->pos.x - a->pos.x, b->pos.y - a->pos.y);
-    v = c2d_fast(&p, 1 + restitution, out);
-    if (v == C2D_VERDICT_ACCURATE) return c2d_collide_accurate(a, b, restitution);
-    if (v == C2D_VERDICT_GENERAL) return c2d_collide_slow(a, b, restitution);
-    if (v == C2D_VERDICT_OK) c2d_store(a, b, out);
-    return c2d_verdict_status(v);
+    v = c2d_quick(&p, 1 + restitution, out);
+    if (v == C2D_VERDICT_OK) {
+        c2d_store(a, b, out);
+        return C2D_OK;
+    }
+    if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
+    /* A valid pair whose d cancels: where the fast path would send it, unless
+     * the positions are so large that c2d_collide_slow takes another route. */
+    if (v == C2D_VERDICT_ACCURATE && c2d_abs(a->pos.x) + c2d_abs(a->pos.y) + c2d_abs(b->pos.x) + c2d_abs(b->pos.y) <
+                                         c2d_pow2(C2D_R_EMAX - 2)) {
+        c2d_real_vec nh, nl;
+        c2d_exact_normal(a, b, &nh, &nl);
+        return c2d_quick_cancelling(a, b, &nh, &nl, restitution);
+    }
+    return c2d_collide_fallback(a, b, restitution);
 }
 
 /* What c2d_collide_normal's fast path declined, out of line. */
@@ -158,6 +212,23 @@ C2D_COLD c2d_status c2d_collide_normal_slow(c2d_real_body *a, c2d_real_body *b, 
     return c2d_resolve(a, b, n, &zero, restitution);
 }
 
+/* c2d_collide_normal's fast path and the tiers, for what its front end
+ * could not decide. */
+C2D_COLD c2d_status c2d_collide_normal_fallback(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *normal,
+                                                c2d_real restitution)
+{
+    c2d_real out[4];
+    c2d_pair p;
+    c2d_verdict v;
+    if (a == b) return c2d_collide_normal_slow(a, b, normal, restitution, C2D_VERDICT_GENERAL); /* itself */
+    c2d_pair_of(&p, a, b, normal->x, normal->y);
+    v = c2d_fast(&p, 1 + restitution, out);
+    if (v == C2D_VERDICT_ACCURATE || v == C2D_VERDICT_GENERAL)
+        return c2d_collide_normal_slow(a, b, normal, restitution, v);
+    if (v == C2D_VERDICT_OK) c2d_store(a, b, out);
+    return c2d_verdict_status(v);
+}
+
 /* c2d_collide_normal: positions are only validated. */
 static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *normal,
                                                  c2d_real restitution)
@@ -167,13 +238,20 @@ static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body
     c2d_verdict v;
     if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y)) return C2D_INVALID;
-    if (a == b) return c2d_collide_normal_slow(a, b, normal, restitution, C2D_VERDICT_GENERAL); /* itself */
     c2d_pair_of(&p, a, b, normal->x, normal->y);
-    v = c2d_fast(&p, 1 + restitution, out);
-    if (v == C2D_VERDICT_ACCURATE || v == C2D_VERDICT_GENERAL)
-        return c2d_collide_normal_slow(a, b, normal, restitution, v);
-    if (v == C2D_VERDICT_OK) c2d_store(a, b, out);
-    return c2d_verdict_status(v);
+    v = a == b ? C2D_VERDICT_GENERAL : c2d_quick(&p, 1 + restitution, out);
+    if (v == C2D_VERDICT_OK) {
+        c2d_store(a, b, out);
+        return C2D_OK;
+    }
+    if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
+    if (v == C2D_VERDICT_ACCURATE) {
+        c2d_real_vec zero;
+        zero.x = 0;
+        zero.y = 0;
+        return c2d_quick_cancelling(a, b, normal, &zero, restitution);
+    }
+    return c2d_collide_normal_fallback(a, b, normal, restitution);
 }
 
 #endif /* C2D_REAL_COLLIDE_H */

@@ -118,4 +118,73 @@ C2D_HOT c2d_verdict c2d_fast(const c2d_pair *p, c2d_real e1, c2d_real *out)
     return f == C2D_F_ALL ? C2D_VERDICT_OK : c2d_fast_verdict(f);
 }
 
+/* ------------------------------------------------------------ front end
+ * THE INPUT-ONLY ACCEPT TEST
+ *   c2d_finish checks its intermediates after computing them, so the
+ *   verdict waits for the division.  Inside a window of the inputs those
+ *   checks cannot fail, and the verdict depends only on quantities formed
+ *   before the division.  With W = 2^C2D_R_QUICK (200 double, 20 float):
+ *   k = |px| + |py|, n.n and both masses in [1/W, W] (a sum <= W rejects
+ *   NaN and Inf too: a NaN or Inf velocity or normal makes k NaN or Inf; a
+ *   minimum >= 1/W the rest).  Then, if 4d + k <= 0 (an approach with
+ *   kappa <= 4, the fast path's own test, exact in sign since 4d is), |d|
+ *   is in [k/4, k], den = n.n (ma + mb) in [W^-2, 2 W^2], |c| = (1+e)|d|/den
+ *   in [W^-3/4, 4 W^3], |la|, |lb| in [W^-4/4, 4 W^4] and |la n_i| below
+ *   4 W^4.5: normal, and below half an ulp of the largest finite value
+ *   (2^901 < 2^970 double, 2^91 < 2^103 float), so va + la n_i is finite
+ *   for any finite va.  The fast path would accept every such pair, and the
+ *   same operations in the same order give its bits.  4d - k >= 0 is a
+ *   separation it would report.  Everything else goes to the fast path
+ *   unchanged.  A wall (one mass INFINITY, the other in the window) takes
+ *   the same test with the fast path's mass pair (0, 1).
+ */
+
+/* The front end's masses for a wall (one mass INFINITY, the other finite,
+ * at least 2^-C2D_R_QUICK): c2d_finish's pair (0, 1) or (1, 0).  Returns 0
+ * for anything else. */
+static inline int c2d_quick_wall(const c2d_pair *p, c2d_real *fa, c2d_real *fb)
+{
+    const c2d_real lo = c2d_pow2(-C2D_R_QUICK);
+    if (p->mb > C2D_R_MAX && p->ma >= lo && p->ma <= C2D_R_MAX) {
+        *fa = 0;
+        *fb = 1;
+        return 1;
+    }
+    if (p->ma > C2D_R_MAX && p->mb >= lo && p->mb <= C2D_R_MAX) {
+        *fa = 1;
+        *fb = 0;
+        return 1;
+    }
+    return 0;
+}
+
+/* OK (out written) or SEPARATING when the accept test decides; ACCURATE
+ * for a valid pair inside the window whose d cancels (the double-double
+ * tier's case); else GENERAL: the caller then asks the fast path (c2d_fast)
+ * as before. */
+C2D_HOT c2d_verdict c2d_quick(const c2d_pair *p, c2d_real e1, c2d_real *out)
+{
+    const c2d_real hi = c2d_pow2(C2D_R_QUICK), lo = c2d_pow2(-C2D_R_QUICK);
+    const c2d_real px = (p->vb.x - p->va.x) * p->n.x, py = (p->vb.y - p->va.y) * p->n.y;
+    const c2d_real d = px + py;
+    const c2d_real k = c2d_abs(px) + c2d_abs(py);
+    const c2d_real nn = p->n.x * p->n.x + p->n.y * p->n.y;
+    const c2d_real geometry = k < nn ? k : nn, lighter = p->ma < p->mb ? p->ma : p->mb;
+    c2d_real fa = p->ma, fb = p->mb;
+    if (!((k + nn) + (fa + fb) <= hi && (geometry < lighter ? geometry : lighter) >= lo) &&
+        !(c2d_quick_wall(p, &fa, &fb) && k + nn <= hi && geometry >= lo))
+        return C2D_VERDICT_GENERAL;
+    if (4 * d + k <= 0) {
+        const c2d_real den = nn * (fa + fb);
+        const c2d_real c = e1 * d / den;
+        const c2d_real la = c * fb, lb = c * fa;
+        out[0] = p->va.x + la * p->n.x;
+        out[1] = p->va.y + la * p->n.y;
+        out[2] = p->vb.x - lb * p->n.x;
+        out[3] = p->vb.y - lb * p->n.y;
+        return C2D_VERDICT_OK;
+    }
+    return 4 * d - k >= 0 ? C2D_VERDICT_SEPARATING : C2D_VERDICT_ACCURATE;
+}
+
 #endif /* C2D_REAL_FAST_H */

@@ -1,0 +1,189 @@
+// checker.cpp - see checker.h.  A ball's path over a frame is straight
+// between its waypoints, so a pair's relative motion is straight on each
+// piece between the union of both balls' waypoint times; on each piece
+// c2d_time_of_impact tells whether the centres came within a diameter.
+#include "checker.h"
+
+#include <algorithm>
+#include <cmath>
+
+extern "C" {
+#include "collide2d.h"
+}
+
+namespace demo {
+
+namespace {
+
+// A ball's path over the frame: straight pieces between its waypoints.
+struct Path {
+    const Ball *start, *end;
+    const Waypoint *bends, *bends_end;
+    double dt;
+    void at(double t, double &x, double &y) const {
+        double t0 = 0, x0 = start->x, y0 = start->y;
+        const Waypoint *w = bends;
+        while (w != bends_end && w->t <= t) {
+            t0 = w->t, x0 = w->x, y0 = w->y;
+            ++w;
+        }
+        const double t1 = w != bends_end ? w->t : dt;
+        const double x1 = w != bends_end ? w->x : end->x, y1 = w != bends_end ? w->y : end->y;
+        const double f = t1 > t0 ? (t - t0) / (t1 - t0) : 0.0;
+        x = x0 + (x1 - x0) * f;
+        y = y0 + (y1 - y0) * f;
+    }
+};
+
+void piece_body(const Path &p, double t0, double t1, c2d_body &b) {
+    double x1, y1;
+    p.at(t0, b.pos.x, b.pos.y);
+    // the position just before t1 (a bend at t1 starts the next piece)
+    const Waypoint *w = p.bends;
+    while (w != p.bends_end && w->t < t1) ++w;
+    if (w != p.bends_end && w->t == t1) x1 = w->x, y1 = w->y;
+    else p.at(t1, x1, y1);
+    b.vel.x = (x1 - b.pos.x) / (t1 - t0);
+    b.vel.y = (y1 - b.pos.y) / (t1 - t0);
+    b.mass = kBallMass;
+}
+
+bool entered(const Path &a, const Path &b) {
+    std::vector<double> cuts = {0.0, a.dt};
+    for (const Waypoint *w = a.bends; w != a.bends_end; ++w) cuts.push_back(w->t);
+    for (const Waypoint *w = b.bends; w != b.bends_end; ++w) cuts.push_back(w->t);
+    std::sort(cuts.begin(), cuts.end());
+    for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+        const double t0 = cuts[k], t1 = cuts[k + 1];
+        if (t1 <= t0) continue;
+        c2d_body pa, pb;
+        piece_body(a, t0, t1, pa);
+        piece_body(b, t0, t1, pb);
+        double t;
+        // Positions carry rounding, and a piece can be 1e-17 s long, so its
+        // velocity is noise: count only a real entry, deeper than 1e-9 of a
+        // diameter (a pair that crosses goes a whole diameter deep).
+        if (c2d_time_of_impact(&pa, &pb, kBallDiameter * (1 - 1e-9), &t) == C2D_OK && t < t1 - t0) return true;
+    }
+    return false;
+}
+
+double cushion_overlap(const Ball &b, const Table &table) {
+    double worst = 0;
+    for (const Segment &s : table.cushions) {
+        const double ex = s.bx - s.ax, ey = s.by - s.ay;
+        const double along = (b.x - s.ax) * ex + (b.y - s.ay) * ey;
+        if (along < 0 || along > ex * ex + ey * ey) continue;
+        const double depth = kBallRadius - ((b.x - s.ax) * s.nx + (b.y - s.ay) * s.ny);
+        worst = std::max(worst, depth / kBallDiameter);
+    }
+    return worst;
+}
+
+}  // namespace
+
+void Checker::index_waypoints(const FrameLog &log, size_t n) {
+    points_ = log.waypoints;
+    std::stable_sort(points_.begin(), points_.end());
+    first_.assign(n + 1, 0);
+    for (const Waypoint &w : points_) ++first_[static_cast<size_t>(w.ball) + 1];
+    for (size_t i = 0; i < n; ++i) first_[i + 1] += first_[i];
+}
+
+void Checker::bound_paths(const std::vector<Ball> &before, const std::vector<Ball> &after) {
+    const size_t n = after.size();
+    box_.resize(n);
+    live_.assign(n, 0);
+    for (size_t i = 0; i < n; ++i) {
+        if (!before[i].active || !after[i].active) continue;
+        live_[i] = 1;
+        Box &b = box_[i];
+        b = {std::min(before[i].x, after[i].x), std::min(before[i].y, after[i].y), std::max(before[i].x, after[i].x),
+             std::max(before[i].y, after[i].y)};
+        for (size_t k = first_[i]; k < first_[i + 1]; ++k) {
+            b.x0 = std::min(b.x0, points_[k].x), b.y0 = std::min(b.y0, points_[k].y);
+            b.x1 = std::max(b.x1, points_[k].x), b.y1 = std::max(b.y1, points_[k].y);
+        }
+        b.x0 -= kBallRadius, b.y0 -= kBallRadius, b.x1 += kBallRadius, b.y1 += kBallRadius;
+    }
+}
+
+// Candidate pairs come from a uniform grid, not from Box2D, so the check
+// shares nothing with the engines.  Cells are at least as wide as the
+// largest path box: boxes that overlap sit in neighbouring cells.
+template <typename Visit>
+void Checker::for_each_close_pair(Visit visit) {
+    const size_t n = box_.size();
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, cell = kBallDiameter;
+    for (size_t i = 0; i < n; ++i) {
+        if (!live_[i]) continue;
+        const Box &b = box_[i];
+        x0 = std::min(x0, b.x0), y0 = std::min(y0, b.y0), x1 = std::max(x1, b.x1), y1 = std::max(y1, b.y1);
+        cell = std::max(cell, std::max(b.x1 - b.x0, b.y1 - b.y0));
+    }
+    if (!(x0 <= x1)) return;
+    cell = std::max(cell, std::max(x1 - x0, y1 - y0) / 2048);  // bounded grid, whatever the spread
+    const size_t nx = static_cast<size_t>((x1 - x0) / cell) + 1, ny = static_cast<size_t>((y1 - y0) / cell) + 1;
+    cell_of_.assign(n, 0);
+    cell_start_.assign(nx * ny + 1, 0);
+    auto cell_x = [&](const Box &b) { return std::min(nx - 1, static_cast<size_t>((0.5 * (b.x0 + b.x1) - x0) / cell)); };
+    auto cell_y = [&](const Box &b) { return std::min(ny - 1, static_cast<size_t>((0.5 * (b.y0 + b.y1) - y0) / cell)); };
+    for (size_t i = 0; i < n; ++i) {
+        if (!live_[i]) continue;
+        cell_of_[i] = cell_y(box_[i]) * nx + cell_x(box_[i]);
+        ++cell_start_[cell_of_[i] + 1];
+    }
+    for (size_t k = 0; k < nx * ny; ++k) cell_start_[k + 1] += cell_start_[k];
+    by_cell_.assign(cell_start_[nx * ny], 0);
+    std::vector<size_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+    for (size_t i = 0; i < n; ++i)
+        if (live_[i]) by_cell_[fill[cell_of_[i]]++] = i;
+    for (size_t i = 0; i < n; ++i) {
+        if (!live_[i]) continue;
+        const Box &bi = box_[i];
+        const size_t cx = cell_of_[i] % nx, cy = cell_of_[i] / nx;
+        for (size_t gy = cy ? cy - 1 : 0; gy <= std::min(ny - 1, cy + 1); ++gy)
+            for (size_t gx = cx ? cx - 1 : 0; gx <= std::min(nx - 1, cx + 1); ++gx)
+                for (size_t k = cell_start_[gy * nx + gx]; k < cell_start_[gy * nx + gx + 1]; ++k) {
+                    const size_t j = by_cell_[k];
+                    const Box &bj = box_[j];
+                    if (j > i && bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) visit(i, j);
+                }
+    }
+}
+
+void Checker::count_escaped(const std::vector<Ball> &after, const Table &table, Stats &stats) {
+    escaped_.resize(after.size(), 0);
+    for (size_t i = 0; i < after.size(); ++i) {
+        const Ball &b = after[i];
+        const bool outside = b.x < 0 || b.x > table.length || b.y < 0 || b.y > table.width;
+        if (b.active && outside && !escaped_[i]) {
+            escaped_[i] = 1;
+            ++stats.escaped;
+        }
+    }
+}
+
+void Checker::check_frame(const std::vector<Ball> &before, const std::vector<Ball> &after, FrameLog &log,
+                          const Table &table, double dt, Stats &stats) {
+    index_waypoints(log, after.size());
+    bound_paths(before, after);
+    for (size_t i = 0; i < after.size(); ++i)
+        if (live_[i]) stats.max_overlap = std::max(stats.max_overlap, cushion_overlap(after[i], table));
+    std::vector<uint64_t> &resolved = log.contacts;
+    std::sort(resolved.begin(), resolved.end());
+    auto path = [&](size_t i) {
+        return Path{&before[i], &after[i], points_.data() + first_[i], points_.data() + first_[i + 1], dt};
+    };
+    for_each_close_pair([&](size_t i, size_t j) {
+        const double gap = std::hypot(after[j].x - after[i].x, after[j].y - after[i].y);
+        stats.max_overlap = std::max(stats.max_overlap, (kBallDiameter - gap) / kBallDiameter);
+        // crossed: came into contact during the frame and is out the other side
+        if (gap > kBallDiameter && entered(path(i), path(j)) &&
+            !std::binary_search(resolved.begin(), resolved.end(), pair_key(static_cast<int>(i), static_cast<int>(j))))
+            ++stats.tunnelled;
+    });
+    count_escaped(after, table, stats);
+}
+
+}  // namespace demo
