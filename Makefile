@@ -179,6 +179,7 @@ LINT_TARGETS :=
 -include examples/examples.mk
 -include python/python.mk
 -include man/man.mk
+-include tests/cross/cross.mk
 
 # Static analysis: fragments append to LINT_TARGETS.
 lint: $(LINT_TARGETS)
