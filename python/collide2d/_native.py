@@ -129,7 +129,10 @@ def _prototypes(t, real, sfx):
 
 # Every entry point: its argument types; each returns c2d_status (a C int)
 # but the batch, which returns size_t.  An Out(...) argument is allocated by
-# the wrapper and returned after the status.
+# the wrapper and returned after the status.  A new entry point is one line
+# in _prototypes (c2d_time_of_impact_accel: its pointer, vector and real
+# arguments and Out(real) for *t) and a documented def in __init__.py that
+# calls _call with its C name.
 PROTOTYPES = {}
 PROTOTYPES.update(_prototypes(DOUBLE, ctypes.c_double, ""))
 PROTOTYPES.update(_prototypes(FLOAT, ctypes.c_float, "f"))

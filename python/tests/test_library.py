@@ -45,3 +45,9 @@ def test_missing_library_is_a_clear_import_error():
     r = _import_with("/nonexistent/libcollide2d.so")
     assert r.returncode == 1
     assert "ImportError: collide2d: COLLIDE2D_LIB='/nonexistent/libcollide2d.so' cannot be loaded" in r.stderr
+
+
+def test_module_docstring_example():
+    import doctest
+    result = doctest.testmod(collide2d)
+    assert result.attempted >= 3 and result.failed == 0
