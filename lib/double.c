@@ -27,6 +27,8 @@
 #endif
 #if defined(__FP_FAST_FMA) && defined(__GNUC__)
 #define C2D_R_FMA __builtin_fma /* TwoProduct in one instruction; same bits */
+#elif defined(C2D_DISPATCH)
+#define C2D_R_FUSED __builtin_fma /* TwoProduct by FMA where run-time dispatch finds it (real_exact.h) */
 #endif
 #define C2D_R_EXP_K 900      /* fast window: |products| summed in [2^-900, 2^900] */
 #define C2D_R_EXP_KAPPA2 41  /* tier-2 d trusted if it cancels by at most 2^41 */

@@ -28,6 +28,8 @@
 #endif
 #if defined(__FP_FAST_FMAF) && defined(__GNUC__)
 #define C2D_R_FMA __builtin_fmaf /* TwoProduct in one instruction; same bits */
+#elif defined(C2D_DISPATCH)
+#define C2D_R_FUSED __builtin_fmaf /* TwoProduct by FMA where run-time dispatch finds it (real_exact.h) */
 #endif
 #define C2D_R_EXP_K 90       /* fast window: |products| summed in [2^-90, 2^90] */
 #define C2D_R_EXP_KAPPA2 12  /* tier-2 d trusted if it cancels by at most 2^12 */

@@ -43,6 +43,15 @@ float sqrtf(float x);
 #define C2D_COLD static
 #endif
 
+/* Run-time dispatch of the batch kernels (real_batch.h): gcc's and clang's
+ * target_clones, an ifunc resolved by the loader.  Only on hosted x86-64
+ * ELF builds; C2D_NO_DISPATCH turns it off (freestanding and MCU builds
+ * never have it). */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__ELF__) && defined(__STDC_HOSTED__) && \
+    __STDC_HOSTED__ == 1 && !defined(C2D_NO_DISPATCH)
+#define C2D_DISPATCH 1
+#endif
+
 /* What the fast path (and tier 2) concluded.  Internal only: never mixed
  * with the public c2d_status; c2d_verdict_status (real_fast.h) converts the
  * final ones. */

@@ -132,16 +132,17 @@ C2D_COLD c2d_status c2d_collide_accurate(c2d_real_body *a, c2d_real_body *b, c2d
  * window, but whose d cancels: c2d_accurate's arithmetic without the checks
  * the window makes redundant.  With k, n.n and the masses in [W^-1, W] and
  * |d| >= 2^-KAPPA2 k, c = (1+e) d / (n.n (ma + mb)), la and lb are normal, so
- * c2d_finish cannot decline; the rest is c2d_accurate's own route. */
-C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *nh,
-                                         const c2d_real_vec *nl, c2d_real restitution)
+ * c2d_finish cannot decline; the rest is c2d_accurate's own route.  `fused`:
+ * TwoProduct by FMA (c2d_two_prod_as). */
+C2D_HOT c2d_status c2d_cancelling_as(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *nh, const c2d_real_vec *nl,
+                                     c2d_real restitution, int fused)
 {
     const c2d_real rx = b->vel.x - a->vel.x, ry = b->vel.y - a->vel.y;
     const c2d_real k = c2d_abs(rx * nh->x) + c2d_abs(ry * nh->y);
     const c2d_real split = c2d_abs(rx) + c2d_abs(ry) + c2d_abs(nh->x) + c2d_abs(nh->y);
     c2d_real d, fa, fb, den, c, la, lb;
     if (!(split <= c2d_pow2(C2D_R_EMAX / 2))) return c2d_resolve(a, b, nh, nl, restitution);
-    d = c2d_dot2(nh, nl, &a->vel, &b->vel);
+    d = c2d_dot2_as(nh, nl, &a->vel, &b->vel, fused);
     if (!(c2d_abs(d) * c2d_pow2(C2D_R_EXP_KAPPA2) >= k)) return c2d_resolve(a, b, nh, nl, restitution);
     if (d >= 0) return C2D_SEPARATING;
     fa = a->mass > C2D_R_MAX ? (c2d_real)1.0 : (b->mass > C2D_R_MAX ? (c2d_real)0.0 : a->mass);
@@ -155,6 +156,29 @@ C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, con
     b->vel.x = b->vel.x - lb * nh->x;
     b->vel.y = b->vel.y - lb * nh->y;
     return C2D_OK;
+}
+
+#ifdef C2D_R_FUSED
+/* The tier compiled for x86-64-v3 (which has FMA), with fused TwoProducts. */
+__attribute__((target("arch=x86-64-v3"))) C2D_COLD c2d_status c2d_cancelling_fused(c2d_real_body *a, c2d_real_body *b,
+                                                                                     const c2d_real_vec *nh,
+                                                                                     const c2d_real_vec *nl,
+                                                                                     c2d_real restitution)
+{
+    return c2d_cancelling_as(a, b, nh, nl, restitution, 1);
+}
+#endif
+
+/* Tier 2 for the front end: with FMA when the CPU has it (chosen at run
+ * time under C2D_DISPATCH), Dekker's split otherwise; the same bits. */
+C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *nh,
+                                         const c2d_real_vec *nl, c2d_real restitution)
+{
+#ifdef C2D_R_FUSED
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+        return c2d_cancelling_fused(a, b, nh, nl, restitution);
+#endif
+    return c2d_cancelling_as(a, b, nh, nl, restitution, 0);
 }
 
 /* What c2d_collide's front end could not decide: the fast path, then the
