@@ -59,3 +59,16 @@ test-bench: check-deps-test-bench
 	$(BENCH_BIN) --smoke
 
 TEST_TARGETS += test-bench
+
+# ---------------------------------------------------------- energy bias
+# Is the energy error of e = 1 impacts a bias?  10^8 random impacts (about a
+# minute): mean dE/E and its standard error, overall and with |n|^2 near a
+# power of two.  Reported in bench/RESULTS.md and the README; not part of
+# `make test` (it measures, it does not judge).
+.PHONY: bench-energy
+$(BENCH_DIR)/energy_bias: bench/energy_bias.c referee/rng.h $(STATIC)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Ireferee -o $@ $< $(STATIC) -lm
+
+bench-energy: $(BENCH_DIR)/energy_bias
+	$(BENCH_DIR)/energy_bias 100000000

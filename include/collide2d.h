@@ -35,6 +35,10 @@
  *   C2D_NO_DOUBLE  [undefined]  drop the double-precision API
  *   C2D_NO_FLOAT   [undefined]  drop the single-precision API
  *   C2D_NO_FIXED   [undefined]  drop the Q16.16 fixed-point API
+ *   C2D_NO_DISPATCH [undefined] no run-time choice of CPU-specific code (gcc,
+ *                  hosted x86-64 only: the batch kernel's SSE2/SSE4.2/AVX2/
+ *                  AVX-512 versions and the FMA double-double tier; same bits
+ *                  either way)
  *   C2D_HEADER     ["../include/collide2d.h" from lib/; "collide2d.h" from the
  *                  amalgamation]  how the library's sources find this file,
  *                  e.g. -DC2D_HEADER='"collide2d.h"' when both sit in one
@@ -103,13 +107,21 @@ typedef struct c2d_body { c2d_vec2 pos; c2d_vec2 vel; double mass; } c2d_body; /
  *                worst: see README "Accuracy"); momentum conserved and energy
  *                conserved at e = 1 to that accuracy; the relative normal
  *                velocity is reversed exactly in sign (no false SEPARATING).
+ *   axis-aligned when the centres share an x or a y coordinate exactly, every
+ *                output is correctly rounded (the representable value
+ *                nearest the exact result, ties to even): equal masses at
+ *                e = 1 swap their normal components exactly, an immovable
+ *                wall at e = 1 negates it exactly, the other component is
+ *                returned bit for bit (Newton's cradle: README).
  *   a == b (same pointer) is C2D_DEGENERATE. */
 c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution);
 
 /* As c2d_collide, with the contact normal given: any finite non-zero vector
  * of any length (subnormal to DBL_MAX), pointing from a towards b.  Positions
  * are ignored apart from validation (they must be finite).  A zero normal is
- * C2D_DEGENERATE.  Use it for walls: b.mass = INFINITY, normal = wall normal. */
+ * C2D_DEGENERATE.  Use it for walls: b.mass = INFINITY, normal = wall normal.
+ * A normal with one zero component gives correctly rounded outputs, as
+ * c2d_collide's axis-aligned case. */
 c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution);
 
 /* Time of impact of two disks moving with constant velocity: the earliest
@@ -142,9 +154,11 @@ c2d_status c2d_time_of_impact(const c2d_body *a, const c2d_body *b, double radiu
  * Pair i is (pos_ax[i], pos_ay[i], vel_ax[i], vel_ay[i], mass_a[i]) against
  * the same fields of b.  Every pair is resolved exactly as c2d_collide would
  * (bit-identical results and statuses); pairs in the well-scaled common case
- * run through a branch-free kernel in blocks of 16 that -O2 vectorises
- * (clang; gcc 12 for float on baseline x86-64, for double from x86-64-v2),
- * the others fall back to the scalar path.  Arrays must not overlap.
+ * run through a branch-free kernel in blocks of 16 that -O2 vectorises, the
+ * others take the scalar call.  Built by gcc for hosted x86-64, the kernel
+ * is chosen at load time for the CPU (SSE2, SSE4.2, AVX2 or AVX-512;
+ * C2D_NO_DISPATCH turns this off); clang vectorises it at baseline.  Arrays
+ * must not overlap.
  *   status       NULL, or an array of `count` statuses to fill.
  *   returns      the number of pairs with status C2D_OK; 0 if p is NULL. */
 typedef struct c2d_pairs {

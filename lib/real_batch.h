@@ -91,7 +91,8 @@ static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, 
         const c2d_real least = geometry < lighter ? geometry : lighter;
         /* Truth values in the floating type's width (c2d_real_bits), combined
          * with & and |: no branch, and no narrowing of a comparison's mask. */
-        const c2d_real_bits window = (c2d_real_bits)((k + nn) + (ma[j] + mb[j]) <= hi) & (c2d_real_bits)(least >= lo);
+        const c2d_real_bits window = (c2d_real_bits)((k + nn) + (ma[j] + mb[j]) <= hi) & (c2d_real_bits)(least >= lo) &
+                                     (c2d_real_bits)(nx != 0) & (c2d_real_bits)(ny != 0); /* axes: scalar */
         const c2d_real_bits ok = window & (c2d_real_bits)(4 * d + k <= 0);
         const c2d_real den = nn * (ma[j] + mb[j]);
         const c2d_real c = e1 * d / den;

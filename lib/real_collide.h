@@ -1,6 +1,6 @@
 /* real_collide.h - template: c2d_collide and c2d_collide_normal, the three
  * tiers chained.  Needs real_bits.h, real_exact.h, real_fast.h and
- * real_general.h first.
+ * real_general.h first (and real_axis.h after).
  *
  * THE TIERS
  *   1. The fast path (real_fast.h): plain arithmetic, branch-free, when every
@@ -128,6 +128,10 @@ C2D_COLD c2d_status c2d_collide_accurate(c2d_real_body *a, c2d_real_body *b, c2d
     return c2d_resolve(a, b, &nh, &nl, restitution);
 }
 
+/* Axis-aligned impacts, correctly rounded: real_axis.h. */
+C2D_COLD c2d_status c2d_axis_impact(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *given, int axis, int sign,
+                                    c2d_real restitution);
+
 /* Tier 2 for a pair the front end (c2d_quick) found valid and inside its
  * window, but whose d cancels: c2d_accurate's arithmetic without the checks
  * the window makes redundant.  With k, n.n and the masses in [W^-1, W] and
@@ -210,6 +214,11 @@ static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2
         return C2D_OK;
     }
     if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
+    if (v == C2D_VERDICT_AXIS) {
+        const int axis = b->pos.x == a->pos.x ? 1 : 0;
+        const c2d_real pa = axis == 0 ? a->pos.x : a->pos.y, pb = axis == 0 ? b->pos.x : b->pos.y;
+        return c2d_axis_impact(a, b, NULL, axis, (pb > pa) - (pb < pa), restitution);
+    }
     /* A valid pair whose d cancels: where the fast path would send it, unless
      * the positions are so large that c2d_collide_slow takes another route. */
     if (v == C2D_VERDICT_ACCURATE && c2d_abs(a->pos.x) + c2d_abs(a->pos.y) + c2d_abs(b->pos.x) + c2d_abs(b->pos.y) <
@@ -269,6 +278,11 @@ static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body
         return C2D_OK;
     }
     if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
+    if (v == C2D_VERDICT_AXIS) {
+        const int axis = normal->x == 0 ? 1 : 0;
+        const c2d_real ni = axis == 0 ? normal->x : normal->y;
+        return c2d_axis_impact(a, b, normal, axis, (ni > 0) - (ni < 0), restitution);
+    }
     if (v == C2D_VERDICT_ACCURATE) {
         c2d_real_vec zero;
         zero.x = 0;

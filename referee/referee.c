@@ -2,6 +2,8 @@
 
 #include <math.h>
 #include <mpfr.h>
+#include <stdint.h>
+#include <string.h>
 
 void ref_answer_init(ref_answer *r)
 {
@@ -293,4 +295,51 @@ void ref_conservation(const ref_case *c, const double got[4], double *momentum_r
         *energy_rel = mpq_get_d(t);
     }
     mpq_clears(pb, pa, eb, ea, m, v, t, scale, NULL);
+}
+
+/* out = |n - exact| for got's neighbour n towards dir in the format; past
+ * the largest finite value n is the power of two just beyond it (2^1024,
+ * 2^128), where IEEE rounding puts the next value. */
+static void ref_neighbour_distance(mpq_t out, double got, double dir, const mpq_t exact, int is_float)
+{
+    double n = is_float ? (double)nextafterf((float)got, (float)dir) : nextafter(got, dir);
+    if (isinf(n)) {
+        mpz_t p;
+        mpz_init(p);
+        mpz_ui_pow_ui(p, 2, is_float ? 128 : 1024);
+        mpq_set_z(out, p);
+        if (dir < 0) mpq_neg(out, out);
+        mpz_clear(p);
+    } else {
+        mpq_set_d(out, n);
+    }
+    mpq_sub(out, out, exact);
+    mpq_abs(out, out);
+}
+
+int ref_correctly_rounded(double got, const mpq_t exact, int is_float)
+{
+    mpq_t dg, du, dd;
+    int ok, tie, even;
+    uint64_t u;
+    if (!isfinite(got)) return 0;
+    mpq_inits(dg, du, dd, NULL);
+    mpq_set_d(dg, got);
+    mpq_sub(dg, dg, exact);
+    mpq_abs(dg, dg);
+    ref_neighbour_distance(du, got, INFINITY, exact, is_float);
+    ref_neighbour_distance(dd, got, -INFINITY, exact, is_float);
+    tie = mpq_cmp(dg, du) == 0 || mpq_cmp(dg, dd) == 0;
+    if (is_float) {
+        float f = (float)got;
+        uint32_t w;
+        memcpy(&w, &f, sizeof w);
+        u = w;
+    } else {
+        memcpy(&u, &got, sizeof u);
+    }
+    even = (u & 1u) == 0;
+    ok = mpq_cmp(dg, du) <= 0 && mpq_cmp(dg, dd) <= 0 && (!tie || even);
+    mpq_clears(dg, du, dd, NULL);
+    return ok;
 }

@@ -47,6 +47,12 @@ double ref_collide_err(const ref_case *c, const ref_answer *r, const double got[
  * sqrt(b^2 - ac) / R): the time one rounding of the distance is worth. */
 c2d_status ref_time_of_impact(const ref_case *c, double radius_sum, double *t, double *unit, int prec, int emin);
 
+/* Is got the representable value nearest to exact (ties to the even
+ * significand), in double (is_float 0) or float (1), subnormals included?
+ * Past the largest finite value the neighbour is 2^1024 (2^128), the value
+ * IEEE rounding treats as the next one. */
+int ref_correctly_rounded(double got, const mpq_t exact, int is_float);
+
 /* Exact (mpq) momentum and energy error of a collision result relative to
  * the total momentum / energy magnitude; immovable bodies are excluded. */
 void ref_conservation(const ref_case *c, const double got[4], double *momentum_rel, double *energy_rel);
