@@ -127,7 +127,8 @@ def collide(a, b, restitution):
     b.pos - a.pos, taken exactly.  restitution e in [0, 1]: the relative
     normal velocity after is -e times the one before.  Writes a.vel, b.vel
     (in the velocity unit of the inputs) on Status.OK.  Accuracy: each output
-    component within 16 ulp of its body's velocity scale."""
+    component within 16 ulp of its body's velocity scale; correctly rounded
+    when the centres share an x or a y coordinate (axis-aligned)."""
     return _call("c2d_collide", a, b, restitution)
 
 
