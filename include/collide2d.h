@@ -285,6 +285,152 @@ c2d_status c2d_collide_normalx(c2d_bodyx *a, c2d_bodyx *b, c2d_vec2x normal, c2d
 c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed radius_sum, c2d_fixed *t);
 #endif
 
+/* ----------------------------------------- opt-in inline front ends
+ * #define C2D_INLINE before including this header to get
+ *   c2d_collide_inline, c2d_collide_normal_inline (double) and
+ *   c2d_collidef_inline, c2d_collide_normalf_inline (float):
+ * static inline front ends with the library's own input-only accept test,
+ * which resolve the common case at the call site and call c2d_collide (or
+ * its twin) for everything else.  Same statuses, same bits as the library
+ * call (tests/unit/test_inline.c checks it), provided the compiler evaluates
+ * them as written: no -ffast-math and no FMA contraction.  The header turns
+ * them on (C2D_INLINE_AS_WRITTEN 1) only where it can tell: clang (the
+ * functions switch contraction off themselves), gcc in strict ISO mode
+ * (-std=c99, c11, c++11...: contraction off by default) or for a target
+ * without FMA; elsewhere they are plain calls of the library functions.
+ * One case no macro shows: -ffp-contract=fast given explicitly with -std=c99
+ * on gcc for an FMA target.  Don't combine it with C2D_INLINE. */
+#if defined(C2D_INLINE)
+#if !defined(__FAST_MATH__) && (defined(__clang__) || (defined(__GNUC__) && (defined(__STRICT_ANSI__) || \
+    !(defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)))))
+#define C2D_INLINE_AS_WRITTEN 1
+#else
+#define C2D_INLINE_AS_WRITTEN 0
+#endif
+
+#if C2D_INLINE_AS_WRITTEN && !defined(C2D_NO_DOUBLE)
+/* Internal to the inline front ends: the accept test for a normal (nx, ny)
+ * off the axes; 1 with *st set when it decides (velocities written on OK). */
+static inline int c2d_inline_front(double nx, double ny, c2d_body *a, c2d_body *b, double e1, c2d_status *st)
+{
+#ifdef __clang__
+#pragma clang fp contract(off)
+#endif
+    const double hi = 1.6069380442589903e60, lo = 6.2230152778611417e-61; /* 2^200, 2^-200 */
+    const double px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
+    const double d = px + py, k = (px < 0 ? -px : px) + (py < 0 ? -py : py), nn = nx * nx + ny * ny;
+    const double geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
+    if (nx == 0 || ny == 0 || !((k + nn) + (a->mass + b->mass) <= hi && (geometry < lighter ? geometry : lighter) >= lo))
+        return 0;
+    if (4 * d + k <= 0) {
+        const double den = nn * (a->mass + b->mass);
+        const double c = e1 * d / den;
+        const double la = c * b->mass, lb = c * a->mass;
+        a->vel.x = a->vel.x + la * nx;
+        a->vel.y = a->vel.y + la * ny;
+        b->vel.x = b->vel.x - lb * nx;
+        b->vel.y = b->vel.y - lb * ny;
+        *st = C2D_OK;
+        return 1;
+    }
+    if (4 * d - k >= 0) {
+        *st = C2D_SEPARATING;
+        return 1;
+    }
+    return 0;
+}
+
+static inline c2d_status c2d_collide_inline(c2d_body *a, c2d_body *b, double restitution)
+{
+    c2d_status st;
+    if (a != NULL && b != NULL && restitution >= 0 && restitution <= 1 &&
+        c2d_inline_front(b->pos.x - a->pos.x, b->pos.y - a->pos.y, a, b, 1 + restitution, &st))
+        return st;
+    return c2d_collide(a, b, restitution);
+}
+
+static inline c2d_status c2d_collide_normal_inline(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution)
+{
+    c2d_status st;
+    if (a != NULL && b != NULL && a != b && restitution >= 0 && restitution <= 1 &&
+        ((a->pos.x - a->pos.x) + (a->pos.y - a->pos.y)) + ((b->pos.x - b->pos.x) + (b->pos.y - b->pos.y)) == 0 &&
+        c2d_inline_front(normal.x, normal.y, a, b, 1 + restitution, &st))
+        return st;
+    return c2d_collide_normal(a, b, normal, restitution);
+}
+#elif !defined(C2D_NO_DOUBLE)
+static inline c2d_status c2d_collide_inline(c2d_body *a, c2d_body *b, double restitution)
+{
+    return c2d_collide(a, b, restitution);
+}
+
+static inline c2d_status c2d_collide_normal_inline(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution)
+{
+    return c2d_collide_normal(a, b, normal, restitution);
+}
+#endif
+
+#if C2D_INLINE_AS_WRITTEN && !defined(C2D_NO_FLOAT)
+static inline int c2d_inline_frontf(float nx, float ny, c2d_bodyf *a, c2d_bodyf *b, float e1, c2d_status *st)
+{
+#ifdef __clang__
+#pragma clang fp contract(off)
+#endif
+    const float hi = 1048576.0f, lo = 9.5367431640625e-07f; /* 2^20, 2^-20 */
+    const float px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
+    const float d = px + py, k = (px < 0 ? -px : px) + (py < 0 ? -py : py), nn = nx * nx + ny * ny;
+    const float geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
+    if (nx == 0 || ny == 0 || !((k + nn) + (a->mass + b->mass) <= hi && (geometry < lighter ? geometry : lighter) >= lo))
+        return 0;
+    if (4 * d + k <= 0) {
+        const float den = nn * (a->mass + b->mass);
+        const float c = e1 * d / den;
+        const float la = c * b->mass, lb = c * a->mass;
+        a->vel.x = a->vel.x + la * nx;
+        a->vel.y = a->vel.y + la * ny;
+        b->vel.x = b->vel.x - lb * nx;
+        b->vel.y = b->vel.y - lb * ny;
+        *st = C2D_OK;
+        return 1;
+    }
+    if (4 * d - k >= 0) {
+        *st = C2D_SEPARATING;
+        return 1;
+    }
+    return 0;
+}
+
+static inline c2d_status c2d_collidef_inline(c2d_bodyf *a, c2d_bodyf *b, float restitution)
+{
+    c2d_status st;
+    if (a != NULL && b != NULL && restitution >= 0 && restitution <= 1 &&
+        c2d_inline_frontf(b->pos.x - a->pos.x, b->pos.y - a->pos.y, a, b, 1 + restitution, &st))
+        return st;
+    return c2d_collidef(a, b, restitution);
+}
+
+static inline c2d_status c2d_collide_normalf_inline(c2d_bodyf *a, c2d_bodyf *b, c2d_vec2f normal, float restitution)
+{
+    c2d_status st;
+    if (a != NULL && b != NULL && a != b && restitution >= 0 && restitution <= 1 &&
+        ((a->pos.x - a->pos.x) + (a->pos.y - a->pos.y)) + ((b->pos.x - b->pos.x) + (b->pos.y - b->pos.y)) == 0 &&
+        c2d_inline_frontf(normal.x, normal.y, a, b, 1 + restitution, &st))
+        return st;
+    return c2d_collide_normalf(a, b, normal, restitution);
+}
+#elif !defined(C2D_NO_FLOAT)
+static inline c2d_status c2d_collidef_inline(c2d_bodyf *a, c2d_bodyf *b, float restitution)
+{
+    return c2d_collidef(a, b, restitution);
+}
+
+static inline c2d_status c2d_collide_normalf_inline(c2d_bodyf *a, c2d_bodyf *b, c2d_vec2f normal, float restitution)
+{
+    return c2d_collide_normalf(a, b, normal, restitution);
+}
+#endif
+#endif /* C2D_INLINE */
+
 #ifdef __cplusplus
 }
 #endif

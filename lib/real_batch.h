@@ -104,10 +104,10 @@ static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, 
         keep[j] = (c2d_real_bits)0 - ok;
         lane[j] = ok | (window & (c2d_real_bits)(4 * d - k >= 0)) << 1;
     }
-    c2d_batch_commit(p->vel_ax + base, out[0], keep);
-    c2d_batch_commit(p->vel_ay + base, out[1], keep);
-    c2d_batch_commit(p->vel_bx + base, out[2], keep);
-    c2d_batch_commit(p->vel_by + base, out[3], keep);
+    c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep);
+    c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep);
+    c2d_batch_commit(&p->vel_bx[base], &out[2][0], keep);
+    c2d_batch_commit(&p->vel_by[base], &out[3][0], keep);
 }
 
 /* One lane the kernel did not settle: the whole scalar call. */

@@ -215,9 +215,9 @@ static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2
     }
     if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
     if (v == C2D_VERDICT_AXIS) {
-        const int axis = b->pos.x == a->pos.x ? 1 : 0;
-        const c2d_real pa = axis == 0 ? a->pos.x : a->pos.y, pb = axis == 0 ? b->pos.x : b->pos.y;
-        return c2d_axis_impact(a, b, NULL, axis, (pb > pa) - (pb < pa), restitution);
+        const int on_y = b->pos.x == a->pos.x; /* the centres share x: the normal is along y */
+        const c2d_real pa = on_y != 0 ? a->pos.y : a->pos.x, pb = on_y != 0 ? b->pos.y : b->pos.x;
+        return c2d_axis_impact(a, b, NULL, on_y, pb > pa ? 1 : (pb < pa ? -1 : 0), restitution);
     }
     /* A valid pair whose d cancels: where the fast path would send it, unless
      * the positions are so large that c2d_collide_slow takes another route. */
@@ -279,9 +279,9 @@ static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body
     }
     if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
     if (v == C2D_VERDICT_AXIS) {
-        const int axis = normal->x == 0 ? 1 : 0;
-        const c2d_real ni = axis == 0 ? normal->x : normal->y;
-        return c2d_axis_impact(a, b, normal, axis, (ni > 0) - (ni < 0), restitution);
+        const int on_y = normal->x == 0;
+        const c2d_real ni = on_y != 0 ? normal->y : normal->x;
+        return c2d_axis_impact(a, b, normal, on_y, ni > 0 ? 1 : (ni < 0 ? -1 : 0), restitution);
     }
     if (v == C2D_VERDICT_ACCURATE) {
         c2d_real_vec zero;

@@ -96,7 +96,7 @@ static void c2d_round_quotient(c2d_real *r, const c2d_xf *num, int nn, const c2d
     c2d_acc acc;
     c2d_xf nv, dv, qx;
     c2d_real q;
-    int i, step;
+    int i, step, decided = 0;
     c2d_acc_clear(&acc);
     for (i = 0; i < nn; i++) c2d_acc_add(&acc, &num[i], 1);
     c2d_acc_value(&nv, &acc);
@@ -111,20 +111,25 @@ static void c2d_round_quotient(c2d_real *r, const c2d_xf *num, int nn, const c2d
     q = c2d_scale2(qx.m, qx.e);
     if (!(q - q == 0)) q = q > 0 ? C2D_R_MAX : -C2D_R_MAX; /* the steps decide overflow exactly */
     /* q starts within a few ulp; each step moves one ulp towards N / D. */
-    for (step = 0; step < 8 && q - q == 0; step++) {
+    for (step = 0; step < 8 && decided == 0; step++) {
         const int r_sign = c2d_remainder_sign(num, nn, den, nd, q);
-        c2d_real q_next;
-        int beyond;
-        if (r_sign == 0) break; /* exact */
-        q_next = c2d_next(q, r_sign);
-        /* Past the largest finite value the gap is the one below it. */
-        beyond = c2d_beyond_half(num, nn, den, nd, q, q_next - q_next == 0 ? q_next : c2d_next(q, -r_sign), r_sign);
-        if (beyond < 0) break;
-        if (beyond == 0) {
-            if ((c2d_bits(q) & 1u) != 0) q = q_next; /* the tie goes to the even significand */
-            break;
+        if (r_sign == 0) {
+            decided = 1; /* exact */
+        } else {
+            const c2d_real q_next = c2d_next(q, r_sign);
+            /* Past the largest finite value the gap is the one below it. */
+            const int beyond =
+                c2d_beyond_half(num, nn, den, nd, q, q_next - q_next == 0 ? q_next : c2d_next(q, -r_sign), r_sign);
+            if (beyond < 0) {
+                decided = 1;
+            } else if (beyond == 0) {
+                if ((c2d_bits(q) & 1u) != 0) q = q_next; /* the tie goes to the even significand */
+                decided = 1;
+            } else {
+                q = q_next;
+                if (!(q - q == 0)) decided = 1; /* Inf: past the largest finite value */
+            }
         }
-        q = q_next;
     }
     *r = q;
 }

@@ -80,5 +80,26 @@ if [ "$(uname -m)" = x86_64 ]; then
     check "clang -O2 vectorises both batch kernels" \
         test "$(vectorised_loops clang -Rpass=loop-vectorize)" -ge 2
 fi
+# The opt-in inline front ends (C2D_INLINE): warning-free in a translation
+# unit under gcc, clang and g++, on where the header can tell the compiler
+# evaluates as written and off (plain calls) where it cannot.
+inline_tu() {
+    printf '#define C2D_INLINE\n#include "collide2d.h"\nint c2d_as_written(void);\nint c2d_as_written(void) { return C2D_INLINE_AS_WRITTEN; }\n' >"$out/inline.c"
+}
+inline_flag() { # compiler flags... -> C2D_INLINE_AS_WRITTEN
+    printf '#define C2D_INLINE\n#include "collide2d.h"\nC2D_INLINE_AS_WRITTEN\n' | "$@" -Iinclude -E -x c - | tail -n 1
+}
+inline_tu
+for cc in gcc clang; do
+    check "$cc compiles the C2D_INLINE front ends" $cc $strict -O2 -Iinclude -c "$out/inline.c" -o "$out/inline.o"
+done
+check "g++ compiles the C2D_INLINE front ends" g++ -std=c++11 -pedantic -Wall -Wextra -Werror -O2 -Iinclude -x c++ -c \
+    "$out/inline.c" -o "$out/inline.o"
+check "C2D_INLINE is on in ISO C (gcc)" test "$(inline_flag gcc -std=c99)" = 1
+check "C2D_INLINE is off under -ffast-math" test "$(inline_flag gcc -std=c99 -ffast-math)" = 0
+if [ "$(uname -m)" = x86_64 ]; then
+    check "C2D_INLINE is off for gnu99 on an FMA target (gcc contracts)" \
+        test "$(inline_flag gcc -std=gnu99 -march=x86-64-v3)" = 0
+fi
 check "header compiles as C++ (g++ -std=c++11)" g++ -std=c++11 -pedantic -Wall -Wextra -Werror -fsyntax-only -x c++ include/collide2d.h
 c2d_summary
