@@ -12,6 +12,7 @@ CXXFLAGS ?= -O2
 PREFIX ?= /usr/local
 LIBDIR ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
+MANDIR ?= $(PREFIX)/share/man
 DESTDIR ?=
 
 VERSION_MAJOR := $(shell sed -n 's/^\#define C2D_VERSION_MAJOR \([0-9]*\)/\1/p' include/collide2d.h)
@@ -42,6 +43,7 @@ SONAME := libcollide2d.so.$(VERSION_MAJOR)
 SHARED := $(B)/libcollide2d.so.$(VERSION)
 AMALGAMATION := $(B)/collide2d_all.c
 
+FORCE:
 .PHONY: all lib amalgamate test test-unit check-deps-test check-vectors check-build vectors install uninstall clean demo play bench cross test-mcu lint fuzz
 all: lib
 lib: $(STATIC) $(B)/libcollide2d.so $(B)/collide2d.pc
@@ -65,12 +67,18 @@ $(B)/libcollide2d.so: $(SHARED)
 	ln -sf libcollide2d.so.$(VERSION) $(B)/$(SONAME)
 	ln -sf libcollide2d.so.$(VERSION) $@
 
-$(B)/collide2d.pc: Makefile $(LIB_HDR)
+# collide2d.pc (from collide2d.pc.in, as CMake writes it) names libdir and
+# includedir relative to ${prefix} when they lie under it, so pkg-config
+# --define-prefix works on a moved tree.  Regenerated on every make and
+# replaced only when it differs: a change of PREFIX, LIBDIR or INCLUDEDIR
+# rebuilds it, an unchanged one keeps its time stamp.
+pc_dir = $(if $(filter $(PREFIX)/%,$(1)),$${prefix}/$(patsubst $(PREFIX)/%,%,$(1)),$(1))
+$(B)/collide2d.pc: collide2d.pc.in FORCE
 	@mkdir -p $(@D)
-	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
-	  'Name: collide2d' 'Description: Exact, robust 2-D disk collisions (C99, no dependencies)' \
-	  'Version: $(VERSION)' 'Libs: -L$${libdir} -lcollide2d' 'Libs.private: -lm' \
-	  'Cflags: -I$${includedir}' > $@
+	@sed -e 's|@C2D_PC_PREFIX@|$(PREFIX)|' -e 's|@C2D_PC_LIBDIR@|$(call pc_dir,$(LIBDIR))|' \
+	  -e 's|@C2D_PC_INCLUDEDIR@|$(call pc_dir,$(INCLUDEDIR))|' -e 's|@C2D_PC_VERSION@|$(VERSION)|' \
+	  -e 's|@C2D_PC_CFLAGS@||' collide2d.pc.in > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@ && echo "wrote $@ (prefix $(PREFIX))"; fi
 
 # The whole library as one self-contained source, for firmware trees that
 # take one .c file beside the header (scripts/amalgamate.sh).
@@ -79,19 +87,29 @@ $(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(wildcard lib/*.h)
 	@mkdir -p $(@D)
 	sh scripts/amalgamate.sh $@
 
+# Directories install creates are listed in build/install-dirs.txt, so
+# uninstall removes those (once empty) and no other (scripts/installdirs.sh).
+MAN_PAGES := $(wildcard man/*.3)
+MAN3 = $(DESTDIR)$(MANDIR)/man3
+INSTALL_DIRS = $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR) $(MAN3)
 install: lib
-	install -d $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR)
+	sh scripts/installdirs.sh create build/install-dirs.txt $(INSTALL_DIRS)
 	install -m 644 $(LIB_HDR) $(DESTDIR)$(INCLUDEDIR)/collide2d.h
 	install -m 644 $(STATIC) $(DESTDIR)$(LIBDIR)/libcollide2d.a
 	install -m 755 $(SHARED) $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)
 	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcollide2d.so
 	install -m 644 $(B)/collide2d.pc $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
+	install -m 644 $(MAN_PAGES) $(MAN3)
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do ln -sf $$page $(MAN3)/$$name || exit 1; done
 
 uninstall:
 	rm -f $(DESTDIR)$(INCLUDEDIR)/collide2d.h $(DESTDIR)$(LIBDIR)/libcollide2d.a \
 	  $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME) \
-	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
+	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc \
+	  $(addprefix $(MAN3)/,$(notdir $(MAN_PAGES)))
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do rm -f $(MAN3)/$$name; done
+	sh scripts/installdirs.sh remove build/install-dirs.txt $(INSTALL_DIRS)
 
 clean:
 	rm -rf build
@@ -157,6 +175,11 @@ LINT_TARGETS :=
 -include tests/mcu/mcu.mk
 -include tests/fuzz/fuzz.mk
 -include tests/build/lint.mk
+-include tests/consumers/consumers.mk
+-include examples/examples.mk
+-include python/python.mk
+-include man/man.mk
+-include tests/cross/cross.mk
 
 # Static analysis: fragments append to LINT_TARGETS.
 lint: $(LINT_TARGETS)

@@ -59,7 +59,7 @@
 #include <stdint.h>
 
 #define C2D_VERSION_MAJOR 1
-#define C2D_VERSION_MINOR 0
+#define C2D_VERSION_MINOR 1
 #define C2D_VERSION_PATCH 0
 /* MAJOR * 10000 + MINOR * 100 + PATCH, the value c2d_version() returns. */
 #define C2D_VERSION \

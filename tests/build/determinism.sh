@@ -17,7 +17,7 @@ std="-std=c99 -ffp-contract=off -Iinclude"
 # The harness (hash_vectors.c and the shared helper it uses) is built once.
 harness() {
     mkdir -p "$out/harness" &&
-        for f in tests/build/hash_vectors.c tests/harness/*.c; do
+        for f in tests/build/hash_vectors.c tests/build/hash_cases.c tests/harness/*.c; do
             gcc -O2 $std -Ireferee -Itests/harness -c "$f" -o "$out/harness/$(basename "$f" .c).o" || return 1
         done
 }
