@@ -51,6 +51,13 @@
 #include "real_toi.h"
 #include "real_dd.h"
 #include "real_rough.h"
+#include "real_toia_num.h"
+#include "real_toia_problem.h"
+#include "real_toia_eval.h"
+#include "real_toia_newton.h"
+#include "real_toia_turns.h"
+#include "real_toia_scan.h"
+#include "real_toia.h"
 
 c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution)
 {
@@ -80,6 +87,12 @@ c2d_status c2d_collide_rough(c2d_disk *a, c2d_disk *b, c2d_surface s)
 c2d_status c2d_collide_rough_normal(c2d_disk *a, c2d_disk *b, c2d_vec2 normal, c2d_surface s)
 {
     return c2d_real_collide_rough(a, b, &normal, &s);
+}
+
+c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a, const c2d_body *b, c2d_vec2 acc_b,
+                                    double radius_sum, double horizon, double *t)
+{
+    return c2d_toia_solve(a, &acc_a, b, &acc_b, radius_sum, horizon, t);
 }
 
 #endif /* C2D_NO_DOUBLE */

@@ -52,6 +52,13 @@
 #include "real_toi.h"
 #include "real_dd.h"
 #include "real_rough.h"
+#include "real_toia_num.h"
+#include "real_toia_problem.h"
+#include "real_toia_eval.h"
+#include "real_toia_newton.h"
+#include "real_toia_turns.h"
+#include "real_toia_scan.h"
+#include "real_toia.h"
 
 c2d_status c2d_collidef(c2d_bodyf *a, c2d_bodyf *b, float restitution)
 {
@@ -81,6 +88,12 @@ c2d_status c2d_collide_roughf(c2d_diskf *a, c2d_diskf *b, c2d_surfacef s)
 c2d_status c2d_collide_rough_normalf(c2d_diskf *a, c2d_diskf *b, c2d_vec2f normal, c2d_surfacef s)
 {
     return c2d_real_collide_rough(a, b, &normal, &s);
+}
+
+c2d_status c2d_time_of_impact_accelf(const c2d_bodyf *a, c2d_vec2f acc_a, const c2d_bodyf *b, c2d_vec2f acc_b,
+                                    float radius_sum, float horizon, float *t)
+{
+    return c2d_toia_solve(a, &acc_a, b, &acc_b, radius_sum, horizon, t);
 }
 
 #endif /* C2D_NO_FLOAT */

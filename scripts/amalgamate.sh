@@ -38,7 +38,9 @@ template_names() {
         /^typedef / { s = $0; sub(/.*\}/, "", s); sub(/;.*/, "", s); n = split(s, w, /[ *{}]+/); print w[n]
                       if ($2 ~ /^(struct|union|enum)$/) print $3 }
         /^enum / { if ($2 ~ /^c2d_/) print $2 }
-        /^ *C2D_[A-Z0-9_]+ = / { s = $0; sub(/^ */, "", s); sub(/ .*/, "", s); print s }
+        /^(typedef )?enum [a-z0-9_]* *\{ *$/ { in_enum = 1; next }
+        in_enum && /^ *\}/ { in_enum = 0 }
+        in_enum && /^ *C2D_[A-Z0-9_]+/ { s = $0; sub(/^ */, "", s); sub(/[ ,=].*/, "", s); print s }
         /^enum \{/ { s = $0; while (match(s, /C2D_[A-Z0-9_]+ =/)) { print substr(s, RSTART, RLENGTH - 2); s = substr(s, RSTART + RLENGTH) } }' |
         sort -u
 }
