@@ -177,21 +177,47 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The canary of a round (as ratio.c's): the seed transcription's pass,
+ * whose time tells a quiet machine from a busy one. */
+static double canary_pass(timing_data *t)
+{
+    static const contender seed = {"canary", "canary", KIND_DOUBLE, bench_seed_equal, 1, 0};
+    return time_pass(t, &seed);
+}
+
+int timing_quiet_rounds, timing_rounds_run;
+double bench_canary_best = INFINITY;
+
 void timing_run(timing_data *t, int rounds, double *ns)
 {
-    const int kn = bench_ncontenders + 1; /* the last slot: the empty call */
-    double *all = malloc((size_t)(kn * rounds) * sizeof *all);
-    int r, j;
-    for (r = 0; r < rounds; r++)
+    const int kn = bench_ncontenders + 1, most = 5 * rounds; /* the last slot: the empty call */
+    double *all = malloc((size_t)(kn * most) * sizeof *all), *canary = malloc((size_t)most * sizeof *canary);
+    double *v = malloc((size_t)most * sizeof *v);
+    int r, j, quiet = 0, done;
+    /* `rounds` rounds, and more (up to five times as many) until enough of
+     * them are quiet against the best canary seen in this run of the bench */
+    for (r = 0; r < most && (r < rounds || quiet < RATIO_MIN_QUIET); r++) {
+        canary[r] = canary_pass(t);
+        if (canary[r] < bench_canary_best) bench_canary_best = canary[r];
+        quiet += canary[r] <= 1.10 * bench_canary_best;
         for (j = 0; j < kn; j++) {
             int idx = (j + r) % kn; /* rotate the order: no contender always runs first */
-            all[idx * rounds + r] = time_pass(t, idx < bench_ncontenders ? &bench_contenders[idx] : NULL);
+            all[idx * most + r] = time_pass(t, idx < bench_ncontenders ? &bench_contenders[idx] : NULL);
         }
-    for (j = 0; j < kn; j++) {
-        qsort(all + j * rounds, (size_t)rounds, sizeof *all, cmp_double);
-        ns[j] = all[j * rounds + rounds / 2];
     }
-    free(all);
+    done = r;
+    for (quiet = 0, r = 0; r < done; r++) quiet += canary[r] <= 1.10 * bench_canary_best;
+    timing_quiet_rounds = quiet;
+    timing_rounds_run = done;
+    /* The median over the quiet rounds when there are enough (ratio.c). */
+    for (j = 0; j < kn; j++) {
+        int m = 0;
+        for (r = 0; r < done; r++)
+            if (quiet < RATIO_MIN_QUIET || canary[r] <= 1.10 * bench_canary_best) v[m++] = all[j * most + r];
+        qsort(v, (size_t)m, sizeof *v, cmp_double);
+        ns[j] = v[m / 2];
+    }
+    free(all), free(canary), free(v);
 }
 
 void callgrind_run(timing_data *t, int n, const char *label)
