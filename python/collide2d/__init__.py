@@ -32,8 +32,10 @@ from . import _native
 __all__ = [
     "Status", "version", "status_string", "LIB_PATH",
     "Vec2", "Body", "Disk", "Surface", "Vec2f", "Bodyf", "Diskf", "Surfacef",
-    "collide", "collide_normal", "time_of_impact", "collide_rough", "collide_rough_normal",
-    "collidef", "collide_normalf", "time_of_impactf", "collide_roughf", "collide_rough_normalf",
+    "collide", "collide_normal", "time_of_impact", "time_of_impact_accel", "collide_rough",
+    "collide_rough_normal",
+    "collidef", "collide_normalf", "time_of_impactf", "time_of_impact_accelf", "collide_roughf",
+    "collide_rough_normalf",
     "collide_batch", "collide_batchf",
 ]
 
@@ -149,6 +151,18 @@ def time_of_impact(a, b, radius_sum):
     return _call("c2d_time_of_impact", a, b, radius_sum)
 
 
+def time_of_impact_accel(a, acc_a, b, acc_b, radius_sum, horizon=float("inf")):
+    """Time of impact of two disks (Body) moving with constant accelerations
+    acc_a, acc_b (Vec2 or (x, y)): p(t) = pos + vel t + acc t^2 / 2.  The
+    earliest t in [0, horizon] at which they touch while approaching
+    (horizon: until either motion changes, math.inf allowed).  Returns
+    (Status, t): t on Status.OK, None otherwise (SEPARATING: no contact in
+    the horizon, a graze, no relative motion; RANGE: beyond the format).
+    Accuracy: within 1 unit of ulp(t) + ulp(|d|) / approach speed; the status
+    is certified (see the C header for the ~2^-96 tie band)."""
+    return _call("c2d_time_of_impact_accel", a, acc_a, b, acc_b, radius_sum, horizon)
+
+
 def collide_rough(a, b, surface):
     """Impact of two rough disks (Disk: pos, vel, spin in rad per time unit
     counter-clockwise, mass, radius, inertia = moment of inertia about the
@@ -182,6 +196,11 @@ def collide_normalf(a, b, normal, restitution):
 def time_of_impactf(a, b, radius_sum):
     """Float twin of time_of_impact (Bodyf): returns (Status, t or None)."""
     return _call("c2d_time_of_impactf", a, b, radius_sum)
+
+
+def time_of_impact_accelf(a, acc_a, b, acc_b, radius_sum, horizon=float("inf")):
+    """Float twin of time_of_impact_accel (Bodyf, Vec2f; band ~2^-38)."""
+    return _call("c2d_time_of_impact_accelf", a, acc_a, b, acc_b, radius_sum, horizon)
 
 
 def collide_roughf(a, b, surface):

@@ -121,6 +121,8 @@ def _prototypes(t, real, sfx):
         "c2d_collide" + sfx: (p(t["Body"]), p(t["Body"]), real),
         "c2d_collide_normal" + sfx: (p(t["Body"]), p(t["Body"]), t["Vec2"], real),
         "c2d_time_of_impact" + sfx: (p(t["Body"]), p(t["Body"]), real, Out(real)),
+        "c2d_time_of_impact_accel" + sfx: (p(t["Body"]), t["Vec2"], p(t["Body"]), t["Vec2"], real, real,
+                                           Out(real)),
         "c2d_collide_rough" + sfx: (p(t["Disk"]), p(t["Disk"]), t["Surface"]),
         "c2d_collide_rough_normal" + sfx: (p(t["Disk"]), p(t["Disk"]), t["Vec2"], t["Surface"]),
         "c2d_collide_batch" + sfx: (p(t["Pairs"]), ctypes.c_size_t, real, p(ctypes.c_int)),
@@ -130,9 +132,8 @@ def _prototypes(t, real, sfx):
 # Every entry point: its argument types; each returns c2d_status (a C int)
 # but the batch, which returns size_t.  An Out(...) argument is allocated by
 # the wrapper and returned after the status.  A new entry point is one line
-# in _prototypes (c2d_time_of_impact_accel: its pointer, vector and real
-# arguments and Out(real) for *t) and a documented def in __init__.py that
-# calls _call with its C name.
+# in _prototypes and a documented def in __init__.py that calls _call with
+# its C name.
 PROTOTYPES = {}
 PROTOTYPES.update(_prototypes(DOUBLE, ctypes.c_double, ""))
 PROTOTYPES.update(_prototypes(FLOAT, ctypes.c_float, "f"))

@@ -14,7 +14,7 @@ class Variant:
     def __init__(self, sfx, real):
         self.sfx, self.real = sfx, real
         for name in ("Vec2", "Body", "Disk", "Surface", "collide", "collide_normal", "time_of_impact",
-                     "collide_rough", "collide_rough_normal"):
+                     "time_of_impact_accel", "collide_rough", "collide_rough_normal"):
             setattr(self, name, getattr(c, name + sfx))
 
     def __repr__(self):
@@ -56,6 +56,19 @@ def test_time_of_impact(v):
     b.vel = (2, 0)
     assert v.time_of_impact(a, b, 1.0) == (Status.SEPARATING, None)
     assert v.time_of_impact(a, b, -1.0) == (Status.INVALID, None)
+
+
+@variant
+def test_a_decelerating_ball_hits_only_if_it_reaches(v):
+    # a rolls from 0 at speed 2 and slows at 1: it travels 2 t - t^2 / 2, at most 2 (at t = 2)
+    a, b = v.Body((0, 0), (2, 0), 1), v.Body((3, 0), (0, 0), 1)
+    slowing, still = (-1, 0), (0, 0)
+    assert v.time_of_impact_accel(a, slowing, b, still, 1.5) == (Status.OK, 1.0)
+    assert v.time_of_impact_accel(a, slowing, b, still, 1.5, 0.5) == (Status.SEPARATING, None)
+    assert v.time_of_impact_accel(a, slowing, b, still, 1.0) == (Status.SEPARATING, None)  # stops touching: a graze
+    assert v.time_of_impact_accel(a, slowing, b, still, 0.5) == (Status.SEPARATING, None)  # stops short
+    assert v.time_of_impact_accel(a, still, b, still, 1.0) == v.time_of_impact(a, b, 1.0)
+    assert v.time_of_impact_accel(a, (math.nan, 0), b, still, 1.0) == (Status.INVALID, None)
 
 
 @variant
