@@ -4,15 +4,18 @@
 #   make play        build and open the window
 #   make test-demo   the demo's tests (part of `make test`)
 #   make demo-plots  regenerate docs/billiards.png, docs/energy.png, docs/gas_histogram.png
-# Screenshots use demo/png.cpp (a stored-deflate PNG writer), so the demo
-# needs neither libpng nor zlib; only the tests' checker decodes with libpng,
-# an independent reader of what the writer produced.
+# Screenshots are compressed PNGs written with libpng (demo/png.cpp); the
+# tests' checker reads them back with libpng's reader.
 
 DEMO_DEPS := libbox2d-dev libsdl2-dev
 DEMO_TEST_DEPS := xvfb xauth libpng-dev
 DEMO_PLOT_DEPS := gnuplot-nox
 DEMO_SRC := demo/main.cpp demo/scene.cpp demo/exact_engine.cpp demo/box2d_engine.cpp demo/checker.cpp demo/sim.cpp demo/render.cpp demo/png.cpp
 DEMO_HDR := demo/scene.h demo/engine.h demo/exact_engine.h demo/box2d_engine.h demo/checker.h demo/sim.h demo/render.h demo/png.h
+# the window: software drawing, aiming aids, panel, sound (issue 11, part B)
+DEMO_SRC += demo/canvas.cpp demo/font.cpp demo/engine_view.cpp demo/draw_table.cpp demo/draw_balls.cpp demo/aim.cpp demo/hud.cpp demo/audio.cpp
+DEMO_HDR += demo/canvas.h demo/font.h demo/view.h demo/engine_view.h demo/draw_table.h demo/draw_balls.h demo/aim.h demo/hud.h demo/audio.h
+DEMO_DEPS += libpng-dev
 DEMO_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SRC))
 DEMO_BIN := $(B)/billiards
 DEMO_CXXFLAGS = $(CXXFLAGS) -std=c++17 -Wall -Wextra -ffp-contract=off -Iinclude $(SAN_FLAGS)
@@ -31,7 +34,7 @@ $(B)/demo/%.o: demo/%.cpp $(DEMO_HDR) $(LIB_HDR) | demo-deps
 	$(CXX) $(DEMO_CXXFLAGS) $$(sdl2-config --cflags) -c $< -o $@
 
 $(DEMO_BIN): $(DEMO_OBJ) $(STATIC)
-	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $(DEMO_OBJ) $(STATIC) -lbox2d $$(sdl2-config --libs) -lm
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $(DEMO_OBJ) $(STATIC) -lbox2d $$(sdl2-config --libs) -lpng -lm
 
 demo: $(DEMO_BIN)
 	$(DEMO_BIN) --headless --screenshot $(B)/billiards.png
