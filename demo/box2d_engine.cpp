@@ -155,11 +155,19 @@ void Box2dEngine::contact_event(b2Contact *contact, int a, int b) {
     const b2Body *ba = contact->GetFixtureA()->GetBody(), *bb = contact->GetFixtureB()->GetBody();
     const b2Vec2 dv = bb->GetLinearVelocity() - ba->GetLinearVelocity();
     const double approach = std::fabs(b2Dot(dv, m.normal)) / kUnitsPerMetre;
-    const int ball = a >= 0 ? a : b, other = a >= 0 && b >= 0 ? b : -1;
-    const Ball &s = balls_[static_cast<size_t>(ball)];
-    log_->events.push_back(Event{now_, other >= 0 ? EventKind::BallBall : EventKind::Cushion, ball, other, -1,
-                                 m.points[0].x / kUnitsPerMetre, m.points[0].y / kUnitsPerMetre, s.vx, s.vy, 0, 0, 0,
-                                 kBallMass * approach});
+    const double x = m.points[0].x / kUnitsPerMetre, y = m.points[0].y / kUnitsPerMetre;
+    auto record = [&](int ball, int other) {
+        const Ball &s = balls_[static_cast<size_t>(ball)];
+        log_->events.push_back(Event{now_, other >= 0 ? EventKind::BallBall : EventKind::Cushion, ball, other, -1, x,
+                                     y, s.vx, s.vy, 0, 0, 0, kBallMass * approach});
+    };
+    if (a < 0 || b < 0) {
+        record(a >= 0 ? a : b, -1);
+    } else {  // one record for each ball, as the exact engine
+        const bool a_first = balls_[static_cast<size_t>(a)].number <= balls_[static_cast<size_t>(b)].number;
+        record(a_first ? a : b, a_first ? b : a);
+        record(a_first ? b : a, a_first ? a : b);
+    }
 }
 
 void Box2dEngine::BeginContact(b2Contact *contact) {

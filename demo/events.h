@@ -1,5 +1,8 @@
 // events.h - what happened during a run, in time order: contacts, pocket
-// drops, the cue strike and the balls' changes of motion state.  The same
+// drops, the cue strike and the balls' changes of motion state.  A
+// ball-ball contact is two records at the same time, one for each ball
+// (the lower-numbered first), so every ball's state after every change is
+// on record.  The same
 // records feed --events FILE.csv, the window's sounds (frame_events) and
 // the shot seam (simulate_shot).
 #ifndef C2D_DEMO_EVENTS_H
@@ -27,7 +30,7 @@ inline const char *event_name(EventKind kind) {
 struct Event {
     double t;                // simulation time, s
     EventKind kind;
-    int ball;                // index into balls(); ball_ball: the lower-numbered of the two
+    int ball;                // index into balls()
     int other;               // ball_ball: the other ball's index; otherwise -1
     int feature;             // cushion: index into Table::cushions; jaw: pocket index * 2 + jaw;
                              // pocket: pocket index; otherwise -1

@@ -485,8 +485,10 @@ bool ExactEngine::resolve_balls(const Pending &e, Stats &stats, FrameLog &log) {
     ++stats.ball_ball_collisions;
     if (record_paths_) log.contacts.push_back(pair_key(e.a, e.b));
     const double impulse = kBallMass * std::fabs((a.vx - vax) * dx + (a.vy - vay) * dy) / d;
+    // one record for each ball, the lower-numbered first
     const bool a_first = balls_[static_cast<size_t>(e.a)].number <= balls_[static_cast<size_t>(e.b)].number;
     log_event(log, e.t, EventKind::BallBall, a_first ? e.a : e.b, a_first ? e.b : e.a, -1, impulse);
+    log_event(log, e.t, EventKind::BallBall, a_first ? e.b : e.a, a_first ? e.a : e.b, -1, impulse);
     return true;
 }
 
