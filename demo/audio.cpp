@@ -75,7 +75,12 @@ bool sound_device_likely(std::string &why) {
             if (std::filesystem::exists(std::string(runtime) + socket, ignored)) return true;
     }
     FILE *cards = std::fopen("/proc/asound/cards", "r");
-    if (!cards) return true;  // not Linux, or no ALSA: let SDL look
+    if (!cards) {
+        std::error_code ignored;
+        if (!std::filesystem::exists("/proc/self", ignored)) return true;  // not Linux: let SDL look
+        why = "no sound server and no sound card";                        // Linux without ALSA
+        return false;
+    }
     char line[128] = "";
     const bool none = !std::fgets(line, sizeof line, cards) || std::strstr(line, "no soundcards");
     std::fclose(cards);

@@ -11,13 +11,15 @@ namespace {
 float clamp01(float v) { return std::min(1.0f, std::max(0.0f, v)); }
 
 uint32_t pack(Colour c) {
-    const auto channel = [](float v) { return static_cast<uint32_t>(std::lround(clamp01(v) * 255.0f)); };
+    // never negative, so adding 0.5 and truncating rounds to nearest (and is
+    // much faster than lround here, once per channel per pixel)
+    const auto channel = [](float v) { return static_cast<uint32_t>(clamp01(v) * 255.0f + 0.5f); };  // NOLINT(bugprone-incorrect-roundings)
     return 0xff000000u | channel(c.r) << 16 | channel(c.g) << 8 | channel(c.b);
 }
 
 Colour unpack(uint32_t p) {
-    return {static_cast<float>((p >> 16) & 0xff) / 255.0f, static_cast<float>((p >> 8) & 0xff) / 255.0f,
-            static_cast<float>(p & 0xff) / 255.0f};
+    constexpr float k = 1.0f / 255.0f;
+    return {static_cast<float>((p >> 16) & 0xff) * k, static_cast<float>((p >> 8) & 0xff) * k, static_cast<float>(p & 0xff) * k};
 }
 
 // Distance from p to the segment ab.
@@ -81,13 +83,26 @@ Canvas::Box Canvas::clip(float x0, float y0, float x1, float y1) const {
 
 void Canvas::fill_rect(float x0, float y0, float x1, float y1, Colour c, float alpha) {
     const Box b = clip(x0, y0, x1, y1);
+    // fully covered pixels in 8-bit fixed point: p + (c - p) a / 256
+    const uint32_t colour = pack(c), a = static_cast<uint32_t>(clamp01(alpha) * 256.0f + 0.5f);  // NOLINT(bugprone-incorrect-roundings): >= 0
     for (int y = b.y0; y < b.y1; ++y) {
         const float py = static_cast<float>(y) + 0.5f;
         const float cy = clamp01(std::min(py - y0, y1 - py) + 0.5f);
+        uint32_t *row = pixels_.data() + static_cast<size_t>(y) * static_cast<size_t>(width_);
         for (int x = b.x0; x < b.x1; ++x) {
             const float px = static_cast<float>(x) + 0.5f;
             const float cx = clamp01(std::min(px - x0, x1 - px) + 0.5f);
-            blend(x, y, c, alpha * cx * cy);
+            if (cx * cy < 1) {
+                blend(x, y, c, alpha * cx * cy);
+                continue;
+            }
+            uint32_t &p = row[x];
+            uint32_t out = 0xff000000u;
+            for (int shift = 0; shift < 24; shift += 8) {
+                const uint32_t from = (p >> shift) & 0xff, to = (colour >> shift) & 0xff;
+                out |= ((from * (256 - a) + to * a) >> 8) << shift;
+            }
+            p = out;
         }
     }
 }
@@ -152,17 +167,22 @@ void Canvas::fill_convex(const std::vector<PointF> &polygon, Colour c, float alp
     }
     if (area == 0) return;
     const float sign = area > 0 ? 1.0f : -1.0f;
+    struct Edge {
+        float x, y, ex, ey;  // a point and the unit direction times the winding's sign
+    };
+    std::vector<Edge> edges;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        const PointF &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+        const float len = std::hypot(q.x - p.x, q.y - p.y);
+        if (len > 0) edges.push_back({p.x, p.y, sign * (q.x - p.x) / len, sign * (q.y - p.y) / len});
+    }
     const Box b = clip(x0, y0, x1, y1);
     for (int y = b.y0; y < b.y1; ++y)
         for (int x = b.x0; x < b.x1; ++x) {
             const float px = static_cast<float>(x) + 0.5f, py = static_cast<float>(y) + 0.5f;
             float inside = 1e9f;  // least signed distance to an edge, > 0 inside
-            for (size_t i = 0; i < polygon.size(); ++i) {
-                const PointF &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
-                const float ex = q.x - p.x, ey = q.y - p.y, len = std::hypot(ex, ey);
-                if (len > 0) inside = std::min(inside, sign * (ex * (py - p.y) - ey * (px - p.x)) / len);
-            }
-            blend(x, y, c, alpha * clamp01(inside + 0.5f));
+            for (const Edge &e : edges) inside = std::min(inside, e.ex * (py - e.y) - e.ey * (px - e.x));
+            if (inside > -0.5f) blend(x, y, c, alpha * clamp01(inside + 0.5f));
         }
 }
 

@@ -12,7 +12,6 @@
 #include <cmath>
 #include <string>
 
-#include "engine_view.h"
 #include "font.h"
 
 namespace demo {
@@ -142,10 +141,10 @@ void BallPoses::advance(const std::vector<Ball> &balls, double dt) {
     if (poses_.size() != balls.size()) reset(balls);
     for (size_t i = 0; i < balls.size(); ++i) {
         if (!balls[i].active) continue;
-        const Vec3 w = angular_velocity(balls[i]);
-        const double rate = std::sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
+        const Ball &b = balls[i];
+        const double rate = std::sqrt(b.wx * b.wx + b.wy * b.wy + b.wz * b.wz);
         if (rate * dt < 1e-9) continue;
-        poses_[i] = multiply(rotation(w.x / rate, w.y / rate, w.z / rate, rate * dt), poses_[i]);
+        poses_[i] = multiply(rotation(b.wx / rate, b.wy / rate, b.wz / rate, rate * dt), poses_[i]);
         orthonormalise(poses_[i]);
     }
 }
@@ -175,7 +174,8 @@ void draw_ball(Canvas &canvas, float cx, float cy, float radius, int number, con
                 const Colour base = surface(number, label, qx, qy, qz);
                 const double diffuse = std::max(0.0, nx * light.lx + ny * light.ly + nz * light.lz);
                 const double nh = std::max(0.0, nx * light.hx + ny * light.hy + nz * light.hz);
-                const double spec = 0.7 * std::pow(nh, 60.0) + 0.06 * std::pow(nh, 6.0);
+                const double nh2 = nh * nh, nh4 = nh2 * nh2, nh8 = nh4 * nh4, nh16 = nh8 * nh8;
+                const double spec = 0.7 * nh16 * nh16 * nh16 * nh8 * nh4 + 0.06 * nh4 * nh2;  // nh^60, nh^6
                 const float lit = static_cast<float>(0.3 + 0.78 * diffuse), shine = static_cast<float>(spec);
                 sum = {sum.r + std::min(1.0f, base.r * lit + shine), sum.g + std::min(1.0f, base.g * lit + shine),
                        sum.b + std::min(1.0f, base.b * lit + shine)};

@@ -25,7 +25,8 @@ class BallPoses {
 public:
     // Every ball at rest in its racked pose: number up, a little tilted.
     void reset(const std::vector<Ball> &balls);
-    // Turns each ball on the table by its angular velocity over dt.
+    // Turns each ball on the table by its angular velocity (wx, wy, wz, held
+    // over the frame) over dt.
     void advance(const std::vector<Ball> &balls, double dt);
     Mat3 pose(size_t i) const;
 

@@ -38,8 +38,6 @@ void draw_meter(Canvas &canvas, const Screen &layout, const PanelState &state) {
     std::snprintf(label, sizeof label, "Power %4.1f m/s", state.power * state.max_speed);
     draw_text(canvas, label, static_cast<int>(r.x), static_cast<int>(r.y) - text_height(scale) - scale * 4,
               TextStyle{scale, kText, false});
-    canvas.fill_rect(r.x - 2, r.y - 2, r.x + r.w + 2, r.y + r.h + 2, rgb8(70, 70, 74));
-    canvas.fill_rect(r.x, r.y, r.x + r.w, r.y + r.h, rgb8(10, 10, 12));
     const int steps = static_cast<int>(r.w * std::clamp(state.power, 0.0, 1.0));
     for (int i = 0; i < steps; ++i) {
         const float f = static_cast<float>(i) / r.w;
@@ -54,12 +52,6 @@ void draw_meter(Canvas &canvas, const Screen &layout, const PanelState &state) {
 
 void draw_dial(Canvas &canvas, const Screen &layout, const PanelState &state) {
     const Dial d = spin_dial(layout);
-    const Mat3 facing = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-    draw_ball(canvas, d.cx, d.cy, d.radius, -1, facing);
-    const float limit = d.radius * static_cast<float>(kMiscueLimit);
-    canvas.ring(d.cx, d.cy, limit, 1.2f, rgb8(60, 60, 60), 0.7f);
-    canvas.line({d.cx - d.radius * 0.9f, d.cy}, {d.cx + d.radius * 0.9f, d.cy}, 1, rgb8(90, 90, 90), 0.5f);
-    canvas.line({d.cx, d.cy - d.radius * 0.9f}, {d.cx, d.cy + d.radius * 0.9f}, 1, rgb8(90, 90, 90), 0.5f);
     const float tx = d.cx + static_cast<float>(state.side) * d.radius;
     const float ty = d.cy - static_cast<float>(state.topback) * d.radius;
     canvas.fill_disk(tx, ty, std::max(3.0f, d.radius * 0.13f), rgb8(40, 90, 200));
@@ -69,7 +61,7 @@ void draw_dial(Canvas &canvas, const Screen &layout, const PanelState &state) {
                              : state.topback > 0.05                  ? "follow"
                              : state.topback < -0.05                 ? "draw"
                                                                      : "english";
-    const std::string label = state.spin_applied ? "Spin: " + what : "Spin (shown only)";
+    const std::string label = "Spin: " + what;
     const int w = text_width(label, scale);
     draw_text(canvas, label, static_cast<int>(d.cx) - w - static_cast<int>(d.radius * 1.2f),
               static_cast<int>(d.cy + d.radius) - text_height(scale), TextStyle{scale, kDim, false});
@@ -117,11 +109,25 @@ bool dial_offset(const Dial &dial, float x, float y, double &side, double &topba
     return true;
 }
 
-void draw_panel(Canvas &canvas, const Screen &layout, const PanelState &state) {
+void draw_panel_base(Canvas &canvas, const Screen &layout) {
     if (layout.panel.h <= 0) return;
     const RectF &p = layout.panel;
     canvas.fill_rect(p.x, p.y, p.x + p.w, p.y + p.h, kPanel);
     canvas.fill_rect(p.x, p.y, p.x + p.w, p.y + 2, rgb8(60, 40, 25));
+    const RectF r = meter_rect(layout);
+    canvas.fill_rect(r.x - 2, r.y - 2, r.x + r.w + 2, r.y + r.h + 2, rgb8(70, 70, 74));
+    canvas.fill_rect(r.x, r.y, r.x + r.w, r.y + r.h, rgb8(10, 10, 12));
+    // the spin selector: a cue ball seen from behind the cue, the miscue limit
+    const Dial d = spin_dial(layout);
+    const Mat3 facing = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    draw_ball(canvas, d.cx, d.cy, d.radius, -1, facing);
+    canvas.ring(d.cx, d.cy, d.radius * static_cast<float>(kMiscueLimit), 1.2f, rgb8(60, 60, 60), 0.7f);
+    canvas.line({d.cx - d.radius * 0.9f, d.cy}, {d.cx + d.radius * 0.9f, d.cy}, 1, rgb8(90, 90, 90), 0.5f);
+    canvas.line({d.cx, d.cy - d.radius * 0.9f}, {d.cx, d.cy + d.radius * 0.9f}, 1, rgb8(90, 90, 90), 0.5f);
+}
+
+void draw_panel(Canvas &canvas, const Screen &layout, const PanelState &state) {
+    if (layout.panel.h <= 0) return;
     draw_status(canvas, layout, state);
     draw_meter(canvas, layout, state);
     draw_dial(canvas, layout, state);

@@ -22,7 +22,6 @@ struct PanelState {
     double power = 0;                // 0..1
     double max_speed = 0;            // m/s at full power
     double side = 0, topback = 0;    // tip offset, fractions of R
-    bool spin_applied = true;        // false: the engine takes no spin yet
 };
 
 // The spin selector's circle in the panel (for mouse clicks).
@@ -38,6 +37,9 @@ bool dial_offset(const Dial &dial, float x, float y, double &side, double &topba
 // Clamps (side, topback) into the miscue limit's circle.
 void clamp_offset(double &side, double &topback);
 
+// What does not change: the panel's ground, the meter's frame, the dial's
+// ball and its marks (drawn once, under every frame's draw_panel).
+void draw_panel_base(Canvas &canvas, const Screen &layout);
 void draw_panel(Canvas &canvas, const Screen &layout, const PanelState &state);
 
 // A translucent box over the table with a title and lines of text.

@@ -1,8 +1,7 @@
 // render.cpp - see render.h.  A frame: the cached table (redrawn only when
 // the window's size changes), the balls, the aiming aids, the panel, then
-// the help box or a banner.  The window's clock advances by exactly 1/60 s
-// of wall time per simulated frame (a performance-counter deadline, so no
-// rounding of 16.67 ms to 16 ms).
+// the help box or a banner.  The window's game is a Driver of the shared
+// main loop (sim.h run), which paces it at 1/60 s of wall time per frame.
 #include "render.h"
 
 #include <SDL.h>
@@ -45,17 +44,24 @@ const char *const kHelp[] = {
 bool pool(const Simulation &sim) { return sim.config().scene != Scene::Gas; }
 
 Screen layout_for(const Simulation &sim, int width, int height) {
-    const Table &t = sim.table();
+    const TableShape t = table_shape(sim.table());
     return Screen(width, height, t.length, t.width, t.rail, pool(sim));
 }
 
-// The table, drawn once per canvas size.
+// The canvas size that fits the table (and panel) into max_w x max_h.
+void fit_size(const Simulation &sim, int max_w, int max_h, int &width, int &height) {
+    const TableShape t = table_shape(sim.table());
+    Screen::fit(t.length, t.width, t.rail, pool(sim), max_w, max_h, width, height);
+}
+
+// The table and the panel's fixed parts, drawn once per canvas size.
 class Backdrop {
 public:
     const Canvas &get(const Simulation &sim, const TableShape &shape, const Screen &layout) {
         if (canvas_.width() != layout.width || canvas_.height() != layout.height) {
             canvas_ = Canvas(layout.width, layout.height);
             draw_table(canvas_, shape, layout, pool(sim) ? TableStyle::Pool : TableStyle::Box);
+            draw_panel_base(canvas_, layout);
         }
         return canvas_;
     }
@@ -110,7 +116,6 @@ Overlay still_overlay(const Simulation &sim) {
     o.panel.lines.emplace_back(line);
     o.panel.pocketed = pocketed_numbers(sim);
     o.panel.max_speed = kMaxPlaySpeed;
-    o.panel.spin_applied = shots_take_spin();
     return o;
 }
 
@@ -184,10 +189,8 @@ WindowResult open_window(const Simulation &sim, Window &w, std::string &error) {
     if (!have_display(error)) return WindowResult::Unavailable;
     SDL_Rect usable{0, 0, kDefaultWidth, kDefaultWidth};
     if (SDL_GetDisplayUsableBounds(0, &usable) != 0 || usable.w <= 0 || usable.h <= 0) usable = {0, 0, kDefaultWidth, 900};
-    const Table &t = sim.table();
     int width = 0, height = 0;
-    Screen::fit(t.length, t.width, t.rail, pool(sim), std::min(kDefaultWidth * 2, usable.w * 92 / 100),
-                usable.h * 88 / 100, width, height);
+    fit_size(sim, std::min(kDefaultWidth * 2, usable.w * 92 / 100), usable.h * 88 / 100, width, height);
     w.window = SDL_CreateWindow("collide2d billiards", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height,
                                 SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
     if (!w.window) {
@@ -209,9 +212,8 @@ WindowResult open_window(const Simulation &sim, Window &w, std::string &error) {
 }  // namespace
 
 bool screenshot_offscreen(const Simulation &sim, const std::string &path, std::string &error) {
-    const Table &t = sim.table();
     int width = 0, height = 0;
-    Screen::fit(t.length, t.width, t.rail, pool(sim), kDefaultWidth, kDefaultWidth, width, height);
+    fit_size(sim, kDefaultWidth, kDefaultWidth, width, height);
     Canvas frame(width, height);
     draw_still(frame, sim, layout_for(sim, width, height));
     return write_png(path, width, height, frame.rgb(), error);
@@ -273,17 +275,16 @@ private:
     Window &window_;
     Audio &audio_;
     const double frequency_;
-    double deadline_;  // s, when the next frame is due
+    double deadline_;  // s, when the frame being drawn is due
     Screen layout_{kDefaultWidth, kDefaultWidth, 1, 1, 0, false};
     TableShape shape_{};
     Backdrop backdrop_;
     Canvas frame_;
     BallPoses poses_;
-    ContactListener contacts_;
     AimState aim_;
     bool dragging_ = false, dialing_ = false, help_ = true;
     double press_x_ = 0, press_y_ = 0, mouse_x_ = 0, mouse_y_ = 0;  // canvas pixels
-    int shots_ = 0, screenshots_ = 0;
+    int shots_ = 0, screenshots_ = 0, skipped_ = 0;
     double last_speed_ = 0;
 };
 
@@ -307,7 +308,6 @@ bool Game::next_frame(Simulation &sim) {
 
 bool Game::before_step(Simulation &sim, bool) {
     if (can_shoot(sim) && !dragging_ && !dialing_) aim_at_mouse(sim);
-    contacts_.before(sim);
     return true;
 }
 
@@ -322,9 +322,7 @@ void Game::shoot(Simulation &sim) {
     const double speed = aim_.power * kMaxPlaySpeed;
     aim_.power = 0;
     if (speed < 0.02 || !can_shoot(sim)) return;
-    sim.shoot(make_shot(aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback));
-    const Ball &cue = sim.balls()[0];
-    audio_.play(Sound::Strike, kBallMass * speed, 2 * cue.x / sim.table().length - 1);
+    sim.shoot(Shot{aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback});
     ++shots_;
     last_speed_ = speed;
     help_ = false;
@@ -392,7 +390,7 @@ void Game::handle_key(Simulation &sim, const SDL_Keysym &key) {
     case SDLK_r:
         sim = Simulation(config_);
         start(sim);
-        if (!pool(sim)) sim.shoot(make_shot(0, kMaxPlaySpeed, 0, 0));
+        if (!pool(sim)) sim.shoot(Shot{0, kMaxPlaySpeed});
         break;
     case SDLK_h:
     case SDLK_F1: help_ = !help_; break;
@@ -413,12 +411,13 @@ void Game::handle_key(Simulation &sim, const SDL_Keysym &key) {
 
 void Game::play_sounds(const Simulation &sim) {
     const double length = sim.table().length;
-    for (const Contact &c : contacts_.after(sim)) {
+    for (const Contact &c : frame_contacts(sim)) {
         const double pan = 2 * c.x / length - 1;
         switch (c.kind) {
         case ContactKind::BallBall: audio_.play(Sound::Click, c.impulse, pan); break;
         case ContactKind::Cushion: audio_.play(Sound::Cushion, c.impulse, pan); break;
         case ContactKind::Pocket: audio_.play(Sound::Pocket, c.impulse, pan); break;
+        case ContactKind::Strike: audio_.play(Sound::Strike, c.impulse, pan); break;
         }
     }
 }
@@ -444,7 +443,6 @@ Overlay Game::overlay(const Simulation &sim) const {
     o.panel.max_speed = kMaxPlaySpeed;
     o.panel.side = aim_.side;
     o.panel.topback = aim_.topback;
-    o.panel.spin_applied = shots_take_spin();
     if (left == 0 && sim.at_rest())
         o.banner = "Table cleared in " + std::to_string(shots_) + (shots_ == 1 ? " shot" : " shots") + ". Press R to rack again.";
     return o;
@@ -465,14 +463,19 @@ void Game::after_step(const Simulation &sim) {
         play_sounds(sim);
         poses_.advance(sim.balls(), kFrameDt);
     }
+    // run() holds each frame to 1/60 s of wall time; a machine too slow to
+    // draw every frame skips drawing (up to 3 frames in 4), not time
+    deadline_ += kFrameDt;
+    const double now = static_cast<double>(SDL_GetPerformanceCounter()) / frequency_;
+    if (now - deadline_ > 0.25) deadline_ = now;  // a pause: as run() does, count afresh
+    if (now > deadline_ + 0.5 * kFrameDt && skipped_ < 3) {
+        ++skipped_;
+        return;
+    }
+    skipped_ = 0;
     if (frame_.width() != layout_.width || frame_.height() != layout_.height) frame_ = Canvas(layout_.width, layout_.height);
     draw_frame(frame_, backdrop_.get(sim, shape_, layout_), layout_, sim, shape_, poses_, overlay(sim));
     if (window_.show(frame_)) SDL_RenderPresent(window_.renderer);
-    // real time: one frame of simulation per 1/60 s of wall time
-    deadline_ += kFrameDt;
-    const double now = static_cast<double>(SDL_GetPerformanceCounter()) / frequency_;
-    if (deadline_ > now) SDL_Delay(static_cast<uint32_t>((deadline_ - now) * 1000));
-    else if (now - deadline_ > 0.25) deadline_ = now;  // fell behind (a pause, a slow machine): start afresh
 }
 
 }  // namespace
@@ -486,7 +489,7 @@ WindowResult play_window(const SimConfig &config, std::string &error) {
     if (pool(sim) && !audio.available()) std::fprintf(stderr, "billiards: no sound (%s)\n", audio.problem().c_str());
     Game game(config, w, audio);
     game.start(sim);
-    if (!pool(sim)) sim.shoot(make_shot(0, kMaxPlaySpeed, 0, 0));
+    if (!pool(sim)) sim.shoot(Shot{0, kMaxPlaySpeed});
     run(sim, game);
     return WindowResult::Ok;
 }
