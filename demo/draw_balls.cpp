@@ -187,6 +187,15 @@ void draw_ball(Canvas &canvas, float cx, float cy, float radius, int number, con
         }
 }
 
+void draw_falling(Canvas &canvas, const View &view, double x, double y, double hx, double hy, int number,
+                  const Mat3 &pose, double progress) {
+    const double t = std::clamp(progress, 0.0, 1.0);
+    const float cx = view.px(x + (hx - x) * 0.6 * t), cy = view.py(y + (hy - y) * 0.6 * t);
+    const float radius = view.length(kBallRadius) * static_cast<float>(1 - 0.35 * t);
+    draw_ball(canvas, cx, cy, radius, number, pose);
+    canvas.fill_disk(cx, cy, radius + 0.5f, {0, 0, 0}, static_cast<float>(0.9 * t));
+}
+
 void draw_balls(Canvas &canvas, const View &view, const std::vector<Ball> &balls, const BallPoses &poses) {
     const float radius = view.length(kBallRadius);
     for (const Ball &b : balls)

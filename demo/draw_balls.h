@@ -40,6 +40,11 @@ Mat3 rest_pose(int number);
 // A ball of the given number (0 = cue) centred at (cx, cy), radius in pixels.
 void draw_ball(Canvas &canvas, float cx, float cy, float radius, int number, const Mat3 &pose);
 
+// A ball dropping into the hole at (hx, hy): progress 0 where it fell (x, y),
+// 1 gone (smaller, darker, nearer the hole's centre).
+void draw_falling(Canvas &canvas, const View &view, double x, double y, double hx, double hy, int number,
+                  const Mat3 &pose, double progress);
+
 // Shadows, then the balls on the table.
 void draw_balls(Canvas &canvas, const View &view, const std::vector<Ball> &balls, const BallPoses &poses);
 

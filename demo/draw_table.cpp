@@ -5,8 +5,8 @@
 // near the pocket, less the noses' rounding); a hole is the pocket's capture
 // circle where there is no rubber; beyond the band is wood.  Where the four
 // corners of a pixel disagree it is supersampled 4x4.  Shading is smooth and
-// mostly one-dimensional (gradients across the rails, a vignette on the
-// cloth), so the compressed screenshots stay small.
+// one-dimensional where it can be (across the rails; across the cloth, as
+// under a long lamp), so PNG's row filters compress the screenshots well.
 #include "draw_table.h"
 
 #include <algorithm>
@@ -117,9 +117,10 @@ double rubber_depth(const TableShape &t, double x, double y) {
 Colour shade(const TableShape &t, const Palette &pal, Stuff stuff, double x, double y) {
     switch (stuff) {
     case Stuff::Cloth: {
-        const double u = (x - t.length / 2) / (t.length / 2), v = (y - t.width / 2) / (t.width / 2);
+        // a long lamp over the table: brightest along its axis; the cushions' shadow
+        const double v = (y - t.width / 2) / (t.width / 2);
         const double edge = std::min({x, y, t.length - x, t.width - y});
-        const double k = (1.04 - 0.07 * u * u - 0.07 * v * v) * (1 - 0.30 * std::exp(-edge / 0.010));
+        const double k = (1.03 - 0.08 * v * v) * (1 - 0.30 * std::exp(-edge / 0.010));
         return scaled(pal.cloth, static_cast<float>(k));
     }
     case Stuff::Throat: {  // the pocket's shelf, darkening towards the hole

@@ -44,14 +44,12 @@ std::vector<Contact> frame_contacts(const Simulation &sim) {
     for (const Event &e : sim.frame_events()) {
         switch (e.kind) {
         case EventKind::BallBall:  // one record per ball: sound the pair once
-            if (e.ball < e.other) out.push_back({ContactKind::BallBall, e.x, e.y, e.impulse});
+            if (e.ball < e.other) out.push_back({ContactKind::BallBall, e.x, e.y, e.impulse, e.ball, -1});
             break;
         case EventKind::Cushion:
-        case EventKind::Jaw: out.push_back({ContactKind::Cushion, e.x, e.y, e.impulse}); break;
-        case EventKind::Pocket:
-            out.push_back({ContactKind::Pocket, e.x, e.y, e.impulse > 0 ? e.impulse : kBallMass * std::hypot(e.vx, e.vy)});
-            break;
-        case EventKind::Strike: out.push_back({ContactKind::Strike, e.x, e.y, e.impulse}); break;
+        case EventKind::Jaw: out.push_back({ContactKind::Cushion, e.x, e.y, e.impulse, e.ball, -1}); break;
+        case EventKind::Pocket: out.push_back({ContactKind::Pocket, e.x, e.y, e.impulse, e.ball, e.feature}); break;
+        case EventKind::Strike: out.push_back({ContactKind::Strike, e.x, e.y, e.impulse, e.ball, -1}); break;
         default: break;
         }
     }

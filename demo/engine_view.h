@@ -43,6 +43,8 @@ struct Contact {
     ContactKind kind;
     double x, y;     // where, m
     double impulse;  // N s (a fall: the ball's momentum; a strike: m v)
+    int ball;        // index into balls()
+    int pocket;      // a fall: index into Table::pockets; otherwise -1
 };
 std::vector<Contact> frame_contacts(const Simulation &sim);
 

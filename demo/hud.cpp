@@ -57,11 +57,10 @@ void draw_dial(Canvas &canvas, const Screen &layout, const PanelState &state) {
     canvas.fill_disk(tx, ty, std::max(3.0f, d.radius * 0.13f), rgb8(40, 90, 200));
     canvas.ring(tx, ty, std::max(3.0f, d.radius * 0.13f), 1.5f, rgb8(10, 20, 60));
     const int scale = text_scale(layout);
-    const std::string what = state.side == 0 && state.topback == 0 ? "centre"
-                             : state.topback > 0.05                  ? "follow"
-                             : state.topback < -0.05                 ? "draw"
-                                                                     : "english";
-    const std::string label = "Spin: " + what;
+    std::string what = state.topback > 0.04 ? "follow" : state.topback < -0.04 ? "draw" : "";
+    const char *english = state.side > 0.04 ? "right" : state.side < -0.04 ? "left" : "";
+    if (*english) what += (what.empty() ? "" : " + ") + std::string(english) + (what.empty() ? " english" : "");
+    const std::string label = "Spin: " + (what.empty() ? std::string("centre") : what);
     const int w = text_width(label, scale);
     draw_text(canvas, label, static_cast<int>(d.cx) - w - static_cast<int>(d.radius * 1.2f),
               static_cast<int>(d.cy + d.radius) - text_height(scale), TextStyle{scale, kDim, false});
@@ -72,9 +71,10 @@ void draw_status(Canvas &canvas, const Screen &layout, const PanelState &state) 
     const float p = pad(layout);
     const int left = static_cast<int>(layout.panel.x + p * 1.5f);
     const int max_w = static_cast<int>(meter_rect(layout).x - layout.panel.x - 3 * p);
+    int s = scale;  // one size for all the lines: the largest at which each fits
+    for (const std::string &line : state.lines) s = std::min(s, fit_scale(line, max_w, scale));
     int y = static_cast<int>(layout.panel.y + p);
     for (const std::string &line : state.lines) {
-        const int s = fit_scale(line, max_w, scale);
         draw_text(canvas, line, left, y, TextStyle{s, kText, false});
         y += kLineAdvance * s;
     }

@@ -70,7 +70,17 @@ private:
     Canvas canvas_;
 };
 
+// A ball that has just fallen, shown sinking into its hole for a moment.
+struct Drop {
+    int number;
+    double x, y, hole_x, hole_y;
+    Mat3 pose;
+    double age;  // s
+};
+constexpr double kDropSeconds = 0.2;
+
 struct Overlay {
+    std::vector<Drop> drops;
     bool aiming = false;
     AimState aim;
     PanelState panel;
@@ -90,6 +100,8 @@ void draw_frame(Canvas &frame, const Canvas &backdrop, const Screen &layout, con
         draw_corner_text(frame, layout, text);
         return;
     }
+    for (const Drop &d : overlay.drops)
+        draw_falling(frame, layout.view, d.x, d.y, d.hole_x, d.hole_y, d.number, d.pose, d.age / kDropSeconds);
     draw_balls(frame, layout.view, sim.balls(), poses);
     if (overlay.aiming) draw_aim(frame, layout.view, shape, sim.balls(), overlay.aim);
     draw_panel(frame, layout, overlay.panel);
@@ -267,7 +279,7 @@ private:
     void handle_key(Simulation &sim, const SDL_Keysym &key);
     void aim_at_mouse(const Simulation &sim);
     void shoot(Simulation &sim);
-    void play_sounds(const Simulation &sim);
+    void sound_and_drops(const Simulation &sim);
     Overlay overlay(const Simulation &sim) const;
     void screenshot(const Canvas &frame);
 
@@ -281,6 +293,7 @@ private:
     Backdrop backdrop_;
     Canvas frame_;
     BallPoses poses_;
+    std::vector<Drop> drops_;
     AimState aim_;
     bool dragging_ = false, dialing_ = false, help_ = true;
     double press_x_ = 0, press_y_ = 0, mouse_x_ = 0, mouse_y_ = 0;  // canvas pixels
@@ -291,6 +304,7 @@ private:
 void Game::start(const Simulation &sim) {
     shape_ = table_shape(sim.table());
     poses_.reset(sim.balls());
+    drops_.clear();
     shots_ = 0;
     dragging_ = dialing_ = false;
     aim_.power = 0;
@@ -409,21 +423,31 @@ void Game::handle_key(Simulation &sim, const SDL_Keysym &key) {
     clamp_offset(aim_.side, aim_.topback);
 }
 
-void Game::play_sounds(const Simulation &sim) {
+void Game::sound_and_drops(const Simulation &sim) {
+    for (Drop &d : drops_) d.age += kFrameDt;
+    drops_.erase(std::remove_if(drops_.begin(), drops_.end(), [](const Drop &d) { return d.age > kDropSeconds; }), drops_.end());
     const double length = sim.table().length;
     for (const Contact &c : frame_contacts(sim)) {
         const double pan = 2 * c.x / length - 1;
         switch (c.kind) {
         case ContactKind::BallBall: audio_.play(Sound::Click, c.impulse, pan); break;
         case ContactKind::Cushion: audio_.play(Sound::Cushion, c.impulse, pan); break;
-        case ContactKind::Pocket: audio_.play(Sound::Pocket, c.impulse, pan); break;
         case ContactKind::Strike: audio_.play(Sound::Strike, c.impulse, pan); break;
+        case ContactKind::Pocket: {
+            audio_.play(Sound::Pocket, c.impulse, pan);
+            const size_t i = static_cast<size_t>(c.ball), k = static_cast<size_t>(c.pocket);
+            if (i < sim.balls().size() && k < sim.table().pockets.size())
+                drops_.push_back({sim.balls()[i].number, c.x, c.y, sim.table().pockets[k].x, sim.table().pockets[k].y,
+                                  poses_.pose(i), 0.0});
+            break;
+        }
         }
     }
 }
 
 Overlay Game::overlay(const Simulation &sim) const {
     Overlay o;
+    o.drops = drops_;
     o.aiming = can_shoot(sim);
     o.aim = aim_;
     o.help = help_;
@@ -460,7 +484,7 @@ void Game::screenshot(const Canvas &frame) {
 
 void Game::after_step(const Simulation &sim) {
     if (pool(sim)) {
-        play_sounds(sim);
+        sound_and_drops(sim);
         poses_.advance(sim.balls(), kFrameDt);
     }
     // run() holds each frame to 1/60 s of wall time; a machine too slow to
