@@ -10,11 +10,12 @@
 #include <vector>
 
 #include "canvas.h"
+#include "sim.h"
 #include "view.h"
 
 namespace demo {
 
-constexpr double kMiscueLimit = 0.5;  // tip offset, fraction of R
+constexpr double kMiscueLimit = kMaxTipOffset;  // the cue tip's farthest offset, fraction of R (sim.h)
 
 struct PanelState {
     std::vector<std::string> lines;  // status, top to bottom

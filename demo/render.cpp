@@ -296,6 +296,7 @@ private:
     std::vector<Drop> drops_;
     AimState aim_;
     bool dragging_ = false, dialing_ = false, help_ = true;
+    bool follow_mouse_ = true, was_ready_ = false;
     double press_x_ = 0, press_y_ = 0, mouse_x_ = 0, mouse_y_ = 0;  // canvas pixels
     int shots_ = 0, screenshots_ = 0, skipped_ = 0;
     double last_speed_ = 0;
@@ -320,8 +321,13 @@ bool Game::next_frame(Simulation &sim) {
     return true;
 }
 
+// The aim follows the mouse when it moves (and when the table comes to
+// rest), so the fine-aim keys and Shift + mouse keep what they set.
 bool Game::before_step(Simulation &sim, bool) {
-    if (can_shoot(sim) && !dragging_ && !dialing_) aim_at_mouse(sim);
+    const bool ready = can_shoot(sim);
+    if (ready && !dragging_ && !dialing_ && (follow_mouse_ || !was_ready_)) aim_at_mouse(sim);
+    follow_mouse_ = false;
+    was_ready_ = ready;
     return true;
 }
 
@@ -359,6 +365,7 @@ bool Game::handle_event(Simulation &sim, const SDL_Event &e) {
         } else {
             mouse_x_ = e.motion.x * sx;
             mouse_y_ = e.motion.y * sy;
+            follow_mouse_ = true;
         }
         if (dragging_) aim_.power = std::min(1.0, std::hypot(mouse_x_ - press_x_, mouse_y_ - press_y_) / layout_.view.scale / kFullPull);
         if (dialing_) dial_offset(spin_dial(layout_), static_cast<float>(mouse_x_), static_cast<float>(mouse_y_), aim_.side, aim_.topback);
