@@ -19,7 +19,7 @@ constexpr double kMiscueLimit = kMaxTipOffset;  // the cue tip's farthest offset
 
 struct PanelState {
     std::vector<std::string> lines;  // status, top to bottom
-    std::vector<int> pocketed;       // numbers of the balls off the table, in order
+    std::vector<int> pocketed;       // numbers of the object balls off the table
     double power = 0;                // 0..1
     double max_speed = 0;            // m/s at full power
     double side = 0, topback = 0;    // tip offset, fractions of R
