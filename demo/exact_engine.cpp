@@ -22,7 +22,13 @@
 // slip is horizontal, wx and wy are untouched), c2d_collide_rough_normal
 // against a cushion face (an immovable wall: mass and inertia INFINITY,
 // radius 0), c2d_collide_rough against a nose (immovable disk); the
-// frictionless scenes use c2d_collide and c2d_collide_normal.  Each ball's
+// frictionless scenes use c2d_collide and c2d_collide_normal.  Contacts
+// slower than Model::absorb_below are absorbed rather than bounced (model.h):
+// the velocities are projected onto those that approach nothing a ball
+// touches (the nearest point of a convex cone: the velocity itself, its
+// projection on one contact's line, or the corner of two), and pairs that
+// their accelerations press together end their slides or move on as one.
+// Each ball's
 // proxy in Box2D's dynamic tree covers its path (the box of a quadratic:
 // its ends and, where a velocity component changes sign, the turning point)
 // over a horizon of a few diameters; a ball re-queries the tree when its
@@ -97,6 +103,9 @@ c2d_disk disk_of(const Ball &b) {
 }
 c2d_disk static_disk(double x, double y, double r) { return c2d_disk{{x, y}, {0, 0}, 0, INFINITY, r, INFINITY}; }
 
+// Velocity limits hold to this: an approach slower is of rounding size.
+constexpr double kGraze = 1e-12;  // m/s
+
 enum ProxyKind { kBallProxy = 0, kWallProxy = 1, kNoseProxy = 2, kHoleProxy = 3 };
 constexpr int kTransition = 4;    // event kind: a ball's track ends
 constexpr int kSweepExpires = 5;  // event kind: a ball's swept box runs out
@@ -124,6 +133,45 @@ struct Nose {
     double x, y, r;
     int feature;
 };
+
+// A velocity constraint v.n <= c: not approaching a contact along n (unit,
+// towards it) faster than the contact moves away (c >= 0).
+struct Limit {
+    double nx, ny, c;
+};
+
+bool within(double x, double y, const std::vector<Limit> &limits) {
+    for (const Limit &l : limits)
+        if (x * l.nx + y * l.ny > l.c + kGraze) return false;
+    return true;
+}
+
+// The velocity nearest (x, y) that approaches none of the contacts: the
+// point of the convex set within(...) closest to it, in the plane either
+// (x, y) itself, its projection on one limit's line, or the crossing of
+// two.  The set holds 0 (every c >= 0), so the nearest point is never
+// longer than (x, y): the energy only decreases.
+void nearest_within(double &x, double &y, const std::vector<Limit> &limits) {
+    if (within(x, y, limits)) return;
+    std::vector<std::pair<double, double>> candidates = {{0.0, 0.0}};
+    for (const Limit &l : limits) {
+        const double over = x * l.nx + y * l.ny - l.c;
+        candidates.emplace_back(x - over * l.nx, y - over * l.ny);
+    }
+    for (size_t k = 0; k < limits.size(); ++k)
+        for (size_t m = k + 1; m < limits.size(); ++m) {
+            const Limit &p = limits[k], &q = limits[m];
+            const double det = p.nx * q.ny - p.ny * q.nx;
+            if (std::fabs(det) > 1e-9)
+                candidates.emplace_back((p.c * q.ny - q.c * p.ny) / det, (p.nx * q.c - q.nx * p.c) / det);
+        }
+    double best = INFINITY, bx = 0, by = 0;
+    for (const auto &cand : candidates) {
+        const double far = std::hypot(cand.first - x, cand.second - y);
+        if (far < best && within(cand.first, cand.second, limits)) best = far, bx = cand.first, by = cand.second;
+    }
+    x = bx, y = by;
+}
 
 class ExactEngine : public Engine {
 public:
@@ -160,11 +208,18 @@ private:
     bool resolve_fixed(const Pending &e, Stats &stats, FrameLog &log);
     void pocket(const Pending &e, Stats &stats, FrameLog &log);
     void transition(const Pending &e, FrameLog &log);
-    c2d_surface surface(const Surface &s, double approach) const;
     void log_event(FrameLog &log, double t, EventKind kind, int ball, int other, int feature, double impulse) const;
     void sample(double t);
     void log_waypoint(FrameLog &log, int i) const;
     Motion motion_of(const Ball &b) const;
+    // How an impact approaching at this speed is treated.
+    enum class Contact { Absorbed, Impact };
+    Contact contact(double approach) const;
+    void limits_of(int i, double t, const Ball &b, std::vector<Limit> &out);
+    Ball absorbed(int i, double t);
+    void pressed_group(int a, int b, double t, std::vector<int> &group);
+    bool move_together(int a, int b, double t);
+    double closing_by_acceleration(int a, int b, double t) const;
 
     const Model model_;
     std::vector<Wall> walls_;
@@ -182,6 +237,9 @@ private:
     double now_ = 0;
     bool record_paths_ = true;       // waypoints and contacts for the checker
     std::vector<int32> hits_;
+    std::vector<Limit> limits_;
+    std::vector<int> group_;
+    std::vector<int> moved_;         // balls given a new track by the event being resolved
 };
 
 // b2DynamicTree 2.4.1 carries a void * per proxy; ours is a small integer
@@ -362,6 +420,7 @@ void ExactEngine::find_events(int i) {
 void ExactEngine::start_track(int i, const Ball &b, double t) {
     track_[static_cast<size_t>(i)] = make_track(b, t, model_.cloth, model_.friction);
     motion_changed(i);
+    if (std::find(moved_.begin(), moved_.end(), i) == moved_.end()) moved_.push_back(i);
 }
 
 void ExactEngine::motion_changed(int i) {
@@ -451,9 +510,27 @@ Motion ExactEngine::motion_of(const Ball &b) const {
     return b.vx != 0 || b.vy != 0 ? Motion::Sliding : Motion::Stationary;
 }
 
-c2d_surface ExactEngine::surface(const Surface &s, double approach) const {
-    return c2d_surface{approach < model_.elastic_below ? 1.0 : s.restitution, s.friction, s.tangential_restitution};
+ExactEngine::Contact ExactEngine::contact(double approach) const {
+    if (!model_.friction) return Contact::Impact;
+    return approach < model_.absorb_below ? Contact::Absorbed : Contact::Impact;
 }
+
+bool same_motion(const Ball &a, const Ball &b) {
+    return a.vx == b.vx && a.vy == b.vy && a.wx == b.wx && a.wy == b.wy && a.wz == b.wz;
+}
+
+// A sliding ball as its slide would leave it: the slip u shrinks to 0 along
+// its direction, taking 2/7 of it from v (motion.h), and the ball rolls.
+Ball slid(Ball b) {
+    if (b.motion != Motion::Sliding) return b;
+    const double ux = b.vx - kBallRadius * b.wy, uy = b.vy + kBallRadius * b.wx;
+    b.vx -= 2.0 / 7 * ux;
+    b.vy -= 2.0 / 7 * uy;
+    roll(b);
+    return b;
+}
+
+c2d_surface surface_of(const Surface &s) { return c2d_surface{s.restitution, s.friction, s.tangential_restitution}; }
 
 void ExactEngine::log_event(FrameLog &log, double t, EventKind kind, int ball, int other, int feature,
                             double impulse) const {
@@ -461,30 +538,175 @@ void ExactEngine::log_event(FrameLog &log, double t, EventKind kind, int ball, i
     log.events.push_back(Event{t, kind, ball, other, feature, b.x, b.y, b.vx, b.vy, b.wx, b.wy, b.wz, impulse});
 }
 
+// The constraints of everything ball i touches at time t (as it is then):
+// other balls (moving away at their own speed along the line of centres)
+// and fixed faces and noses.
+void ExactEngine::limits_of(int i, double t, const Ball &b, std::vector<Limit> &out) {
+    out.clear();
+    const double reach = kBallDiameter * (1 + 1e-9);
+    hits_.clear();
+    tree_.Query(this, box_of_disk(b.x, b.y, kBallRadius * (1 + 1e-9)));
+    for (int32 proxy : hits_) {
+        const uintptr_t tg = reinterpret_cast<uintptr_t>(tree_.GetUserData(proxy));
+        const int kind = static_cast<int>(tg & 3u), index = static_cast<int>(tg >> 2);
+        const size_t k = static_cast<size_t>(index);
+        if (kind == kBallProxy && index != i) {
+            const Ball o = at(index, t);
+            const double dx = o.x - b.x, dy = o.y - b.y, d = std::hypot(dx, dy);
+            // a ball moving off lets b follow at its speed; one coming at b
+            // is held back when it is absorbed itself, not b pushed away
+            if (d > 0 && d <= reach) out.push_back(Limit{dx / d, dy / d, std::max(0.0, (o.vx * dx + o.vy * dy) / d)});
+        } else if (kind == kWallProxy) {
+            const Segment &w = walls_[k].s;
+            const double ex = w.bx - w.ax, ey = w.by - w.ay, along = (b.x - w.ax) * ex + (b.y - w.ay) * ey;
+            const double gap = (b.x - w.ax) * w.nx + (b.y - w.ay) * w.ny - kBallRadius;
+            if (along >= 0 && along <= ex * ex + ey * ey && gap <= kBallDiameter * 1e-9) out.push_back(Limit{-w.nx, -w.ny, 0});
+        } else if (kind == kNoseProxy) {
+            const Nose &w = noses_[k];
+            const double dx = w.x - b.x, dy = w.y - b.y, d = std::hypot(dx, dy);
+            if (d <= (kBallRadius + w.r) * (1 + 1e-9)) out.push_back(Limit{dx / d, dy / d, 0});
+        }
+    }
+}
+
+// Ball i at time t after an absorbed contact (Model::absorb_below): its
+// velocity becomes the nearest that approaches nothing it touches.  Left
+// slower than absorb_below it stops (top and back spin too: a slow ball
+// pressed into others would otherwise keep pushing).  Else, if its spin is
+// at least rolling speed (R |w_xy| >= |v|), the contacts take its slip and
+// it rolls (w_xy from v), else its spin's rolling velocity
+// v_roll = R (wy, -wx), towards which friction pulls it, is limited the same
+// way.  Energy only decreases.
+Ball ExactEngine::absorbed(int i, double t) {
+    Ball b = at(i, t);
+    std::vector<Limit> &limits = limits_;
+    limits_of(i, t, b, limits);
+    nearest_within(b.vx, b.vy, limits);
+    if (std::hypot(b.vx, b.vy) < model_.absorb_below) {
+        b.vx = b.vy = 0;
+        roll(b);
+    } else if (kBallRadius * std::hypot(b.wx, b.wy) >= std::hypot(b.vx, b.vy)) {
+        roll(b);
+    } else {
+        double rx = kBallRadius * b.wy, ry = -kBallRadius * b.wx;
+        nearest_within(rx, ry, limits);
+        b.wx = -ry / kBallRadius;
+        b.wy = rx / kBallRadius;
+        b.motion = motion_of(b);
+    }
+    return b;
+}
+
+// The balls in sustained contact with a and b at t: those touching them,
+// directly or through others, and not moving apart along the line of
+// centres faster than absorb_below.
+void ExactEngine::pressed_group(int a, int b, double t, std::vector<int> &group) {
+    group = {a, b};
+    const double reach = kBallDiameter * (1 + 1e-9);
+    for (size_t k = 0; k < group.size(); ++k) {
+        const Ball m = at(group[k], t);
+        hits_.clear();
+        tree_.Query(this, box_of_disk(m.x, m.y, reach));
+        for (int32 proxy : hits_) {
+            const uintptr_t tg = reinterpret_cast<uintptr_t>(tree_.GetUserData(proxy));
+            const int index = static_cast<int>(tg >> 2);
+            if ((tg & 3u) != kBallProxy || std::find(group.begin(), group.end(), index) != group.end()) continue;
+            const Ball o = at(index, t);
+            const double dx = o.x - m.x, dy = o.y - m.y, d = std::hypot(dx, dy);
+            if (d <= reach && ((o.vx - m.vx) * dx + (o.vy - m.vy) * dy) / d <= model_.absorb_below) group.push_back(index);
+        }
+    }
+}
+
+// A sustained contact: the accelerations press a and b together, so
+// absorbing velocities alone would only bring them back into contact an
+// instant later, again and again.  If any ball of the group in contact
+// (pressed_group) slides, the sliding ones end their slides at once (the
+// state each slide would end in: less energy); else the group moves on as
+// one, every ball taking its mean velocity and z spin and rolling (momentum
+// kept, energy lost).  Returns whether any ball changed.
+bool ExactEngine::move_together(int a, int b, double t) {
+    std::vector<int> &group = group_;
+    pressed_group(a, b, t, group);
+    bool changed = false;
+    for (int m : group) {  // slides end
+        const Ball before = at(m, t), s = slid(before);
+        if (!same_motion(s, before)) {
+            start_track(m, s, t);
+            changed = true;
+        }
+    }
+    if (closing_by_acceleration(a, b, t) <= 0) return changed;
+    double vx = 0, vy = 0, wz = 0;  // all roll or stand: they move on as one
+    for (int m : group) {
+        const Ball s = at(m, t);
+        vx += s.vx, vy += s.vy, wz += s.wz;
+    }
+    const double n = static_cast<double>(group.size());
+    for (int m : group) {
+        const Ball before = at(m, t);
+        Ball s = before;
+        s.vx = vx / n, s.vy = vy / n, s.wz = wz / n;
+        roll(s);
+        if (!same_motion(s, before)) {
+            start_track(m, s, t);
+            changed = true;
+        }
+    }
+    return changed;
+}
+
+// How fast the accelerations of balls a and b (their current tracks) close
+// their line of centres at time t, m/s^2 (> 0: pressing together).
+double ExactEngine::closing_by_acceleration(int a, int b, double t) const {
+    const Track &ta = track_[static_cast<size_t>(a)], &tb = track_[static_cast<size_t>(b)];
+    double ax, ay, bx, by;
+    position_at(ta, t, ax, ay);
+    position_at(tb, t, bx, by);
+    const double dx = bx - ax, dy = by - ay, d = std::hypot(dx, dy);
+    return ((ta.ax - tb.ax) * dx + (ta.ay - tb.ay) * dy) / d;
+}
+
 // Returns whether the balls' motion changed.
 bool ExactEngine::resolve_balls(const Pending &e, Stats &stats, FrameLog &log) {
     Ball a = at(e.a, e.t), b = at(e.b, e.t);
     const double dx = b.x - a.x, dy = b.y - a.y, d = std::hypot(dx, dy);
-    const double approach = ((a.vx - b.vx) * dx + (a.vy - b.vy) * dy) / d;
+    const double nx = dx / d, ny = dy / d;
     const double vax = a.vx, vay = a.vy;
-    if (model_.friction) {
+    if (contact((a.vx - b.vx) * nx + (a.vy - b.vy) * ny) == Contact::Absorbed) {
+        // each ball in turn, against all it touches (the other one's new
+        // state included)
+        const Ball a0 = a, b0 = b;
+        a = absorbed(e.a, e.t);
+        if (!same_motion(a, a0)) start_track(e.a, a, e.t);
+        b = absorbed(e.b, e.t);
+        if (!same_motion(b, b0)) start_track(e.b, b, e.t);
+        bool changed = !same_motion(a, a0) || !same_motion(b, b0);
+        if (closing_by_acceleration(e.a, e.b, e.t) > 0) changed = move_together(e.a, e.b, e.t) || changed;
+        if (!changed) return false;
+    } else if (model_.friction) {
         c2d_disk da = disk_of(a), db = disk_of(b);
-        if (c2d_collide_rough(&da, &db, surface(model_.ball, approach)) != C2D_OK) return false;
+        if (c2d_collide_rough(&da, &db, surface_of(model_.ball)) != C2D_OK) return false;
         a.vx = da.vel.x, a.vy = da.vel.y, a.wz = da.spin;
         b.vx = db.vel.x, b.vy = db.vel.y, b.wz = db.spin;
+        a.motion = motion_of(a);
+        b.motion = motion_of(b);
+        start_track(e.a, a, e.t);
+        start_track(e.b, b, e.t);
     } else {
         c2d_body ba = body_of(a), bb = body_of(b);
         if (c2d_collide(&ba, &bb, model_.ball.restitution) != C2D_OK) return false;
         a.vx = ba.vel.x, a.vy = ba.vel.y;
         b.vx = bb.vel.x, b.vy = bb.vel.y;
+        a.motion = motion_of(a);
+        b.motion = motion_of(b);
+        start_track(e.a, a, e.t);
+        start_track(e.b, b, e.t);
     }
-    a.motion = motion_of(a);
-    b.motion = motion_of(b);
-    start_track(e.a, a, e.t);
-    start_track(e.b, b, e.t);
     ++stats.ball_ball_collisions;
     if (record_paths_) log.contacts.push_back(pair_key(e.a, e.b));
-    const double impulse = kBallMass * std::fabs((a.vx - vax) * dx + (a.vy - vay) * dy) / d;
+    const double ax = track_[static_cast<size_t>(e.a)].start.vx, ay = track_[static_cast<size_t>(e.a)].start.vy;
+    const double impulse = kBallMass * std::fabs((ax - vax) * nx + (ay - vay) * ny);
     // one record for each ball, the lower-numbered first
     const bool a_first = balls_[static_cast<size_t>(e.a)].number <= balls_[static_cast<size_t>(e.b)].number;
     log_event(log, e.t, EventKind::BallBall, a_first ? e.a : e.b, a_first ? e.b : e.a, -1, impulse);
@@ -506,34 +728,43 @@ bool ExactEngine::resolve_fixed(const Pending &e, Stats &stats, FrameLog &log) {
         const double d = std::hypot(k.x - a.x, k.y - a.y);
         nx = (k.x - a.x) / d, ny = (k.y - a.y) / d, kind = EventKind::Jaw, feature = k.feature;
     }
-    const double approach = a.vx * nx + a.vy * ny, vax = a.vx, vay = a.vy;
+    const double vax = a.vx, vay = a.vy;
     const double cx = a.x + nx * kBallRadius, cy = a.y + ny * kBallRadius;  // the contact point
-    c2d_status status;
-    if (model_.friction) {
-        c2d_disk da = disk_of(a);
-        const c2d_surface s = surface(model_.cushion, approach);
-        if (e.kind == kWallProxy) {
-            c2d_disk wall = static_disk(cx, cy, 0);
-            status = c2d_collide_rough_normal(&da, &wall, c2d_vec2{nx, ny}, s);
-        } else {
-            const Nose &k = noses_[static_cast<size_t>(e.b)];
-            c2d_disk nose = static_disk(k.x, k.y, k.r);
-            status = c2d_collide_rough(&da, &nose, s);
-        }
-        a.vx = da.vel.x, a.vy = da.vel.y, a.wz = da.spin;
-    } else {
-        c2d_body ba = body_of(a);
-        if (e.kind == kWallProxy) {
-            c2d_body wall = static_body(cx, cy);
-            status = c2d_collide_normal(&ba, &wall, c2d_vec2{nx, ny}, model_.cushion.restitution);
-        } else {
-            const Nose &k = noses_[static_cast<size_t>(e.b)];
-            c2d_body nose = static_body(k.x, k.y);
-            status = c2d_collide(&ba, &nose, model_.cushion.restitution);
-        }
-        a.vx = ba.vel.x, a.vy = ba.vel.y;
+    switch (contact(a.vx * nx + a.vy * ny)) {
+    case Contact::Absorbed: {
+        const Ball a0 = a;
+        a = absorbed(e.a, e.t);
+        if (same_motion(a, a0)) return false;  // nothing to take: no contact
+        break;
     }
-    if (status != C2D_OK) return false;
+    case Contact::Impact: {
+        c2d_status status;
+        if (model_.friction) {
+            c2d_disk da = disk_of(a);
+            if (e.kind == kWallProxy) {
+                c2d_disk wall = static_disk(cx, cy, 0);
+                status = c2d_collide_rough_normal(&da, &wall, c2d_vec2{nx, ny}, surface_of(model_.cushion));
+            } else {
+                const Nose &k = noses_[static_cast<size_t>(e.b)];
+                c2d_disk nose = static_disk(k.x, k.y, k.r);
+                status = c2d_collide_rough(&da, &nose, surface_of(model_.cushion));
+            }
+            a.vx = da.vel.x, a.vy = da.vel.y, a.wz = da.spin;
+        } else {
+            c2d_body ba = body_of(a);
+            if (e.kind == kWallProxy) {
+                c2d_body wall = static_body(cx, cy);
+                status = c2d_collide_normal(&ba, &wall, c2d_vec2{nx, ny}, model_.cushion.restitution);
+            } else {
+                const Nose &k = noses_[static_cast<size_t>(e.b)];
+                c2d_body nose = static_body(k.x, k.y);
+                status = c2d_collide(&ba, &nose, model_.cushion.restitution);
+            }
+            a.vx = ba.vel.x, a.vy = ba.vel.y;
+        }
+        if (status != C2D_OK) return false;
+    }
+    }
     a.motion = motion_of(a);
     start_track(e.a, a, e.t);
     ++stats.cushion_collisions;
@@ -587,13 +818,11 @@ bool ExactEngine::process(double t_limit, long budget, Stats &stats, FrameLog &l
             find_events(e.a);
             continue;
         }
+        moved_.clear();
         if (!resolve(e, stats, log)) continue;
-        if (record_paths_) {
-            log_waypoint(log, e.a);
-            if (e.kind == kBallProxy) log_waypoint(log, e.b);
-        }
-        if (e.kind == kBallProxy) find_events(e.b);
-        find_events(e.a);
+        if (record_paths_)
+            for (int i : moved_) log_waypoint(log, i);
+        for (size_t k = moved_.size(); k-- > 0;) find_events(moved_[k]);
     }
     return true;
 }

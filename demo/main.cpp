@@ -180,11 +180,11 @@ void print_model(const Simulation &sim) {
                 "\"gravity\":%.17g,\"mu_slide\":%.17g,\"mu_roll\":%.17g,\"mu_spin\":%.17g,\"spin_deceleration\":%.17g,"
                 "\"ball_restitution\":%.17g,\"ball_friction\":%.17g,\"ball_tangential_restitution\":%.17g,"
                 "\"cushion_restitution\":%.17g,\"cushion_friction\":%.17g,\"cushion_tangential_restitution\":%.17g,"
-                "\"elastic_below\":%.17g,\"table_length\":%.17g,\"table_width\":%.17g",
+                "\"absorb_below\":%.17g,\"table_length\":%.17g,\"table_width\":%.17g",
                 m.friction ? "true" : "false", demo::kBallRadius, demo::kBallMass, demo::kBallInertia, m.cloth.gravity,
                 m.cloth.slide, m.cloth.roll, m.cloth.spin, m.cloth.spin_deceleration(), m.ball.restitution,
                 m.ball.friction, m.ball.tangential_restitution, m.cushion.restitution, m.cushion.friction,
-                m.cushion.tangential_restitution, m.elastic_below, sim.table().length, sim.table().width);
+                m.cushion.tangential_restitution, m.absorb_below, sim.table().length, sim.table().width);
     if (c.scene == Scene::Break) {
         for (const auto &p : {std::make_pair("corner", c.table.corner), std::make_pair("side", c.table.side)})
             std::printf(",\"%s_mouth\":%.17g,\"%s_facing_angle_deg\":%.17g,\"%s_nose_radius\":%.17g,\"%s_shelf\":%.17g,"

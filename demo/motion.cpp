@@ -77,12 +77,16 @@ Ball state_at(const Track &k, double t) {
     return b;
 }
 
+void roll(Ball &b) {
+    b.wx = -b.vy / kBallRadius;
+    b.wy = b.vx / kBallRadius;
+    b.motion = b.vx != 0 || b.vy != 0 ? Motion::Rolling : b.wz != 0 ? Motion::Spinning : Motion::Stationary;
+}
+
 Ball state_after_transition(const Track &k) {
     Ball b = state_at(k, k.t_end);
     if (k.start.motion == Motion::Sliding) {
-        b.wx = -b.vy / kBallRadius;  // u = 0: the ball rolls
-        b.wy = b.vx / kBallRadius;
-        b.motion = b.vx != 0 || b.vy != 0 ? Motion::Rolling : b.wz != 0 ? Motion::Spinning : Motion::Stationary;
+        roll(b);  // u = 0
     } else if (k.start.motion == Motion::Rolling) {
         b.vx = b.vy = b.wx = b.wy = 0;
         b.motion = b.wz != 0 ? Motion::Spinning : Motion::Stationary;

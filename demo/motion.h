@@ -88,6 +88,10 @@ Ball state_at(const Track &k, double t);
 // exactly), spinning, or stationary (v and w exactly 0).
 Ball state_after_transition(const Track &k);
 
+// Rolls b: w_xy from v (u = 0 exactly, whatever classify's rounding would
+// say), and the motion state that goes with it.
+void roll(Ball &b);
+
 // Kinetic energy, rotation included, J.
 double energy(const Ball &b);
 

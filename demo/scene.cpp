@@ -102,7 +102,8 @@ std::string placement_error(const Table &table, const std::vector<Placement> &pl
         for (size_t j = 0; j < i; ++j) {
             const Placement &q = placements[j];
             if (q.number == p.number) return name + " is placed twice";
-            if (std::hypot(p.x - q.x, p.y - q.y) < kBallDiameter)
+            // touching within rounding (a rack typed in) is fine
+            if (std::hypot(p.x - q.x, p.y - q.y) < kBallDiameter * (1 - 1e-9))
                 return name + " overlaps ball " + std::to_string(q.number);
         }
     }

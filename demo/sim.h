@@ -47,7 +47,7 @@ constexpr double kMaxShotSpeed = 15.0;  // Box2D moves at most 2 units/step: 15 
 //                    contact points stop relative to each other when the
 //                    impulse sticks (pooltool's frictional-inelastic model)
 //   cushion  e 0.8 (measured 0.6-0.9), mu 0.2, beta 0
-//   elastic below 5 mm/s of approach speed (model.h)
+//   contacts approaching slower than 5 mm/s are absorbed (model.h)
 // Simplification (2-D contact): impacts are between disks in the plane of
 // the balls' centres, so only the horizontal slip at the contact point
 // (which includes R wz) sees friction; wx and wy, and the cushion's height

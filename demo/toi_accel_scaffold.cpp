@@ -42,6 +42,28 @@ extern "C" c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a
     const double h = std::isinf(horizon) ? 1e3 : horizon;
     const int n = 256;
     double t0 = 0, f0 = r.f(0), d0 = r.df(0);
+    if (f0 <= 0) {  // overlapping, not approaching yet: do they turn towards each other while overlapping?
+        for (int k = 1; k <= n; ++k) {
+            const double t1 = h * k / n;
+            if (r.df(t1) < 0) {
+                double lo = t0, hi = t1;
+                for (int i = 0; i < 200; ++i) {
+                    const double mid = 0.5 * (lo + hi);
+                    if (mid <= lo || mid >= hi) break;
+                    if (r.df(mid) < 0) hi = mid;
+                    else lo = mid;
+                }
+                if (r.f(hi) <= 0) {
+                    *t = hi;
+                    return C2D_OK;
+                }
+                break;
+            }
+            if (r.f(t1) > 0) break;
+            t0 = t1;
+        }
+        t0 = 0;
+    }
     for (int k = 1; k <= n; ++k) {
         const double t1 = h * k / n, f1 = r.f(t1), d1 = r.df(t1);
         if (f0 > 0 && f1 <= 0) {
