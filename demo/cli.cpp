@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 namespace demo {
 
@@ -92,6 +93,18 @@ Placement parse_place(const std::string &text) {
     return Placement{static_cast<int>(n), parse_number("--place x", f[1]), parse_number("--place y", f[2])};
 }
 
+// The option's file name in Options, for the options that name an output
+// file; nullptr for the others.
+std::string Options::*output_path(const std::string &flag) {
+    static const std::pair<const char *, std::string Options::*> paths[] = {
+        {"--screenshot", &Options::screenshot}, {"--screenshot-window", &Options::screenshot_window},
+        {"--trace", &Options::trace},           {"--speeds", &Options::speeds},
+        {"--events", &Options::events}};
+    for (const auto &p : paths)
+        if (flag == p.first) return p.second;
+    return nullptr;
+}
+
 std::string path_value(const std::string &flag, const std::string &v) {
     if (v.empty()) fail(flag + ": empty file name");
     return v;
@@ -157,20 +170,8 @@ Options parse(int argc, char **argv) {
         } else if (flag == "--json") {
             o.json = true;
             headless_only();
-        } else if (flag == "--screenshot") {
-            o.screenshot = path_value(flag, value());
-            headless_only();
-        } else if (flag == "--screenshot-window") {
-            o.screenshot_window = path_value(flag, value());
-            headless_only();
-        } else if (flag == "--trace") {
-            o.trace = path_value(flag, value());
-            headless_only();
-        } else if (flag == "--speeds") {
-            o.speeds = path_value(flag, value());
-            headless_only();
-        } else if (flag == "--events") {
-            o.events = path_value(flag, value());
+        } else if (std::string Options::*path = output_path(flag)) {
+            o.*path = path_value(flag, value());
             headless_only();
         } else {
             fail("unknown option '" + flag + "' (see --help)");
