@@ -37,7 +37,7 @@ Pocket make_pocket(const JawPoint (&jp)[2], Vec axis, const PocketSpec &s, std::
     const Vec mid = 0.5 * (jp[0].p + jp[1].p);
     const double depth = s.shelf + s.hole_radius;
     const Vec hole = mid + depth * axis;
-    Pocket pocket{hole.x, hole.y, s.hole_radius, s.hole_radius, {}, {}};
+    Pocket pocket{hole.x, hole.y, s.hole_radius, {}, {}};
     for (int k = 0; k < 2; ++k) {
         const JawPoint &j = jp[k];
         const Vec d = std::cos(phi) * j.e - std::sin(phi) * j.n;

@@ -48,7 +48,6 @@ struct Jaw {
 struct Pocket {
     double x, y;            // centre of the hole
     double capture_radius;  // the ball falls when its centre is closer than this to (x, y)
-    double draw_radius;     // = capture_radius (kept while render.cpp still reads it)
     Jaw jaws[2];
     Point mouth[2];         // the theoretical jaw points (the mouth is measured between them)
 };

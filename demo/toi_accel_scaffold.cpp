@@ -57,6 +57,10 @@ extern "C" c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a
                     *t = hi;
                     return C2D_OK;
                 }
+                if (r.f(t1) <= 0) {  // apart by a hair at hi, overlapping again by t1
+                    *t = bisect(r, hi, t1);
+                    return C2D_OK;
+                }
                 break;
             }
             if (r.f(t1) > 0) break;
