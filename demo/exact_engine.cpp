@@ -28,12 +28,11 @@
 // touches (the nearest point of a convex cone: the velocity itself, its
 // projection on one contact's line, or the corner of two), and pairs that
 // their accelerations press together end their slides or move on as one.
-// Each ball's
-// proxy in Box2D's dynamic tree covers its path (the box of a quadratic:
-// its ends and, where a velocity component changes sign, the turning point)
-// over a horizon of a few diameters; a ball re-queries the tree when its
-// motion changes or its horizon runs out, so a pair is always found by
-// whichever of the two swept last.  An event carries the generations of its
+// Each ball's proxy in Box2D's dynamic tree covers its path (the box of a
+// quadratic: its ends and, where a velocity component changes sign, the
+// turning point) over a horizon of a few diameters; a ball re-queries the
+// tree when its motion changes or its horizon runs out, so a pair is always
+// found by whichever of the two swept last.  An event carries the generations of its
 // balls; a ball's generation is bumped whenever its motion changes, so an
 // event a later change made stale is skipped when it comes up.
 #include "exact_engine.h"
@@ -44,6 +43,7 @@
 #include <cmath>
 #include <queue>
 
+#include "slow_contact.h"
 #include "toi_accel_scaffold.h"
 
 namespace demo {
@@ -103,9 +103,6 @@ c2d_disk disk_of(const Ball &b) {
 }
 c2d_disk static_disk(double x, double y, double r) { return c2d_disk{{x, y}, {0, 0}, 0, INFINITY, r, INFINITY}; }
 
-// Velocity limits hold to this: an approach slower is of rounding size.
-constexpr double kGraze = 1e-12;  // m/s
-
 enum ProxyKind { kBallProxy = 0, kWallProxy = 1, kNoseProxy = 2, kHoleProxy = 3 };
 constexpr int kTransition = 4;    // event kind: a ball's track ends
 constexpr int kSweepExpires = 5;  // event kind: a ball's swept box runs out
@@ -133,45 +130,6 @@ struct Nose {
     double x, y, r;
     int feature;
 };
-
-// A velocity constraint v.n <= c: not approaching a contact along n (unit,
-// towards it) faster than the contact moves away (c >= 0).
-struct Limit {
-    double nx, ny, c;
-};
-
-bool within(double x, double y, const std::vector<Limit> &limits) {
-    for (const Limit &l : limits)
-        if (x * l.nx + y * l.ny > l.c + kGraze) return false;
-    return true;
-}
-
-// The velocity nearest (x, y) that approaches none of the contacts: the
-// point of the convex set within(...) closest to it, in the plane either
-// (x, y) itself, its projection on one limit's line, or the crossing of
-// two.  The set holds 0 (every c >= 0), so the nearest point is never
-// longer than (x, y): the energy only decreases.
-void nearest_within(double &x, double &y, const std::vector<Limit> &limits) {
-    if (within(x, y, limits)) return;
-    std::vector<std::pair<double, double>> candidates = {{0.0, 0.0}};
-    for (const Limit &l : limits) {
-        const double over = x * l.nx + y * l.ny - l.c;
-        candidates.emplace_back(x - over * l.nx, y - over * l.ny);
-    }
-    for (size_t k = 0; k < limits.size(); ++k)
-        for (size_t m = k + 1; m < limits.size(); ++m) {
-            const Limit &p = limits[k], &q = limits[m];
-            const double det = p.nx * q.ny - p.ny * q.nx;
-            if (std::fabs(det) > 1e-9)
-                candidates.emplace_back((p.c * q.ny - q.c * p.ny) / det, (p.nx * q.c - q.nx * p.c) / det);
-        }
-    double best = INFINITY, bx = 0, by = 0;
-    for (const auto &cand : candidates) {
-        const double far = std::hypot(cand.first - x, cand.second - y);
-        if (far < best && within(cand.first, cand.second, limits)) best = far, bx = cand.first, by = cand.second;
-    }
-    x = bx, y = by;
-}
 
 class ExactEngine : public Engine {
 public:
@@ -513,21 +471,6 @@ Motion ExactEngine::motion_of(const Ball &b) const {
 ExactEngine::Contact ExactEngine::contact(double approach) const {
     if (!model_.friction) return Contact::Impact;
     return approach < model_.absorb_below ? Contact::Absorbed : Contact::Impact;
-}
-
-bool same_motion(const Ball &a, const Ball &b) {
-    return a.vx == b.vx && a.vy == b.vy && a.wx == b.wx && a.wy == b.wy && a.wz == b.wz;
-}
-
-// A sliding ball as its slide would leave it: the slip u shrinks to 0 along
-// its direction, taking 2/7 of it from v (motion.h), and the ball rolls.
-Ball slid(Ball b) {
-    if (b.motion != Motion::Sliding) return b;
-    const double ux = b.vx - kBallRadius * b.wy, uy = b.vy + kBallRadius * b.wx;
-    b.vx -= 2.0 / 7 * ux;
-    b.vy -= 2.0 / 7 * uy;
-    roll(b);
-    return b;
 }
 
 c2d_surface surface_of(const Surface &s) { return c2d_surface{s.restitution, s.friction, s.tangential_restitution}; }
