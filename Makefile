@@ -12,6 +12,7 @@ CXXFLAGS ?= -O2
 PREFIX ?= /usr/local
 LIBDIR ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
+MANDIR ?= $(PREFIX)/share/man
 DESTDIR ?=
 
 VERSION_MAJOR := $(shell sed -n 's/^\#define C2D_VERSION_MAJOR \([0-9]*\)/\1/p' include/collide2d.h)
@@ -42,6 +43,7 @@ SONAME := libcollide2d.so.$(VERSION_MAJOR)
 SHARED := $(B)/libcollide2d.so.$(VERSION)
 AMALGAMATION := $(B)/collide2d_all.c
 
+FORCE:
 .PHONY: all lib amalgamate test test-unit check-deps-test check-vectors check-build vectors install uninstall clean demo play bench cross test-mcu lint fuzz
 all: lib
 lib: $(STATIC) $(B)/libcollide2d.so $(B)/collide2d.pc
@@ -65,12 +67,18 @@ $(B)/libcollide2d.so: $(SHARED)
 	ln -sf libcollide2d.so.$(VERSION) $(B)/$(SONAME)
 	ln -sf libcollide2d.so.$(VERSION) $@
 
-$(B)/collide2d.pc: Makefile $(LIB_HDR)
+# collide2d.pc (from collide2d.pc.in, as CMake writes it) names libdir and
+# includedir relative to ${prefix} when they lie under it, so pkg-config
+# --define-prefix works on a moved tree.  Regenerated on every make and
+# replaced only when it differs: a change of PREFIX, LIBDIR or INCLUDEDIR
+# rebuilds it, an unchanged one keeps its time stamp.
+pc_dir = $(if $(filter $(PREFIX)/%,$(1)),$${prefix}/$(patsubst $(PREFIX)/%,%,$(1)),$(1))
+$(B)/collide2d.pc: collide2d.pc.in FORCE
 	@mkdir -p $(@D)
-	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
-	  'Name: collide2d' 'Description: Exact, robust 2-D disk collisions (C99, no dependencies)' \
-	  'Version: $(VERSION)' 'Libs: -L$${libdir} -lcollide2d' 'Libs.private: -lm' \
-	  'Cflags: -I$${includedir}' > $@
+	@sed -e 's|@C2D_PC_PREFIX@|$(PREFIX)|' -e 's|@C2D_PC_LIBDIR@|$(call pc_dir,$(LIBDIR))|' \
+	  -e 's|@C2D_PC_INCLUDEDIR@|$(call pc_dir,$(INCLUDEDIR))|' -e 's|@C2D_PC_VERSION@|$(VERSION)|' \
+	  -e 's|@C2D_PC_CFLAGS@||' collide2d.pc.in > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@ && echo "wrote $@ (prefix $(PREFIX))"; fi
 
 # The whole library as one self-contained source, for firmware trees that
 # take one .c file beside the header (scripts/amalgamate.sh).
@@ -79,58 +87,77 @@ $(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(wildcard lib/*.h)
 	@mkdir -p $(@D)
 	sh scripts/amalgamate.sh $@
 
+# Directories install creates are listed in build/install-dirs.txt, so
+# uninstall removes those (once empty) and no other (scripts/installdirs.sh).
+MAN_PAGES := $(wildcard man/*.3)
+MAN3 = $(DESTDIR)$(MANDIR)/man3
+INSTALL_DIRS = $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR) $(MAN3)
 install: lib
-	install -d $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR)
+	sh scripts/installdirs.sh create build/install-dirs.txt $(INSTALL_DIRS)
 	install -m 644 $(LIB_HDR) $(DESTDIR)$(INCLUDEDIR)/collide2d.h
 	install -m 644 $(STATIC) $(DESTDIR)$(LIBDIR)/libcollide2d.a
 	install -m 755 $(SHARED) $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)
 	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcollide2d.so
 	install -m 644 $(B)/collide2d.pc $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
+	install -m 644 $(MAN_PAGES) $(MAN3)
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do ln -sf $$page $(MAN3)/$$name || exit 1; done
 
 uninstall:
 	rm -f $(DESTDIR)$(INCLUDEDIR)/collide2d.h $(DESTDIR)$(LIBDIR)/libcollide2d.a \
 	  $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME) \
-	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
+	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc \
+	  $(addprefix $(MAN3)/,$(notdir $(MAN_PAGES)))
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do rm -f $(MAN3)/$$name; done
+	sh scripts/installdirs.sh remove build/install-dirs.txt $(INSTALL_DIRS)
 
 clean:
 	rm -rf build
 
 # ---------------------------------------------------------------- unit tests
-# One cmocka program per unit (tests/test_*.c).  The exact referee
-# (tests/referee.c, GMP rationals + MPFR) and the shared vector table
-# (tests/vectors.c, also run on emulated MCUs) are linked into each.
+# One cmocka program per unit (tests/unit/test_*.c, tests/vectors/test_*.c).
+# The exact referee and the case generators (referee/, GMP rationals + MPFR),
+# the shared test helper (tests/harness/) and the shared vector table with
+# its checks (tests/vectors/, also run on emulated MCUs) are linked into each.
 TEST_DEPS := libcmocka-dev libgmp-dev libmpfr-dev pkg-config
-TEST_SRCS := $(wildcard tests/test_*.c)
-TEST_BINS := $(patsubst tests/%.c,$(B)/tests/%,$(TEST_SRCS))
-TEST_SUPPORT := tests/referee.c tests/vectors.c tests/support.c tests/ref_rough.c
-TEST_SUPPORT_HDR := $(wildcard tests/*.h)
+TEST_SRCS := $(wildcard tests/unit/test_*.c tests/vectors/test_*.c)
+TEST_BINS := $(patsubst %.c,$(B)/tests/%,$(notdir $(TEST_SRCS)))
+HARNESS_SRC := $(wildcard tests/harness/*.c)
+HARNESS_HDR := $(wildcard tests/harness/*.h)
+VECTORS_SRC := tests/vectors/vectors.c $(wildcard tests/vectors/check_*.c)
+TEST_SUPPORT := referee/referee.c referee/cases.c referee/ref_rough.c referee/ref_toi_accel.c referee/cases_toi_accel.c $(VECTORS_SRC) $(HARNESS_SRC)
+TEST_SUPPORT_HDR := $(wildcard referee/*.h tests/unit/*.h tests/vectors/*.h) $(HARNESS_HDR)
+TEST_INC := -Ireferee -Itests/harness -Itests/unit -Itests/vectors
 
 check-deps-test:
 	@sh scripts/deps.sh $(TEST_DEPS)
 
-$(B)/tests/%: tests/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
+$(B)/tests/%: tests/unit/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
+	$(CC) $(ALL_CFLAGS) -Wno-conversion $(TEST_INC) -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
 
-$(B)/gen_vectors: tests/gen_vectors.c tests/referee.c tests/referee.h tests/vectors.h $(LIB_HDR)
+$(B)/tests/%: tests/vectors/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -std=c99 -Iinclude -Itests -o $@ tests/gen_vectors.c tests/referee.c -lmpfr -lgmp -lm
+	$(CC) $(ALL_CFLAGS) -Wno-conversion $(TEST_INC) -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
+
+$(B)/gen_vectors: tests/vectors/gen_vectors.c referee/referee.c referee/referee.h tests/vectors/vectors.h $(LIB_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -std=c99 -Iinclude -Ireferee -Itests/vectors -o $@ tests/vectors/gen_vectors.c referee/referee.c -lmpfr -lgmp -lm
 
 # Regenerate the shared vector table from the exact referee.
 vectors: check-deps-test $(B)/gen_vectors
-	$(B)/gen_vectors tests/vectors.c
+	$(B)/gen_vectors tests/vectors/vectors.c
 
 # The committed table must be exactly what the referee gives today.
 check-vectors: check-deps-test $(B)/gen_vectors
-	@$(B)/gen_vectors $(B)/vectors.c && cmp -s $(B)/vectors.c tests/vectors.c && \
+	@$(B)/gen_vectors $(B)/vectors.c && cmp -s $(B)/vectors.c tests/vectors/vectors.c && \
 	  echo "check-vectors: 1 passed, 0 failed" || \
-	  { echo "check-vectors: tests/vectors.c differs from the referee (make vectors)"; exit 1; }
+	  { echo "check-vectors: tests/vectors/vectors.c differs from the referee (make vectors)"; exit 1; }
 
 check-build: $(AMALGAMATION)
-	@sh tests/check_build.sh $(B)/check-build $(AMALGAMATION)
+	@sh tests/build/check_build.sh $(B)/check-build $(AMALGAMATION)
 
-$(B)/tests/cxx_smoke: tests/cxx_smoke.cpp $(STATIC)
+$(B)/tests/cxx_smoke: tests/unit/cxx_smoke.cpp $(STATIC)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -std=c++11 -pedantic -Wall -Wextra -Werror -Iinclude -o $@ $< $(STATIC) -lm
 
@@ -147,7 +174,12 @@ LINT_TARGETS :=
 -include bench/bench.mk
 -include tests/mcu/mcu.mk
 -include tests/fuzz/fuzz.mk
--include tests/lint.mk
+-include tests/build/lint.mk
+-include tests/consumers/consumers.mk
+-include examples/examples.mk
+-include python/python.mk
+-include man/man.mk
+-include tests/cross/cross.mk
 
 # Static analysis: fragments append to LINT_TARGETS.
 lint: $(LINT_TARGETS)

@@ -7,13 +7,13 @@
 
 #define Q16_MAX (2147483647.0 / 65536.0)
 
-void gen_impact(rng *r, ref_case *c)
+void gen_impact(c2d_rng *r, ref_case *c)
 {
     /* Relative velocity in a random direction; the contact normal makes an
      * angle asin(beta) with the approach direction, beta (the impact
      * parameter over the radius sum) uniform in (-1, 1) as for disks
      * thrown at each other at random. */
-    double beta = rng_range(r, -1, 1), dist = rng_range(r, 0.5, 2.0);
+    double beta = c2d_rng_range(r, -1, 1), dist = c2d_rng_range(r, 0.5, 2.0);
     double th = asin(beta), ux, uy, rx, ry, len;
     int i;
     gen_plain(r, c);
@@ -97,7 +97,7 @@ static void derive(case_set *dst, const case_set *src, const char *name, void (*
 
 static void generate(case_set *s, const char *name, int n, unsigned long long seed, int extreme, int prec)
 {
-    rng r;
+    c2d_rng r;
     int i;
     r.s = seed;
     s->name = name;
@@ -202,19 +202,6 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-/* Batch results must be bit-identical to the scalar call (header promise). */
-static int batch_differs(const contender *k, const ref_case *c, c2d_status s, const double got[4])
-{
-    contender scalar = *k;
-    double ref[4];
-    c2d_status rs;
-    if (k->kind != KIND_BATCH && k->kind != KIND_BATCHF) return 0;
-    scalar.kind = k->kind == KIND_BATCH ? KIND_DOUBLE : KIND_FLOAT;
-    scalar.fn = c2d_collide;
-    rs = contender_run(&scalar, c, ref);
-    return rs != s || memcmp(ref, got, sizeof ref) != 0;
-}
-
 static void tally_finite(const double got[4], acc_stats *o)
 {
     int i, nan = 0, inf = 0;
@@ -252,7 +239,7 @@ void evaluate(const contender *k, const case_set *s, acc_stats *o)
         double got[4];
         c2d_status st = contender_run(k, c, got);
         o->wrong_status += !status_right(k, c, r, st);
-        o->batch_mismatch += batch_differs(k, c, st, got);
+        o->batch_mismatch += !contender_batch_agrees(k, c);
         tally_finite(got, o);
         /* Errors over real impacts only; a contender that writes where it
          * should not is already counted as a wrong status. */

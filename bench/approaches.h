@@ -32,4 +32,33 @@ c2d_status bench_trig(c2d_body *a, c2d_body *b, double restitution);
  * every scalar contender's timing includes. */
 c2d_status bench_noop(c2d_body *a, c2d_body *b, double restitution);
 
+/* Issue 12's baselines, transcribed as plainly as a user would write them. */
+
+/* bench_seed_equal in float (sqrtf), and both with the normal (nx, ny)
+ * given instead of b.pos - a.pos (the seed's method fed the same normal as
+ * c2d_collide_normal).  The normal comes as two scalars, in the registers a
+ * c2d_vec2 by value would use: gcc 12 stores a by-value c2d_vec2 to the
+ * stack and reloads it as one 16-byte vector, which cannot be forwarded
+ * from the two 8-byte stores (a stall of some 10 cycles in the callee);
+ * bench_seed_equal_normal_v is the by-value form, timed once to show it. */
+c2d_status bench_seed_equalf(c2d_bodyf *a, c2d_bodyf *b, float restitution);
+c2d_status bench_seed_equal_normal(c2d_body *a, c2d_body *b, double nx, double ny, double restitution);
+c2d_status bench_seed_equal_normalf(c2d_bodyf *a, c2d_bodyf *b, float nx, float ny, float restitution);
+c2d_status bench_seed_equal_normal_v(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution);
+
+/* The textbook time of impact: d = pb - pa, v = vb - va, a = v.v, b = d.v,
+ * c = d.d - R^2, disc = b^2 - ac, t = (-b - sqrt(disc)) / a, with the
+ * obvious early outs (b >= 0: SEPARATING; c <= 0: t = 0; disc <= 0:
+ * SEPARATING).  No scaling, no care: overflow, underflow and cancellation
+ * as they come. */
+c2d_status bench_toi_textbook(const c2d_body *a, const c2d_body *b, double radius_sum, double *t);
+c2d_status bench_toi_textbookf(const c2d_bodyf *a, const c2d_bodyf *b, float radius_sum, float *t);
+
+/* Walton's rough-disk model transcribed plainly in double: unit normal and
+ * tangent with sqrt, slip velocity, normal impulse -(1+e) gn / (1/ma + 1/mb),
+ * sticking impulse -(1+beta) gt mt capped at mu Jn (Coulomb), velocities and
+ * spins updated.  Reports SEPARATING when gn >= 0, OK otherwise; no other
+ * checks, normal = b.pos - a.pos. */
+c2d_status bench_walton(c2d_disk *a, c2d_disk *b, c2d_surface s);
+
 #endif

@@ -1,7 +1,9 @@
 /* collide2d speed-for-accuracy benchmark.  See bench/bench.mk.
  *   bench [--results FILE] [--plot-data FILE] [--ir FILE] [--flags TEXT]
- *         [--plain N] [--extreme N] [--rounds N] [--large N]
+ *         [--sizes FILE] [--plain N] [--extreme N] [--rounds N]
+ *         [--ratio-rounds N] [--large N]
  *   bench --smoke        quick self-check for `make test`
+ *   bench --ratios-only ROUNDS   the interleaved ratios alone, briefly (ratio.c)
  *   bench --callgrind    driver for valgrind --tool=callgrind (client requests) */
 #include "bench.h"
 
@@ -11,18 +13,26 @@
 #include <string.h>
 
 #include "box2d_contender.h"
+#include "old.h"
 
 int bench_smoke(void);
 
 #define PAIRS_IN_CACHE 4096
+#define BENCH_OLD_REV_TEXT "commit " BENCH_OLD_REV
 #define CALLGRIND_PAIRS 1024
 #define MAXK 32
 
 typedef struct options {
-    const char *results, *plot_data, *ir, *flags;
-    int n_plain, n_extreme, rounds;
+    const char *results, *plot_data, *ir, *flags, *sizes;
+    int n_plain, n_extreme, rounds, ratio_rounds;
     size_t n_large;
 } options;
+
+/* Code size per call site (bench/callsite.c, nm -S): [var, one][variant]. */
+typedef struct site_sizes {
+    int found;
+    long call[2][GV_COUNT], inl[2][GV_COUNT];
+} site_sizes;
 
 typedef struct results {
     acc_stats acc[MAXK][2];     /* plain, extreme */
@@ -33,7 +43,12 @@ typedef struct results {
     double ns[2][MAXK + 1];     /* random plain, impacts; last slot: empty call */
     double ir[2][MAXK + 1];     /* instructions per collision (-1: unknown) */
     double slow_share[2];
+    int quiet_rounds[2], rounds_run[2]; /* the speed table's quiet rounds of those run (random, impacts) */
     roof_result roof[2];        /* double, float */
+    ratios rat;                 /* issue 12's interleaved ratios */
+    rough_stats rough[RK_COUNT][2]; /* plain, extreme */
+    toi_stats toi[TK_COUNT][2][2];  /* [contender][double, float][ordinary, extreme] */
+    site_sizes sizes;
 } results;
 
 /* ------------------------------------------------------------ inputs */
@@ -41,7 +56,7 @@ typedef struct results {
 static ref_case *timing_cases(int impacts, unsigned long long seed)
 {
     ref_case *c = malloc(PAIRS_IN_CACHE * sizeof *c);
-    rng r;
+    c2d_rng r;
     int i;
     r.s = seed;
     for (i = 0; i < PAIRS_IN_CACHE; i++) {
@@ -53,37 +68,85 @@ static ref_case *timing_cases(int impacts, unsigned long long seed)
     return c;
 }
 
-/* Reads "<label>/<id> <total Ir>" lines (made from callgrind dumps). */
+/* Every "<name> <total Ir>" line (made from callgrind dumps). */
+#define MAXIR 1024
+static struct ir_entry { char name[200]; double v; } ir_tab[MAXIR];
+static int n_ir;
+
+static double ir_get(const char *name)
+{
+    int i;
+    for (i = 0; i < n_ir; i++)
+        if (strcmp(ir_tab[i].name, name) == 0) return ir_tab[i].v;
+    return -1;
+}
+
+/* Reads the dumps; the contenders' rows are "<label>/<id>". */
 static void read_ir(const char *path, results *res)
 {
     char line[256], name[200];
-    double total[2][MAXK + 1];
     int s, j;
     FILE *f = path ? fopen(path, "r") : NULL;
     for (s = 0; s < 2; s++)
-        for (j = 0; j <= MAXK; j++) total[s][j] = res->ir[s][j] = -1;
+        for (j = 0; j <= MAXK; j++) res->ir[s][j] = -1;
     if (f == NULL) return;
     while (fgets(line, sizeof line, f)) {
         double v;
-        if (sscanf(line, "%199s %lf", name, &v) != 2) continue;
-        s = strncmp(name, "plain/", 6) == 0 ? 0 : strncmp(name, "impacts/", 8) == 0 ? 1 : -1;
-        if (s < 0) continue;
-        for (j = 0; j <= bench_ncontenders; j++) {
-            const char *id = j < bench_ncontenders ? bench_contenders[j].id : "noop";
-            if (strcmp(strchr(name, '/') + 1, id) == 0) total[s][j] = v;
-        }
+        if (sscanf(line, "%199s %lf", name, &v) != 2 || n_ir == MAXIR) continue;
+        snprintf(ir_tab[n_ir].name, sizeof ir_tab[n_ir].name, "%s", name);
+        ir_tab[n_ir++].v = v;
     }
     fclose(f);
     for (s = 0; s < 2; s++) {
-        double base = total[s][bench_ncontenders];
+        char key[128];
+        double base;
+        snprintf(key, sizeof key, "%s/noop", s ? "impacts" : "plain");
+        base = ir_get(key);
         for (j = 0; j <= bench_ncontenders; j++) {
+            const char *id = j < bench_ncontenders ? bench_contenders[j].id : "noop";
             int batch = j < bench_ncontenders && (bench_contenders[j].kind == KIND_BATCH ||
                                                   bench_contenders[j].kind == KIND_BATCHF);
-            if (total[s][j] < 0 || base < 0) continue;
+            double total;
+            snprintf(key, sizeof key, "%s/%s", s ? "impacts" : "plain", id);
+            total = ir_get(key);
+            if (total < 0 || base < 0) continue;
             /* Scalar rows: beyond the empty call's loop; a batch is one call. */
-            res->ir[s][j] = (total[s][j] - (batch || j == bench_ncontenders ? 0 : base)) / CALLGRIND_PAIRS;
+            res->ir[s][j] = (total - (batch || j == bench_ncontenders ? 0 : base)) / CALLGRIND_PAIRS;
         }
     }
+}
+
+/* Instructions per call of a timed pass (callgrind), scalar passes less
+ * the empty call's loop; -1 when unknown. */
+static double ir_of(const ratios *r, const rstat *s, int scalar)
+{
+    double v = ir_get(s->id), base = ir_get(r->noop.id);
+    if (v < 0 || (scalar && base < 0) || s->n <= 0) return -1;
+    return (v - (scalar ? base : 0)) / s->n;
+}
+
+/* bench/callsite.o's function sizes (nm -S --defined-only). */
+static void read_sizes(const char *path, site_sizes *z)
+{
+    static const char *const variant[GV_COUNT] = {"collide", "collidef", "normal", "normalf"};
+    char line[256], name[200], type[8];
+    unsigned long addr, size;
+    FILE *f = path ? fopen(path, "r") : NULL;
+    memset(z, 0, sizeof *z);
+    if (f == NULL) return;
+    while (fgets(line, sizeof line, f)) {
+        int w, v;
+        if (sscanf(line, "%lx %lx %7s %199s", &addr, &size, type, name) != 4) continue;
+        for (w = 0; w < 2; w++)
+            for (v = 0; v < GV_COUNT; v++) {
+                char want[64];
+                snprintf(want, sizeof want, "site_%s_call_%s", w ? "one" : "var", variant[v]);
+                if (strcmp(name, want) == 0) z->call[w][v] = (long)size, z->found++;
+                snprintf(want, sizeof want, "site_%s_inline_%s", w ? "one" : "var", variant[v]);
+                if (strcmp(name, want) == 0) z->inl[w][v] = (long)size, z->found++;
+            }
+    }
+    fclose(f);
 }
 
 /* ------------------------------------------------------------ measuring */
@@ -107,16 +170,39 @@ static void measure_accuracy(const case_set *sets, results *res)
 static void measure_speed(const options *o, results *res)
 {
     int s;
+    /* The ratios first: their long run finds the canary's best, against
+     * which the speed table's rounds are judged quiet or busy. */
+    ratios_measure(&res->rat, o->ratio_rounds, PAIRS_IN_CACHE, 0);
     for (s = 0; s < 2; s++) {
         ref_case *c = timing_cases(s, 1000 + (unsigned long long)s);
         timing_data *t = timing_make(c, PAIRS_IN_CACHE);
         res->slow_share[s] = timing_slow_share(c, PAIRS_IN_CACHE);
         timing_run(t, o->rounds, res->ns[s]);
+        res->quiet_rounds[s] = timing_quiet_rounds, res->rounds_run[s] = timing_rounds_run;
         timing_free(t);
         free(c);
     }
     roof_run(0, o->n_large, 5, &res->roof[0]);
     roof_run(1, o->n_large, 5, &res->roof[1]);
+}
+
+static void measure_toi(const options *o, results *res)
+{
+    int k, p, x;
+    for (k = 0; k < TK_COUNT; k++)
+        for (p = 0; p < 2; p++)
+            for (x = 0; x < 2; x++)
+                if (k != TK_OLD || BENCH_HAVE_OLD())
+                    toi_evaluate(k, p, x, (x ? o->n_extreme : o->n_plain) / 4, 8000 + 2 * (unsigned)p + (unsigned)x,
+                                 &res->toi[k][p][x]);
+}
+
+static void measure_rough(const options *o, results *res)
+{
+    int k, x;
+    for (k = 0; k < RK_COUNT; k++)
+        for (x = 0; x < 2; x++)
+            rough_evaluate(k, x, x ? o->n_extreme : o->n_plain, 7000 + (unsigned)x, &res->rough[k][x]);
 }
 
 static int run_callgrind_driver(void)
@@ -129,6 +215,10 @@ static int run_callgrind_driver(void)
         callgrind_run(t, CALLGRIND_PAIRS, s == 0 ? "plain" : "impacts");
         timing_free(t);
         free(c);
+    }
+    {
+        static ratios r;
+        ratios_measure(&r, 1, PAIRS_IN_CACHE, 1);
     }
     bench_box2d_fini();
     return 0;
@@ -243,19 +333,21 @@ static void equal_table(FILE *f, const results *res)
     fprintf(f, "\n");
 }
 
-static void speed_table(FILE *f, const results *res, const options *o)
+static void speed_table(FILE *f, const results *res)
 {
     char b[8][32];
     const int base = 0; /* c2d_collide */
     int j;
     fprintf(f, "### Speed (same %d in-cache pairs for every contender, e = 1)\n\n", PAIRS_IN_CACHE);
-    fprintf(f, "Median ns per collision over %d interleaved rounds (inputs restored untimed before each "
-               "pass). *Random*: the plain generator (%.0f%% of pairs cancel in d and need the "
+    fprintf(f, "Median ns per collision over the quiet ones (%d / %d; as in the goals) of %d / %d interleaved rounds "
+               "(inputs restored untimed before each pass; every contender once per round, so each pass follows "
+               "ten others on the same pairs). *Random*: the plain generator (%.0f%% of pairs cancel in d and need the "
                "double-double tier). *Impacts*: disks thrown at each other with a uniform impact "
                "parameter (%.0f%% need it). Instructions: callgrind, %d pairs, minus the empty call's loop "
                "(%.1f / %.1f instr per pair) for scalar rows.\n\n",
-            o->rounds, 100 * res->slow_share[0], 100 * res->slow_share[1], CALLGRIND_PAIRS,
-            res->ir[0][bench_ncontenders], res->ir[1][bench_ncontenders]);
+            res->quiet_rounds[0], res->quiet_rounds[1], res->rounds_run[0], res->rounds_run[1], 100 * res->slow_share[0],
+            100 * res->slow_share[1],
+            CALLGRIND_PAIRS, res->ir[0][bench_ncontenders], res->ir[1][bench_ncontenders]);
     fprintf(f, "| contender | ns random | ns impacts | vs c2d_collide (random / impacts) | instr random | "
                "instr impacts | max rel. error (plain) |\n|---|---:|---:|---:|---:|---:|---:|\n");
     for (j = 0; j < bench_ncontenders; j++)
@@ -291,29 +383,176 @@ static int find(const char *id)
     return 0;
 }
 
+static const char *const lib_name[GV_COUNT] = {"c2d_collide", "c2d_collidef", "c2d_collide_normal",
+                                               "c2d_collide_normalf"};
+static const char *const inl_name[GV_COUNT] = {"c2d_collide_inline", "c2d_collidef_inline",
+                                               "c2d_collide_normal_inline", "c2d_collide_normalf_inline"};
+static const char *const seed_name[GV_COUNT] = {"bench_seed_equal", "bench_seed_equalf", "bench_seed_equal_normal",
+                                                "bench_seed_equal_normalf"};
+
+/* "0.72 (0.70–0.74; all 0.81)": the median ratio, its quartiles, and the
+ * median over all rounds (busy machine included). */
+static const char *rq(const rstat *s, char *buf)
+{
+    snprintf(buf, 64, "%.2f (%.2f–%.2f; all %.2f)", s->ratio, s->q1, s->q3, s->ratio_all);
+    return buf;
+}
+
+/* The same as a gain (the inverse ratio: how many times faster). */
+static const char *gain(const rstat *s, char *buf)
+{
+    snprintf(buf, 64, "%.2fx (%.2f–%.2f; all %.2f)", 1 / s->ratio, 1 / s->q3, 1 / s->q1, 1 / s->ratio_all);
+    return buf;
+}
+
+/* A verdict on the quiet-machine figure, noting when the all-rounds one
+ * (busy machine included) would not meet the goal. */
+static const char *verdict2(int ok, int ok_all)
+{
+    if (ok && ok_all) return "**met**";
+    if (ok) return "**met** (not in busy rounds)";
+    if (ok_all) return "**not met** (met in busy rounds)";
+    return "**not met**";
+}
+
+static const char *instr(double v, char *buf)
+{
+    if (v < 0) return "n/a";
+    snprintf(buf, 32, v < 100 ? "%.1f" : "%.0f", v);
+    return buf;
+}
+
+/* The x86-64 level the batch's run-time dispatch finds on this CPU. */
+static const char *cpu_level(void)
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+        __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512cd"))
+        return "x86-64-v4 (AVX-512)";
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return "x86-64-v3 (AVX2, FMA)";
+    if (__builtin_cpu_supports("sse4.2")) return "x86-64-v2 (SSE4.2)";
+    return "baseline x86-64 (SSE2)";
+#else
+    return "not x86-64: no run-time dispatch";
+#endif
+}
+
 static const char *verdict(int ok) { return ok ? "**met**" : "**not met**"; }
+
+static const char *const ba_fn_name[BA_FN] = {"c2d_collide", "c2d_collide_normal", "c2d_collidef",
+                                              "c2d_collide_normalf", "c2d_collide_batch", "c2d_collide_batchf"};
+static const char *const ba_set_name[BS_SETS] = {
+    "random", "impacts", "extreme", "cancelling", "walls (oblique, at rest)", "axis-aligned, equal masses, e = 1",
+    "axis-aligned wall at rest, e = 0.8", "axis-aligned moving wall, e = 0.8", "axis-aligned, unequal masses"};
+
+/* Before/after rows that exist (the axis-aligned sets: scalar calls only). */
+static int ba_timed(int v, int s) { return v < BA_BATCH || s < BS_AXIS_SWAP; }
 
 static void goals(FILE *f, const results *res)
 {
-    const int lib = find("c2d_collide"), seed = find("seed_equal"), seedm = find("seed_masses");
-    const int trig = find("trig"), batch = find("c2d_collide_batch"), batchf = find("c2d_collide_batchf");
-    const int libf = find("c2d_collidef");
-    const double r0 = res->ns[0][lib] / res->ns[0][seed], r1 = res->ns[1][lib] / res->ns[1][seed];
-    const double b0 = res->ns[0][lib] / res->ns[0][batch], bf = res->ns[0][libf] / res->ns[0][batchf];
+    const ratios *r = &res->rat;
+    const int lib = find("c2d_collide"), seedm = find("seed_masses"), trig = find("trig");
     const double roofd = res->roof[0].batch_pps / res->roof[0].roof_pps;
     const double rooff = res->roof[1].batch_pps / res->roof[1].roof_pps;
     const double lmax = fmax(res->acc[lib][0].max_ulp, res->acc[lib][1].max_ulp);
     const acc_stats *sx = &res->acc[seedm][1], *tx = &res->acc[trig][1];
-    fprintf(f, "### Goals\n\n| goal | measured | verdict |\n|---|---|---|\n");
-    fprintf(f, "| c2d_collide no slower than the seed transcription (ratio <= 1.0) | %.2f random, %.2f "
-               "impacts (vs the any-mass transcription: %.2f / %.2f) | %s |\n", r0, r1,
-            res->ns[0][lib] / res->ns[0][seedm], res->ns[1][lib] / res->ns[1][seedm], verdict(r0 <= 1 && r1 <= 1));
-    fprintf(f, "| batch >= 4x the scalar call's throughput | random: double %.2fx, float %.2fx; impacts: double "
-               "%.2fx, float %.2fx | %s |\n", b0, bf, res->ns[1][lib] / res->ns[1][batch],
-            res->ns[1][libf] / res->ns[1][batchf], verdict(b0 >= 4 && bf >= 4));
-    fprintf(f, "| large batches >= 50%% of the bandwidth roof | double %.0f%%, float %.0f%% | %s |\n",
-            100 * roofd, 100 * rooff, verdict(roofd >= 0.5 && rooff >= 0.5));
-    char b[4][32];
+    char b[8][64];
+    int v, p, s, x;
+    fprintf(f, "### Goals (issue 12)\n\n");
+    fprintf(f, "Every speed figure is a ratio timed interleaved in this one process. Each comparison is a group of "
+               "passes over the same in-cache pairs (%d per pass; %d for the sets whose calls take microseconds); "
+               "in each of %d rounds every group runs once, its passes one after another (order rotated, inputs "
+               "restored untimed), so some 60 other groups run between two passes of one group and no branch "
+               "predictor can learn a pass's pairs by heart (on fresh data each frame it could not either). A ratio "
+               "is the median over the rounds of the per-round ratio. This machine is shared (a VM with steal "
+               "time): before each group a canary (the seed transcription on pairs of its own) is timed, and a "
+               "round counts as *quiet* when the canary is within 10%% of its best (%.2f ns); %.0f%% of the "
+               "group-rounds were. Figures are medians over the quiet rounds, with their quartiles, then (after "
+               "\"all\") the median over every round, busy ones included: contention slows the library's "
+               "wide out-of-order code more than the bare formulas. The medians of the odd and of the even rounds "
+               "differ by at most %.1f%% over every ratio. Built the way `make` builds (flags above); e = 1 "
+               "unless stated.\n\n", r->n, r->n >= 256 ? r->n / 4 : r->n, r->rounds, r->canary_ns,
+            100 * r->quiet_share, 100 * r->max_halves);
+    fprintf(f, "| goal | measured: quiet median (quartiles; all rounds) | verdict |\n|---|---|---|\n");
+    for (p = GP_LIB; p <= GP_INLINE; p++)
+        for (v = 0; v < GV_COUNT; v++) {
+            const rstat *im = &r->goal[v][GS_IMPACTS][p], *rn = &r->goal[v][GS_RANDOM][p];
+            fprintf(f, "| `%s` <= 0.8x the seed's method (`%s`%s) on impacts, <= 1.0x on the random mix | impacts "
+                       "%s, random %s | %s |\n", p == GP_LIB ? lib_name[v] : inl_name[v], seed_name[v],
+                    v >= GV_NORMAL ? ", same normal" : "", rq(im, b[0]), rq(rn, b[1]),
+                    verdict2(im->ratio <= 0.8 && rn->ratio <= 1.0, im->ratio_all <= 0.8 && rn->ratio_all <= 1.0));
+        }
+    if (res->sizes.found == 4 * GV_COUNT) {
+        fprintf(f, "| code size per inline call site (bytes of a function making one call, restitution a parameter; "
+                   "see below) | ");
+        for (v = 0; v < GV_COUNT; v++)
+            fprintf(f, "%s`%s` %ld vs %ld for the call", v ? ", " : "", inl_name[v], res->sizes.inl[0][v],
+                    res->sizes.call[0][v]);
+        fprintf(f, " | reported |\n");
+    } else {
+        fprintf(f, "| code size per inline call site | not measured (run `make bench`) | — |\n");
+    }
+    for (p = 0; p < 2; p++)
+        fprintf(f, "| `%s` <= 3x the textbook quadratic (`%s`) on ordinary pairs | %s | %s |\n",
+                p ? "c2d_time_of_impactf" : "c2d_time_of_impact", p ? "bench_toi_textbookf" : "bench_toi_textbook",
+                rq(&r->toi[p][1], b[0]), verdict2(r->toi[p][1].ratio <= 3, r->toi[p][1].ratio_all <= 3));
+    for (p = 0; p < 2; p++)
+        fprintf(f, "| `%s` >= %dx the scalar call's throughput on all-OK impacts (dispatch as built: %s) | %s | %s |\n",
+                p ? "c2d_collide_batchf" : "c2d_collide_batch", p ? 3 : 2, cpu_level(), gain(&r->batch[p][1], b[0]),
+                verdict2(1 / r->batch[p][1].ratio >= (p ? 3 : 2), 1 / r->batch[p][1].ratio_all >= (p ? 3 : 2)));
+    fprintf(f, "| large batches >= 50%% of the memory-bandwidth roof | double %.0f%%, float %.0f%% | %s |\n", 100 * roofd,
+            100 * rooff, verdict(roofd >= 0.5 && rooff >= 0.5));
+    fprintf(f, "| cost of the axis-aligned branch (`c2d_collide`, ns per call; table below) | ordinary %.1f, oblique "
+               "wall %.1f; axis-aligned: swap %.1f, wall at rest e = 1 %.1f, e = 0.8 %.1f, moving wall e = 0.8 %.0f, "
+               "unequal masses %.0f | reported |\n", r->axis[AX_ORDINARY].ns, r->axis[AX_WALL_OBLIQUE].ns,
+            r->axis[AX_SWAP].ns, r->axis[AX_WALL1].ns, r->axis[AX_WALL08].ns, r->axis[AX_PADDLE].ns,
+            r->axis[AX_UNEQUAL].ns);
+    if (r->have_old) {
+        static const char *const short_fn[BA_FN] = {"collide", "normal", "collidef", "normalf", "batch", "batchf"};
+        double worst_ec = 0;
+        char list[2048] = "";
+        int slower = 0, rows = 0;
+        for (s = 0; s < BS_SETS; s++) { /* per set: the functions more than 10% slower */
+            double lo = INFINITY, hi = 0;
+            char names[256] = "";
+            int k = 0;
+            for (v = 0; v < BA_FN; v++) {
+                const double q = r->ba[v][s][1].ratio;
+                if (!ba_timed(v, s)) continue;
+                rows++;
+                if ((s == BS_EXTREME || s == BS_CANCEL) && q > worst_ec) worst_ec = q;
+                if (!(q > 1.10)) continue;
+                k++, slower++;
+                lo = fmin(lo, q), hi = fmax(hi, q);
+                snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s %.2f", k > 1 ? ", " : "",
+                         short_fn[v], q);
+            }
+            if (k == 0) continue;
+            if (k <= 2)
+                snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s: %s", list[0] ? "; " : "",
+                         ba_set_name[s], names);
+            else
+                snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s: %.3g–%.3g (%d functions)",
+                         list[0] ? "; " : "", ba_set_name[s], lo, hi, k);
+        }
+        for (x = 0; x < 2; x++)
+            for (p = 0; p < 2; p++) {
+                const double q = r->ba_toi[p][x][1].ratio;
+                rows++;
+                if (x == 1 && q > worst_ec) worst_ec = q;
+                if (!(q > 1.10)) continue;
+                slower++;
+                snprintf(list + strlen(list), sizeof list - strlen(list), "%stime of impact%s %s %.3g",
+                         list[0] ? "; " : "", p ? "f" : "", x ? "extreme" : "ordinary", q);
+            }
+        fprintf(f, "| nothing slower elsewhere: the extreme and cancelling rows within 10%% of the library before "
+                   "(%s), new/old <= 1.10 | worst extreme/cancelling row %.3g; of all %d rows, %d more than 10%% "
+                   "slower: %s (before/after table) | %s |\n", BENCH_OLD_REV_TEXT, worst_ec, rows, slower,
+                slower ? list : "none", verdict(worst_ec <= 1.10 && slower == 0));
+    } else {
+        fprintf(f, "| nothing slower elsewhere | the old library could not be built (no git history) | — |\n");
+    }
     fprintf(f, "| c2d_collide worst error a few ulp (header bound: 16); seed and trig worse and failing at the extremes | "
                "library %.3g ulp plain / %.3g extreme, wrong statuses + NaN + Inf: %d; seed (any mass) %s / "
                "%s ulp, on extremes %d NaN, %d Inf, %d wrong statuses; trig %s / %s ulp, on extremes %d NaN, "
@@ -323,16 +562,249 @@ static void goals(FILE *f, const results *res)
             fmt(res->acc[seedm][0].max_ulp, b[0]), fmt(sx->max_ulp, b[1]), sx->nan, sx->inf, sx->wrong_status,
             fmt(res->acc[trig][0].max_ulp, b[2]), fmt(tx->max_ulp, b[3]), tx->nan, tx->inf, tx->wrong_status,
             verdict(lmax <= 16 && sx->max_ulp > lmax && tx->max_ulp > lmax));
-    fprintf(f,
-            "Why the speed goals are missed (callgrind, `gcc -S`, `-fopt-info-vec`): the scalar call's arithmetic "
-            "is cheaper than the transcription's (one division against a square root and two divisions), but it "
-            "also checks every input and intermediate against overflow, underflow and cancellation, which is what "
-            "keeps the extreme rows at 0 wrong statuses, NaN and Inf; those checks are most of the instruction-count "
-            "difference in the table below. Pairs whose d cancels (kappa > 4) take the double-double tier. The batch "
-            "kernel is vectorised (float at -O2 on baseline x86-64, double from x86-64-v2 on, where SSE4.2 adds the "
-            "64-bit compares its flag masks need; clang vectorises both), but SSE2 holds two doubles and the pairs "
-            "the kernel declines fall back to the scalar call, which caps the gain well below 4x; large batches are "
-            "then compute-bound, not bandwidth-bound.\n\n");
+}
+
+/* Why the missed goals and the slower rows are what they are: the profiles
+ * (callgrind counts from this run; the rest measured once at this commit
+ * with cachegrind's branch simulation and scratch builds of lib/, named as
+ * such). */
+static void why(FILE *f, const results *res)
+{
+    const ratios *r = &res->rat;
+    const rstat *ci = r->goal[GV_COLLIDE][GS_IMPACTS], *cr = r->goal[GV_COLLIDE][GS_RANDOM];
+    const rstat *ni = r->goal[GV_NORMAL][GS_IMPACTS];
+    char b[16][64];
+    fprintf(f, "**Why** (callgrind counts from this run; the branch and store-forwarding findings measured at this "
+               "commit with `valgrind --tool=cachegrind --branch-sim=yes` and scratch builds of lib/, not committed):\n\n");
+    fprintf(f, "- `c2d_collide(f)` against the seed: on impacts it executes %s instructions against the seed's %s and "
+               "takes the same time (%.2fx; back to back %.2fx), short of the 0.77x the issue measured on its "
+               "machine. On the random mix the 22%% of pairs whose d cancels go out of line to the double-double "
+               "tier, and with the separating pairs they make the front end's branches data-dependent: %.2fx on "
+               "fresh pairs, %.2fx when the same pairs run back to back and the predictor has learnt them.\n",
+            instr(ir_of(r, &ci[GP_LIB], 1), b[0]), instr(ir_of(r, &ci[GP_SEED], 1), b[1]), ci[GP_LIB].ratio,
+            r->goal_b2b[GV_COLLIDE][GS_IMPACTS][GP_LIB].ratio, cr[GP_LIB].ratio,
+            r->goal_b2b[GV_COLLIDE][GS_RANDOM][GP_LIB].ratio);
+    fprintf(f, "- `c2d_collide_normal` (double) %.1f ns against `c2d_collide`'s %.1f on the same pairs: gcc 12 splits "
+               "`c2d_real_collide_normal` into a `.part.0` that receives the by-value normal through memory, stored "
+               "as two 8-byte halves and loaded as one 16-byte vector (`movupd`): no store forwarding, some 10 "
+               "cycles on the critical path. The seed given a `c2d_vec2` by value pays the same (%.2fx its scalar "
+               "form, above). Scratch build with `c2d_real_collide_normal` declared `C2D_HOT` (always inline): "
+               "7.3 ns against `c2d_collide`'s 6.3 in the same run. The float normal (8 bytes) forwards.\n",
+            ni[GP_LIB].ns, ci[GP_LIB].ns, r->seed_byvalue[1].ratio);
+    fprintf(f, "- The `C2D_INLINE` forms: at the call site gcc compiles the window's minimum (`geometry < lighter ? "
+               "geometry : lighter`) as a branch, where the library's `c2d_quick` gets `minsd`; on ordinary pairs it "
+               "goes either way, and cachegrind charges 25%% mispredictions to that line (0.27 per call against "
+               "0.02 for the library call). Back to back the predictor learns the pairs and the inline form is "
+               "%.2fx the seed on impacts; on fresh pairs %.2fx. A branch-free minimum at the site (as in "
+               "`c2d_quick`) is what would make the inline form pay off.\n",
+            r->goal_b2b[GV_COLLIDE][GS_IMPACTS][GP_INLINE].ratio, ci[GP_INLINE].ratio);
+    fprintf(f, "- Large batches, float: the roof's pairs are the plain generator's (22%% cancel, some separate), and "
+               "those leave the kernel for the scalar tiers one by one: the float batch then runs at about its "
+               "in-cache speed on that mix, compute-bound, not at the memory's pace.\n");
+    if (r->have_old) {
+        const rstat *ax = r->ba[BA_COLLIDE][BS_AXIS_UNEQUAL], *pd = r->ba[BA_COLLIDE][BS_AXIS_PADDLE];
+        const rstat *bw = r->ba[BA_BATCHF][BS_WALLS], *tx = r->ba_toi[0][1], *ne = r->ba[BA_NORMAL][BS_EXTREME];
+        fprintf(f, "- Slower than before, axis-aligned impacts (now correctly rounded): a moving wall at e < 1 and "
+                   "unequal masses go through `c2d_round_quotient` (floating-point expansions: `c2d_acc_product`, "
+                   "`c2d_exact_sum`, `c2d_remainder`: 75-90%% of the instructions) on every call: %s and %s "
+                   "instructions against %s before. A filter in front (the quotient in double-double, accepted when "
+                   "it is clear of a rounding boundary; the exact remainder only near one) would keep nearly all "
+                   "of them at the ordinary cost. Swaps and walls at rest execute only 20-50 instructions more than "
+                   "before, on the out-of-line axis path with full validation, yet take 1.4-2.3x the time.\n",
+                instr(ir_of(r, &pd[1], 1), b[0]), instr(ir_of(r, &ax[1], 1), b[1]), instr(ir_of(r, &ax[0], 1), b[2]));
+        fprintf(f, "- `c2d_collide_normal(f)` on extreme inputs (%.2fx): about one given normal in eight there has a "
+                   "zero component, and those now take the exact axis-aligned path (some 40%% of the instructions, "
+                   "%s against %s per call).\n", ne[1].ratio, instr(ir_of(r, &ne[1], 1), b[0]),
+                instr(ir_of(r, &ne[0], 1), b[1]));
+        fprintf(f, "- Batches of walls (float %.2fx): the new kernel's accept test wants both masses finite, so every "
+                   "wall pair leaves the kernel for the scalar call (%s instructions per pair against %s); the old "
+                   "kernel resolved walls in the kernel with the mass pair (0, 1). The scalar front end's wall test "
+                   "(`c2d_quick_wall`) in the kernel would restore it.\n", bw[1].ratio,
+                instr(ir_of(r, &bw[1], 0), b[0]), instr(ir_of(r, &bw[0], 0), b[1]));
+        fprintf(f, "- The time of impact on extreme pairs (%.0fx): about 40%% of them (the components at independent "
+                   "exponents) reach `c2d_toi_exact`, whose extended products (`c2d_acc_product`, `c2d_compress`: "
+                   "over 90%% of the instructions) take some 250,000 instructions each; %s per call on average "
+                   "against %s before, when %d of %d such statuses were wrong (referee table below). Issue 10's "
+                   "exact statuses, at a price a cheaper exact sign (fewer, shorter expansions) could lower.\n",
+                tx[1].ratio, instr(ir_of(r, &tx[1], 1), b[0]), instr(ir_of(r, &tx[0], 1), b[1]),
+                res->toi[TK_OLD][0][1].wrong_status, res->toi[TK_OLD][0][1].n);
+    }
+    fprintf(f, "- Rough disks: `c2d_rough_tangential` is nearly 90%% of `c2d_collide_rough`'s %s instructions "
+               "(Walton plainly: %s): the slip speed in double length with an extended exponent runs on every call, "
+               "with no plain-arithmetic path in front of it for the contacts that do not need it.\n\n",
+            instr(ir_of(r, &r->rough[RG_ROUGH], 1), b[0]), instr(ir_of(r, &r->rough[RG_WALTON], 1), b[1]));
+}
+
+/* The goals' detail: every comparison with its ns and instruction counts. */
+static void goal_tables(FILE *f, const results *res)
+{
+    const ratios *r = &res->rat;
+    char b[12][64];
+    int v, s, p, x;
+    fprintf(f, "### Against the seed's method (detail)\n\n");
+    fprintf(f, "*Impacts*: disks thrown at each other (uniform impact parameter); *random*: the plain generator "
+               "(22%% of pairs cancel in d). Seed: the bare transcription as an out-of-line call (`bench/approaches.c`); "
+               "seed inlined: the same text expanded into the loop, as a user's own ten lines would be. Inline: the "
+               "`C2D_INLINE` front end (`C2D_INLINE_AS_WRITTEN` = %d in the bench's flags). Instructions: callgrind, "
+               "per call, less the empty call's loop (%s per call).\n\n", r->as_written,
+            instr(r->noop.n > 0 && ir_get(r->noop.id) >= 0 ? ir_get(r->noop.id) / r->noop.n : -1, b[0]));
+    fprintf(f, "| function | set | ns seed | ns library | library / seed | ns inline | inline / seed | inline / seed "
+               "inlined | back to back: library / seed, inline / seed | instr seed / library / inline |\n"
+               "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (v = 0; v < GV_COUNT; v++)
+        for (s = 0; s < GS_COUNT; s++) {
+            const rstat *g = r->goal[v][s], *k = r->goal_b2b[v][s];
+            fprintf(f, "| `%s` | %s | %.2f | %.2f | %s | %.2f | %s | %.2f | %.2f, %.2f | %s / %s / %s |\n", lib_name[v],
+                    s == GS_IMPACTS ? "impacts" : "random", g[GP_SEED].ns, g[GP_LIB].ns, rq(&g[GP_LIB], b[0]),
+                    g[GP_INLINE].ns, rq(&g[GP_INLINE], b[1]), g[GP_INLINE].ratio / g[GP_SEED_INLINE].ratio,
+                    k[GP_LIB].ratio, k[GP_INLINE].ratio, instr(ir_of(r, &g[GP_SEED], 1), b[2]),
+                    instr(ir_of(r, &g[GP_LIB], 1), b[3]), instr(ir_of(r, &g[GP_INLINE], 1), b[4]));
+        }
+    fprintf(f, "\n*Back to back*: the same groups timed again, each group's %d rounds in a row (%.0f%% quiet), as a "
+               "benchmark of one function on fixed pairs would: the branch predictor then learns the 4096 pairs' "
+               "outcomes, which hides what data-dependent branches cost on fresh data. *The seed given a c2d_vec2 by "
+               "value* (`bench_seed_equal_normal_v`) takes %.2f ns against %.2f with the normal as two scalars "
+               "(%.2fx): gcc 12 spills the struct's two doubles and reloads them as one 16-byte vector, which cannot "
+               "be store-forwarded.\n\n", r->rounds / 2 > 3 ? r->rounds / 2 : 3, 100 * r->quiet_share_b2b,
+            r->seed_byvalue[1].ns, r->seed_byvalue[0].ns, r->seed_byvalue[1].ratio);
+    if (res->sizes.found == 4 * GV_COUNT) {
+        fprintf(f, "**Code size per call site** (`bench/callsite.c` compiled with the library's flags, `nm -S`): bytes "
+                   "of a function that makes one call; the inline front end's constants (a few 8-byte literals in "
+                   ".rodata, shared by every site of a file) not counted.\n\n");
+        fprintf(f, "| function | library call, e a parameter | inline, e a parameter | library call, e = 1 | inline, "
+                   "e = 1 |\n|---|---:|---:|---:|---:|\n");
+        for (v = 0; v < GV_COUNT; v++)
+            fprintf(f, "| `%s` | %ld | %ld | %ld | %ld |\n", inl_name[v], res->sizes.call[0][v], res->sizes.inl[0][v],
+                    res->sizes.call[1][v], res->sizes.inl[1][v]);
+        fprintf(f, "\n");
+    }
+    fprintf(f, "**Time of impact** on ordinary pairs (radii 0.1–1, centres 2 to 20 radius sums apart, at most 20; "
+               "aimed within 1.25 times the hitting angle: %.0f%% hit). Textbook: `bench_toi_textbook(f)`.\n\n",
+            100 * r->toi_hits);
+    fprintf(f, "| | ns textbook | ns library | library / textbook | instr textbook / library |\n|---|---:|---:|---:|---:|\n");
+    for (p = 0; p < 2; p++)
+        fprintf(f, "| %s | %.2f | %.2f | %s | %s / %s |\n", p ? "float" : "double", r->toi[p][0].ns, r->toi[p][1].ns,
+                rq(&r->toi[p][1], b[0]), instr(ir_of(r, &r->toi[p][0], 1), b[1]), instr(ir_of(r, &r->toi[p][1], 1), b[2]));
+    fprintf(f, "\n**Batch** on all-OK impacts (every pair one the front end accepts, in double and in float), "
+               "against the scalar call in a loop; the CPU offers %s (under callgrind, which has no AVX-512, the "
+               "AVX2 clone runs). Instructions per pair, the batch's whole call included.\n\n", cpu_level());
+    fprintf(f, "| | ns scalar | ns batch (per pair) | batch gain | instr scalar / batch |\n|---|---:|---:|---:|---:|\n");
+    for (p = 0; p < 2; p++)
+        fprintf(f, "| %s | %.2f | %.2f | %s | %s / %s |\n", p ? "float" : "double", r->batch[p][0].ns,
+                r->batch[p][1].ns, gain(&r->batch[p][1], b[0]), instr(ir_of(r, &r->batch[p][0], 1), b[1]),
+                instr(ir_of(r, &r->batch[p][1], 0), b[2]));
+    fprintf(f, "\n**The axis-aligned branch** (`c2d_collide`, correctly rounded when the centres share a coordinate), "
+               "against ordinary impacts, timed interleaved:\n\n");
+    {
+        static const char *const what[AX_COUNT] = {
+            "ordinary impacts (oblique, unequal masses)", "oblique walls (b immovable, at rest)",
+            "axis-aligned, equal masses (exact swap)", "axis-aligned wall at rest (exact negation)",
+            "axis-aligned wall at rest (-e u, one rounding)",
+            "axis-aligned moving wall (a paddle: exact quotient)", "axis-aligned, unequal masses (exact quotient)"};
+        static const char *const e_of[AX_COUNT] = {"1", "1", "1", "1", "0.8", "0.8", "1"};
+        fprintf(f, "| pairs | e | ns | vs ordinary | instr |\n|---|---:|---:|---:|---:|\n");
+        for (x = 0; x < AX_COUNT; x++)
+            fprintf(f, "| %s | %s | %.2f | %s | %s |\n", what[x], e_of[x], r->axis[x].ns, rq(&r->axis[x], b[0]),
+                    instr(ir_of(r, &r->axis[x], 1), b[1]));
+    }
+    fprintf(f, "\n");
+}
+
+static void before_after(FILE *f, const results *res)
+{
+    const ratios *r = &res->rat;
+    char b[6][64];
+    int v, s, p, x;
+    if (!r->have_old) return;
+    fprintf(f, "### Before and after (the library as of %s)\n\n", BENCH_OLD_REV_TEXT);
+    fprintf(f, "The old library is built inside the bench from `git archive %s lib include` with the same flags, its "
+               "symbols renamed `old_*` (objcopy), and timed interleaved against today's on the same pairs. "
+               "*Extreme*: the whole range (gen_extreme: subnormals, near-overflow, mass ratios to 1e600, INFINITY "
+               "masses, invalid inputs; float calls on float-range ones); *cancelling*: plain pairs whose d cancels "
+               "(kappa > 4); *walls*: impacts against an immovable b; time of impact *extreme*: scaled over the range "
+               "and components at independent exponents. Ratio new/old below 1 is faster. Instructions per call "
+               "(callgrind; batch rows per pair).\n\n", BENCH_OLD_REV_TEXT);
+    fprintf(f, "| function | pairs | ns old | ns new | new / old | instr old | instr new |\n"
+               "|---|---|---:|---:|---:|---:|---:|\n");
+    for (v = 0; v < BA_FN; v++)
+        for (s = 0; s < BS_SETS; s++) {
+            const rstat *q = r->ba[v][s];
+            const int scalar = v < BA_BATCH;
+            if (!ba_timed(v, s)) continue;
+            fprintf(f, "| `%s` | %s | %.2f | %.2f | %s%s | %s | %s |\n", ba_fn_name[v], ba_set_name[s], q[0].ns, q[1].ns,
+                    rq(&q[1], b[0]), q[1].ratio > 1.10 ? " **slower**" : "", instr(ir_of(r, &q[0], scalar), b[1]),
+                    instr(ir_of(r, &q[1], scalar), b[2]));
+        }
+    for (p = 0; p < 2; p++)
+        for (x = 0; x < 2; x++) {
+            const rstat *q = r->ba_toi[p][x];
+            fprintf(f, "| `%s` | %s | %.2f | %.2f | %s%s | %s | %s |\n", p ? "c2d_time_of_impactf" : "c2d_time_of_impact",
+                    x ? "extreme" : "ordinary", q[0].ns, q[1].ns, rq(&q[1], b[0]), q[1].ratio > 1.10 ? " **slower**" : "",
+                    instr(ir_of(r, &q[0], 1), b[1]), instr(ir_of(r, &q[1], 1), b[2]));
+        }
+    fprintf(f, "\n");
+}
+
+static void toi_table(FILE *f, const results *res, const options *o)
+{
+    static const char *const name[TK_COUNT] = {"library", "library before (" BENCH_OLD_REV ")", "textbook quadratic"};
+    char b[6][64];
+    int k, p;
+    fprintf(f, "### Time of impact against the exact referee\n\n");
+    fprintf(f, "What the time of impact's price buys: %d ordinary pairs (the speed goal's) and %d extreme ones "
+               "(scaled over the range, and components at independent exponents: magnitudes that differ by more "
+               "than the exponent range), against the exact referee (statuses in rationals, t in 256-bit MPFR). "
+               "Error: |t - exact| in the header's units (ulp of t plus the time one rounding of the centre "
+               "distance is worth at contact; bound 4), over the hits both report. Wrong status: a hit reported "
+               "as a miss or the reverse, or any other status but the referee's (RANGE where t overflows).\n\n",
+            o->n_plain / 4, o->n_extreme / 4);
+    fprintf(f, "| contender | format | ordinary: max / median units | wrong status | NaN/Inf t | extreme: max / "
+               "median units | wrong status | NaN/Inf t |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
+    for (k = 0; k < TK_COUNT; k++)
+        for (p = 0; p < 2; p++) {
+            const toi_stats *a = &res->toi[k][p][0], *x = &res->toi[k][p][1];
+            if (a->n == 0) continue;
+            fprintf(f, "| %s | %s | %s / %s | %d | %d | %s / %s | %d | %d |\n", name[k], p ? "float" : "double",
+                    fmt(a->max_units, b[0]), fmt(a->med_units, b[1]), a->wrong_status, a->nan_inf,
+                    fmt(x->max_units, b[2]), fmt(x->med_units, b[3]), x->wrong_status, x->nan_inf);
+        }
+    fprintf(f, "\nHits among the pairs (referee): ordinary %d / %d, extreme %d / %d (double).\n\n",
+            res->toi[TK_LIB][0][0].hits, res->toi[TK_LIB][0][0].n, res->toi[TK_LIB][0][1].hits, res->toi[TK_LIB][0][1].n);
+}
+
+static void rough_table(FILE *f, const results *res, const options *o)
+{
+    static const char *const name[RK_COUNT] = {"c2d_collide_rough (double)", "c2d_collide_roughf (float)",
+                                               "Walton transcribed plainly (double, `bench_walton`)"};
+    static const int timing[RK_COUNT] = {RG_ROUGH, RG_ROUGHF, RG_WALTON};
+    const ratios *r = &res->rat;
+    char b[12][64];
+    int k;
+    fprintf(f, "### Rough disks: friction and spin (Walton's model)\n\n");
+    fprintf(f, "%d plain contacts (radii 0.1–1 touching, speeds and spin x radius to 10, inertia 0.1–1 m r^2 or "
+               "INFINITY, 10%% walls, any e, mu in {0.05, 0.2, 1, 1e6, INFINITY}, beta in [-1, 1]; the unit test's "
+               "generator) and %d extreme ones (the normal part from gen_extreme, spins, radii and inertias anywhere "
+               "in the range), against the 4400-bit MPFR referee (`referee/ref_rough.c`). Error: worst component in "
+               "ulp of the body's scale (largest |vx|, |vy|, |spin radius| before and after; header bound 18). Energy: "
+               "the largest relative gain of kinetic energy with rotation over the plain impacts between bodies of "
+               "finite mass and inertia (it must never grow; the referee's energies are rounded to double, so "
+               "~1e-16 is rounding). Speed: %d in-cache plain "
+               "contacts, interleaved, normal = b.pos - a.pos.\n\n", o->n_plain, o->n_extreme, r->n);
+    fprintf(f, "| contender | unit | plain max | plain median | extreme max | extreme median | wrong status | NaN | Inf "
+               "| energy gain | ns | vs transcription | instr |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (k = 0; k < RK_COUNT; k++) {
+        const rough_stats *p = &res->rough[k][0], *x = &res->rough[k][1];
+        const rstat *t = &r->rough[timing[k]];
+        fprintf(f, "| %s | %s | %s | %s | %s | %s | %d / %d | %d / %d | %d / %d | %s | %.2f | %s | %s |\n", name[k],
+                k == RK_LIBF ? "float ulp" : "double ulp", fmt(p->max_ulp, b[0]), fmt(p->med_ulp, b[1]),
+                fmt(x->max_ulp, b[2]), fmt(x->med_ulp, b[3]), p->wrong_status, x->wrong_status, p->nan, x->nan, p->inf,
+                x->inf, fmt(p->max_energy_gain, b[4]), t->ns, rq(t, b[5]), instr(ir_of(r, t, 1), b[6]));
+    }
+    fprintf(f, "| c2d_collide on the same pairs (no friction, for scale) | | | | | | | | | | %.2f | %s | %s |\n\n",
+            r->rough[RG_COLLIDE].ns, rq(&r->rough[RG_COLLIDE], b[0]), instr(ir_of(r, &r->rough[RG_COLLIDE], 1), b[1]));
+    fprintf(f, "Wrong status, NaN and Inf: counts of cases (plain / extreme). The transcription checks only the "
+               "approach (gn < 0); it has no status for invalid, degenerate or overflowing inputs, so those count as "
+               "wrong.\n\n");
 }
 
 static void report(FILE *f, const results *res, const options *o)
@@ -340,10 +812,15 @@ static void report(FILE *f, const results *res, const options *o)
     fprintf(f, "## collide2d speed-for-accuracy benchmark (`make bench`)\n\n");
     machine(f, o);
     goals(f, res);
-    speed_table(f, res, o);
+    why(f, res);
+    goal_tables(f, res);
+    before_after(f, res);
+    speed_table(f, res);
     roof_table(f, res, o);
     accuracy_table(f, res, o);
     equal_table(f, res);
+    toi_table(f, res, o);
+    rough_table(f, res, o);
     fprintf(f, "![error vs time per collision](pareto.png)\n");
 }
 
@@ -379,8 +856,8 @@ static void plot_data(const char *path, const results *res)
 static int parse(int argc, char **argv, options *o)
 {
     int i;
-    o->results = o->plot_data = o->ir = o->flags = NULL;
-    o->n_plain = 20000, o->n_extreme = 20000, o->rounds = 101, o->n_large = (size_t)1 << 21;
+    o->results = o->plot_data = o->ir = o->flags = o->sizes = NULL;
+    o->n_plain = 20000, o->n_extreme = 20000, o->rounds = 201, o->ratio_rounds = 501, o->n_large = (size_t)1 << 21;
     for (i = 1; i < argc; i++) {
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (v == NULL) return 0;
@@ -388,6 +865,8 @@ static int parse(int argc, char **argv, options *o)
         else if (strcmp(argv[i], "--plot-data") == 0) o->plot_data = v;
         else if (strcmp(argv[i], "--ir") == 0) o->ir = v;
         else if (strcmp(argv[i], "--flags") == 0) o->flags = v;
+        else if (strcmp(argv[i], "--sizes") == 0) o->sizes = v;
+        else if (strcmp(argv[i], "--ratio-rounds") == 0) o->ratio_rounds = atoi(v);
         else if (strcmp(argv[i], "--plain") == 0) o->n_plain = atoi(v);
         else if (strcmp(argv[i], "--extreme") == 0) o->n_extreme = atoi(v);
         else if (strcmp(argv[i], "--rounds") == 0) o->rounds = atoi(v);
@@ -395,7 +874,7 @@ static int parse(int argc, char **argv, options *o)
         else return 0;
         i++;
     }
-    return o->n_plain > 0 && o->n_extreme > 0 && o->rounds > 0 && o->n_large >= 8;
+    return o->n_plain > 0 && o->n_extreme > 0 && o->rounds > 0 && o->ratio_rounds > 0 && o->n_large >= 8;
 }
 
 int main(int argc, char **argv)
@@ -405,6 +884,26 @@ int main(int argc, char **argv)
     case_set sets[SET_COUNT];
     int code;
     if (argc == 2 && strcmp(argv[1], "--callgrind") == 0) return run_callgrind_driver();
+    if (argc == 3 && strcmp(argv[1], "--ratios-only") == 0) { /* quick look at the ratios, no report */
+        static ratios r;
+        int v, g;
+        ratios_measure(&r, atoi(argv[2]), PAIRS_IN_CACHE, 0);
+        for (v = 0; v < GV_COUNT; v++)
+            for (g = 0; g < GS_COUNT; g++)
+                printf("%-20s %-8s seed %6.2f lib %6.2f (%.2f [%.2f-%.2f] all %.2f) inline %6.2f (%.2f all %.2f) "
+                       "seed_inl %6.2f b2b %.2f %.2f\n", lib_name[v], g ? "random" : "impacts", r.goal[v][g][0].ns,
+                       r.goal[v][g][1].ns, r.goal[v][g][1].ratio, r.goal[v][g][1].q1, r.goal[v][g][1].q3,
+                       r.goal[v][g][1].ratio_all, r.goal[v][g][2].ns, r.goal[v][g][2].ratio, r.goal[v][g][2].ratio_all,
+                       r.goal[v][g][3].ns, r.goal_b2b[v][g][1].ratio, r.goal_b2b[v][g][2].ratio);
+        for (v = 0; v < 2; v++)
+            printf("toi %d: text %.2f lib %.2f ratio %.2f; batch %d: scalar %.2f batch %.2f gain %.2f\n", v,
+                   r.toi[v][0].ns, r.toi[v][1].ns, r.toi[v][1].ratio, v, r.batch[v][0].ns, r.batch[v][1].ns,
+                   1 / r.batch[v][1].ratio);
+        printf("max halves %.3f canary %.2f quiet share %.2f (b2b %.2f)\n", r.max_halves, r.canary_ns, r.quiet_share,
+               r.quiet_share_b2b);
+        for (v = 0; v < AX_COUNT; v++) printf("axis %d: %.2f ns (%.2f)\n", v, r.axis[v].ns, r.axis[v].ratio);
+        return 0;
+    }
     if (argc == 2 && strcmp(argv[1], "--smoke") == 0) {
         bench_box2d_init();
         code = bench_smoke();
@@ -413,13 +912,17 @@ int main(int argc, char **argv)
     }
     if (!parse(argc, argv, &o)) {
         fprintf(stderr, "usage: %s [--smoke | --callgrind | [--results FILE] [--plot-data FILE] [--ir FILE] "
-                        "[--flags TEXT] [--plain N] [--extreme N] [--rounds N] [--large N]]\n", argv[0]);
+                        "[--flags TEXT] [--sizes FILE] [--plain N] [--extreme N] [--rounds N] [--ratio-rounds N] "
+                        "[--large N]]\n", argv[0]);
         return 2;
     }
     bench_box2d_init();
     sets_make(sets, o.n_plain, o.n_extreme, 2024);
     measure_accuracy(sets, &res);
     sets_free(sets);
+    measure_rough(&o, &res);
+    measure_toi(&o, &res);
+    read_sizes(o.sizes, &res.sizes);
     measure_speed(&o, &res);
     read_ir(o.ir, &res);
     bench_box2d_fini();

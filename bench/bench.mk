@@ -11,9 +11,17 @@ BENCH_TEST_DEPS := libgmp-dev libmpfr-dev libbox2d-dev g++
 BENCH_DIR := $(B)/bench
 BENCH_BIN := $(BENCH_DIR)/bench
 BENCH_C := bench/bench.c bench/accuracy.c bench/contenders.c bench/timing.c bench/smoke.c \
-  bench/approaches.c tests/referee.c tests/support.c
-BENCH_HDR := $(wildcard bench/*.h) tests/referee.h tests/support.h $(LIB_HDR)
-BENCH_OBJ := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(BENCH_C)) $(BENCH_DIR)/obj/bench/box2d_contender.o
+  bench/approaches.c bench/ratio.c bench/rough.c bench/toi.c referee/referee.c referee/cases.c referee/ref_rough.c \
+  $(HARNESS_SRC)
+BENCH_HDR := $(wildcard bench/*.h referee/*.h) $(HARNESS_HDR) $(LIB_HDR)
+# The library before issue 12 (bench/old.h names the commit), for the
+# before/after table: its own object, global symbols renamed old_*.
+BENCH_OLD_REV := $(shell sed -n 's/^\#define BENCH_OLD_REV "\(.*\)"/\1/p' bench/old.h)
+BENCH_OLD_DIR := $(BENCH_DIR)/old
+BENCH_OLD_OBJ := $(BENCH_OLD_DIR)/old_lib.o
+BENCH_OBJ := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(BENCH_C)) $(BENCH_DIR)/obj/bench/box2d_contender.o $(BENCH_OLD_OBJ)
+# Code size per call site of the C2D_INLINE front ends.
+BENCH_SITES := $(BENCH_DIR)/callsite.txt
 BENCH_CG := $(BENCH_DIR)/callgrind
 BENCH_OUT := bench/RESULTS.md
 BENCH_PNG := bench/pareto.png
@@ -26,14 +34,41 @@ check-deps-bench:
 check-deps-test-bench:
 	@sh scripts/deps.sh $(BENCH_TEST_DEPS)
 
-# Referee and generators come from tests/ (shared with the unit tests).
+# Referee and generators come from referee/, the batch storage and checks
+# and the pass/fail line from tests/harness/ (shared with the unit tests).
 $(BENCH_DIR)/obj/%.o: %.c $(BENCH_HDR)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion -Itests -Ibench -c $< -o $@
+	$(CC) $(ALL_CFLAGS) -Wno-conversion -Ireferee -Itests/harness -Ibench -c $< -o $@
 
 $(BENCH_DIR)/obj/bench/box2d_contender.o: bench/box2d_contender.cpp bench/box2d_contender.h $(LIB_HDR)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -std=c++17 -Wall -Wextra -ffp-contract=off $(SAN_FLAGS) -Iinclude -c $< -o $@
+
+# `git archive` of lib/ and include/ at BENCH_OLD_REV, compiled with the
+# library's flags (that commit has no run-time dispatch; C2D_NO_DISPATCH
+# for good measure) and every global symbol it defines renamed old_*.
+# Without git history bench/old_missing.c stands in (old_c2d_version() == 0)
+# and the report leaves the before/after table out.
+$(BENCH_OLD_OBJ): bench/old_missing.c bench/old.h
+	@rm -rf $(BENCH_OLD_DIR) && mkdir -p $(BENCH_OLD_DIR)/src
+	@if git archive --format=tar $(BENCH_OLD_REV) lib include 2>/dev/null | tar -x -C $(BENCH_OLD_DIR)/src 2>/dev/null && \
+	    [ -f $(BENCH_OLD_DIR)/src/lib/collide2d.c ]; then \
+	  echo "bench: the library as of $(BENCH_OLD_REV) (git archive), symbols renamed old_*"; \
+	  echo "$(CC) $(CFLAGS) -std=c99 $(WARN) -ffp-contract=off -fno-math-errno -DC2D_NO_DISPATCH -c $(BENCH_OLD_DIR)/src/lib/collide2d.c"; \
+	  $(CC) $(CFLAGS) -std=c99 $(WARN) -ffp-contract=off -fno-math-errno $(SAN_FLAGS) -DC2D_NO_DISPATCH \
+	    -c $(BENCH_OLD_DIR)/src/lib/collide2d.c -o $(BENCH_OLD_DIR)/raw.o; \
+	else \
+	  echo "bench: no git history for $(BENCH_OLD_REV): the before/after table is left out"; \
+	  $(CC) $(ALL_CFLAGS) -c bench/old_missing.c -o $(BENCH_OLD_DIR)/raw.o; \
+	fi
+	nm -g --defined-only $(BENCH_OLD_DIR)/raw.o | awk 'NF == 3 {print $$3, "old_" $$3}' > $(BENCH_OLD_DIR)/syms
+	objcopy --redefine-syms=$(BENCH_OLD_DIR)/syms $(BENCH_OLD_DIR)/raw.o $@
+
+# One call per function (bench/callsite.c), sizes from the object.
+$(BENCH_SITES): bench/callsite.c $(LIB_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -c $< -o $(BENCH_DIR)/callsite.o
+	nm -S --defined-only $(BENCH_DIR)/callsite.o > $@
 
 $(BENCH_BIN): $(BENCH_OBJ) $(STATIC)
 	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $(BENCH_OBJ) $(STATIC) -lbox2d -lmpfr -lgmp -lm
@@ -41,7 +76,7 @@ $(BENCH_BIN): $(BENCH_OBJ) $(STATIC)
 # Instruction counts: the driver brackets each contender's pass with
 # callgrind client requests (zero, dump); one dump file per contender.
 bench: check-deps-bench
-	@$(MAKE) --no-print-directory $(BENCH_BIN)
+	@$(MAKE) --no-print-directory $(BENCH_BIN) $(BENCH_SITES)
 	@rm -rf $(BENCH_CG) && mkdir -p $(BENCH_CG)
 	valgrind --tool=callgrind --callgrind-out-file=$(BENCH_CG)/cg.out $(BENCH_BIN) --callgrind \
 	  2> $(BENCH_CG)/valgrind.log
@@ -49,7 +84,7 @@ bench: check-deps-bench
 	  awk '/^desc: Trigger: Client Request:/ {n = $$NF} /^(totals|summary):/ {t = $$2} END {print n, t}' $$f; \
 	done > $(BENCH_DIR)/ir.txt
 	$(BENCH_BIN) --results $(BENCH_OUT) --plot-data $(BENCH_DIR)/pareto.dat --ir $(BENCH_DIR)/ir.txt \
-	  --flags "$(CFLAGS) $(REQ_CFLAGS)"
+	  --sizes $(BENCH_SITES) --flags "$(CFLAGS) $(REQ_CFLAGS)"
 	gnuplot -e "datafile='$(BENCH_DIR)/pareto.dat'; outfile='$(BENCH_PNG)'" bench/pareto.gp
 	@echo "bench: wrote $(BENCH_OUT) and $(BENCH_PNG)"
 
@@ -58,3 +93,16 @@ test-bench: check-deps-test-bench
 	$(BENCH_BIN) --smoke
 
 TEST_TARGETS += test-bench
+
+# ---------------------------------------------------------- energy bias
+# Is the energy error of e = 1 impacts a bias?  10^8 random impacts (about a
+# minute): mean dE/E and its standard error, overall and with |n|^2 near a
+# power of two.  Reported in bench/RESULTS.md and the README; not part of
+# `make test` (it measures, it does not judge).
+.PHONY: bench-energy
+$(BENCH_DIR)/energy_bias: bench/energy_bias.c referee/rng.h $(STATIC)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Ireferee -o $@ $< $(STATIC) -lm
+
+bench-energy: $(BENCH_DIR)/energy_bias
+	$(BENCH_DIR)/energy_bias 100000000

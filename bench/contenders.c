@@ -63,40 +63,60 @@ static c2d_status run_float(const ref_case *c, double got[4])
     return s;
 }
 
-/* The batch entry point sees the case sixteen times, so the pair goes through
- * the block kernel rather than the scalar tail. */
-#define PAD 16 /* the library's block: each case runs through the vector kernel */
+/* A batch contender sees the case sixteen times (the library's block), so
+ * the pair goes through the vector kernel rather than the scalar tail.
+ * Lane 0's answer is the contender's; every lane is also checked against
+ * the scalar call on the same pair (tests/harness). */
+#define PAD 16
 
-static c2d_status run_batch(const ref_case *c, double got[4])
+typedef struct batch_run {
+    c2d_batch_check check;
+    size_t done; /* the batch call's return value */
+    c2d_status status;
+    double got[4];
+} batch_run;
+
+static void run_batch(const ref_case *c, batch_run *o)
 {
-    double pax[PAD], pay[PAD], pbx[PAD], pby[PAD], vax[PAD], vay[PAD], vbx[PAD], vby[PAD], ma[PAD], mb[PAD];
+    double block[C2D_SOA_FIELDS * PAD];
     c2d_status st[PAD];
-    c2d_pairs p = {pax, pay, pbx, pby, vax, vay, vbx, vby, ma, mb};
-    int i;
-    for (i = 0; i < PAD; i++) {
-        pax[i] = c->pa[0], pay[i] = c->pa[1], pbx[i] = c->pb[0], pby[i] = c->pb[1];
-        vax[i] = c->va[0], vay[i] = c->va[1], vbx[i] = c->vb[0], vby[i] = c->vb[1];
-        ma[i] = c->ma, mb[i] = c->mb;
-    }
-    (void)c2d_collide_batch(&p, PAD, c->e, st);
-    got[0] = vax[0], got[1] = vay[0], got[2] = vbx[0], got[3] = vby[0];
-    return st[0];
+    const c2d_soa s = c2d_soa_in(block, PAD, st);
+    c2d_body a, b;
+    case_to_bodies(c, &a, &b);
+    o->done = c2d_batch_check_copies(&o->check, &s, PAD, &a, &b, c->e);
+    c2d_soa_get(&s, 0, &a, &b);
+    o->got[0] = a.vel.x, o->got[1] = a.vel.y, o->got[2] = b.vel.x, o->got[3] = b.vel.y, o->status = st[0];
 }
 
-static c2d_status run_batchf(const ref_case *c, double got[4])
+static void run_batchf(const ref_case *c, batch_run *o)
 {
-    float pax[PAD], pay[PAD], pbx[PAD], pby[PAD], vax[PAD], vay[PAD], vbx[PAD], vby[PAD], ma[PAD], mb[PAD];
+    float block[C2D_SOA_FIELDS * PAD];
     c2d_status st[PAD];
-    c2d_pairsf p = {pax, pay, pbx, pby, vax, vay, vbx, vby, ma, mb};
-    int i;
-    for (i = 0; i < PAD; i++) {
-        pax[i] = (float)c->pa[0], pay[i] = (float)c->pa[1], pbx[i] = (float)c->pb[0], pby[i] = (float)c->pb[1];
-        vax[i] = (float)c->va[0], vay[i] = (float)c->va[1], vbx[i] = (float)c->vb[0], vby[i] = (float)c->vb[1];
-        ma[i] = (float)c->ma, mb[i] = (float)c->mb;
+    const c2d_soaf s = c2d_soa_inf(block, PAD, st);
+    c2d_bodyf a, b;
+    case_to_bodiesf(c, &a, &b);
+    o->done = c2d_batch_check_copiesf(&o->check, &s, PAD, &a, &b, (float)c->e);
+    c2d_soa_getf(&s, 0, &a, &b);
+    o->got[0] = a.vel.x, o->got[1] = a.vel.y, o->got[2] = b.vel.x, o->got[3] = b.vel.y, o->status = st[0];
+}
+
+/* k is a batch contender: run it once. */
+static void run_batch_kind(const contender *k, const ref_case *c, batch_run *o)
+{
+    memset(o, 0, sizeof *o);
+    if (k->kind == KIND_BATCH) {
+        run_batch(c, o);
+    } else {
+        run_batchf(c, o);
     }
-    (void)c2d_collide_batchf(&p, PAD, (float)c->e, st);
-    got[0] = vax[0], got[1] = vay[0], got[2] = vbx[0], got[3] = vby[0];
-    return st[0];
+}
+
+int contender_batch_agrees(const contender *k, const ref_case *c)
+{
+    batch_run o;
+    if (k->kind != KIND_BATCH && k->kind != KIND_BATCHF) return 1;
+    run_batch_kind(k, c, &o);
+    return c2d_batch_check_passed(&o.check, o.done);
 }
 
 c2d_status contender_run(const contender *k, const ref_case *c, double got[4])
@@ -106,8 +126,13 @@ c2d_status contender_run(const contender *k, const ref_case *c, double got[4])
     switch (k->kind) {
     case KIND_FLOAT: return run_float(c, got);
     case KIND_FIXED: return run_fixed(c, got);
-    case KIND_BATCH: return run_batch(c, got);
-    case KIND_BATCHF: return run_batchf(c, got);
+    case KIND_BATCH:
+    case KIND_BATCHF: {
+        batch_run o;
+        run_batch_kind(k, c, &o);
+        memcpy(got, o.got, sizeof o.got);
+        return o.status;
+    }
     default: break;
     }
     case_to_bodies(c, &a, &b);

@@ -10,17 +10,13 @@
 
 #include "approaches.h"
 #include "box2d_contender.h"
+#include "old.h"
 
-static int passed, failed;
+static c2d_tally tally;
 
 static void check(int ok, const char *what)
 {
-    if (ok) {
-        passed++;
-    } else {
-        failed++;
-        printf("FAIL: %s\n", what);
-    }
+    if (!c2d_tally_add(&tally, ok)) printf("FAIL: %s\n", what);
 }
 
 typedef struct hand_case {
@@ -152,7 +148,7 @@ static void check_timing_harness_runs(void)
 {
     ref_case cases[64];
     double ns[64];
-    rng r;
+    c2d_rng r;
     int i, all_ran = 1;
     timing_data *t;
     r.s = 99;
@@ -165,12 +161,108 @@ static void check_timing_harness_runs(void)
     timing_free(t);
 }
 
+/* The ratio harness runs every group (3 rounds, 64 pairs each) and gives
+ * a figure for every pass; the old library, when linked, gives the new
+ * one's bits off the axes; the textbook time of impact agrees with the
+ * library on ordinary pairs. */
+static void check_ratios(void)
+{
+    static ratios r;
+    char what[160];
+    int v, s, p, x, all = 1, compared = 0, bad;
+    ratios_measure(&r, 3, 64, 0);
+    for (v = 0; v < GV_COUNT; v++)
+        for (s = 0; s < GS_COUNT; s++)
+            for (p = 0; p < GP_COUNT; p++) all &= r.goal[v][s][p].ns > 0 && r.goal[v][s][p].ratio > 0;
+    for (p = 0; p < 2; p++)
+        for (x = 0; x < 2; x++) all &= r.toi[p][x].ns > 0 && r.batch[p][x].ns > 0;
+    for (x = 0; x < AX_COUNT; x++) all &= r.axis[x].ns > 0;
+    for (x = 0; x < RG_COUNT; x++) all &= r.rough[x].ns > 0;
+    if (r.have_old)
+        for (v = 0; v < BA_FN; v++)
+            for (s = 0; s < BS_SETS; s++)
+                if (v < BA_BATCH || s < BS_AXIS_SWAP) all &= r.ba[v][s][0].ns > 0 && r.ba[v][s][1].ns > 0;
+    check(all, "ratio harness produced a figure for every pass");
+    check(r.toi_hits > 0.5 && r.toi_hits < 0.95, "ordinary time-of-impact pairs: most hit, some miss");
+    bad = ratios_selfcheck(300, &compared);
+    snprintf(what, sizeof what, "old library == new off the axes, textbook toi == library: %d of %d differ", bad, compared);
+    check(bad == 0 && compared >= 300, what);
+}
+
+/* Rough disks: the library rows keep the header's bound (18 ulp) and exact
+ * statuses on plain and extreme cases; the transcription runs and, on
+ * plain contacts, agrees with the library to 1e-9 of the scale. */
+static void check_rough(void)
+{
+    char what[200];
+    int k, x, i, agree = 1;
+    c2d_rng r;
+    for (k = 0; k < RK_COUNT; k++)
+        for (x = 0; x < 2; x++) {
+            rough_stats st;
+            rough_evaluate(k, x, 150, 11 + (unsigned)x, &st);
+            snprintf(what, sizeof what, "rough contender %d runs on %s cases", k, x ? "extreme" : "plain");
+            check(st.n == 150 && st.evaluated > 10, what);
+            if (k == RK_WALTON) continue;
+            snprintf(what, sizeof what, "rough contender %d: statuses, max %.3g ulp <= 18, no NaN/Inf (%s)", k, st.max_ulp,
+                     x ? "extreme" : "plain");
+            check(st.wrong_status == 0 && st.max_ulp <= 18 && st.nan + st.inf == 0, what);
+        }
+    r.s = 13;
+    for (i = 0; i < 200; i++) {
+        ref_rough_case c;
+        c2d_disk a, b, a2, b2;
+        c2d_surface s;
+        c2d_status s1, s2;
+        double scale;
+        gen_rough(&r, &c);
+        a.pos.x = c.a.pos[0], a.pos.y = c.a.pos[1], a.vel.x = c.a.vel[0], a.vel.y = c.a.vel[1];
+        a.spin = c.a.spin, a.mass = c.a.mass, a.radius = c.a.radius, a.inertia = c.a.inertia;
+        b.pos.x = c.b.pos[0], b.pos.y = c.b.pos[1], b.vel.x = c.b.vel[0], b.vel.y = c.b.vel[1];
+        b.spin = c.b.spin, b.mass = c.b.mass, b.radius = c.b.radius, b.inertia = c.b.inertia;
+        s.restitution = c.e, s.friction = c.mu, s.tangential_restitution = c.beta;
+        a2 = a, b2 = b;
+        s1 = c2d_collide_rough(&a, &b, s);
+        s2 = bench_walton(&a2, &b2, s);
+        scale = 1e-9 * (20 + fabs(c.a.spin * c.a.radius) + fabs(c.b.spin * c.b.radius));
+        agree &= s1 == s2 && fabs(a.vel.x - a2.vel.x) <= scale && fabs(a.vel.y - a2.vel.y) <= scale &&
+                 fabs(b.vel.x - b2.vel.x) <= scale && fabs(b.vel.y - b2.vel.y) <= scale &&
+                 fabs((a.spin - a2.spin) * a.radius) <= scale && fabs((b.spin - b2.spin) * b.radius) <= scale;
+    }
+    check(agree, "Walton transcription agrees with c2d_collide_rough on plain contacts");
+}
+
+/* The time of impact: the library's statuses exact and errors within the
+ * header's 4 units on ordinary and extreme pairs; the other rows run. */
+static void check_toi(void)
+{
+    char what[200];
+    int k, p, x;
+    for (k = 0; k < TK_COUNT; k++)
+        for (p = 0; p < 2; p++)
+            for (x = 0; x < 2; x++) {
+                toi_stats st;
+                if (k == TK_OLD && !BENCH_HAVE_OLD()) continue;
+                toi_evaluate(k, p, x, 200, 21 + (unsigned)(2 * p + x), &st);
+                snprintf(what, sizeof what, "toi contender %d (%s, %s) runs, %d hits", k, p ? "float" : "double",
+                         x ? "extreme" : "ordinary", st.hits);
+                check(st.n == 200 && st.hits > 10, what);
+                if (k != TK_LIB) continue;
+                snprintf(what, sizeof what, "library toi (%s, %s): %d wrong statuses, max %.3g units <= 4", p ? "float" : "double",
+                         x ? "extreme" : "ordinary", st.wrong_status, st.max_units);
+                check(st.wrong_status == 0 && st.nan_inf == 0 && !(st.max_units > 4), what);
+            }
+}
+
 int bench_smoke(void)
 {
     check_referee();
     check_contenders_on_hand_cases();
     check_random_sets();
     check_timing_harness_runs();
-    printf("%d passed, %d failed\n", passed, failed);
-    return failed == 0 ? 0 : 1;
+    check_ratios();
+    check_rough();
+    check_toi();
+    c2d_put_tally(NULL, &tally);
+    return c2d_tally_status(&tally);
 }

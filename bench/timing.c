@@ -22,16 +22,18 @@
 /* Results go here so no timed loop can be optimised away. */
 volatile double bench_sink;
 
-enum { SOA_PAX, SOA_PAY, SOA_PBX, SOA_PBY, SOA_VAX, SOA_VAY, SOA_VBX, SOA_VBY, SOA_MA, SOA_MB, SOA_N };
-
 struct timing_data {
     int n;
     c2d_body *a0, *b0, *a, *b;     /* pristine and working copies */
     c2d_bodyf *af0, *bf0, *af, *bf;
     c2d_bodyx *ax0, *bx0, *ax, *bx;
     c2d_vec2 *normal;
-    double *soa[SOA_N], *soa_v0[4];
-    float *soaf[SOA_N], *soaf_v0[4];
+    c2d_soa soa;                   /* the batch's arrays, one allocation each */
+    c2d_soaf soaf;
+    c2d_pairs pairs;               /* their views, made once, outside the timed passes */
+    c2d_pairsf pairsf;
+    double *soa_v0[4];             /* pristine velocities */
+    float *soaf_v0[4];
     c2d_status *st;
 };
 
@@ -44,17 +46,15 @@ static double now_ns(void)
 
 static c2d_fixed q16(double v) { return (c2d_fixed)lrint(v * 65536.0); }
 
-static void fill_soa(timing_data *t, int i, const ref_case *c)
+static void fill_soa(timing_data *t, int i)
 {
-    const double v[SOA_N] = {c->pa[0], c->pa[1], c->pb[0], c->pb[1], c->va[0], c->va[1], c->vb[0], c->vb[1], c->ma, c->mb};
+    const size_t u = (size_t)i;
     int k;
-    for (k = 0; k < SOA_N; k++) {
-        t->soa[k][i] = v[k];
-        t->soaf[k][i] = (float)v[k];
-    }
+    c2d_soa_put(&t->soa, u, &t->a0[i], &t->b0[i]);
+    c2d_soa_putf(&t->soaf, u, &t->af0[i], &t->bf0[i]);
     for (k = 0; k < 4; k++) {
-        t->soa_v0[k][i] = v[SOA_VAX + k];
-        t->soaf_v0[k][i] = (float)v[SOA_VAX + k];
+        t->soa_v0[k][i] = t->soa.field[C2D_SOA_VEL_AX + k][i];
+        t->soaf_v0[k][i] = t->soaf.field[C2D_SOA_VEL_AX + k][i];
     }
 }
 
@@ -72,10 +72,13 @@ timing_data *timing_make(const ref_case *cases, int n)
     t->ax = malloc(un * sizeof *t->ax), t->bx = malloc(un * sizeof *t->bx);
     t->normal = malloc(un * sizeof *t->normal);
     t->st = malloc(un * sizeof *t->st);
-    for (k = 0; k < SOA_N; k++) {
-        t->soa[k] = malloc(un * sizeof(double));
-        t->soaf[k] = malloc(un * sizeof(float));
+    for (k = 0; k < C2D_SOA_FIELDS; k++) {
+        t->soa.field[k] = malloc(un * sizeof(double));
+        t->soaf.field[k] = malloc(un * sizeof(float));
     }
+    t->soa.status = t->soaf.status = t->st;
+    t->pairs = c2d_soa_pairs(&t->soa);
+    t->pairsf = c2d_soa_pairsf(&t->soaf);
     for (k = 0; k < 4; k++) {
         t->soa_v0[k] = malloc(un * sizeof(double));
         t->soaf_v0[k] = malloc(un * sizeof(float));
@@ -91,7 +94,7 @@ timing_data *timing_make(const ref_case *cases, int n)
         t->bx0[i].vel.x = q16(c.vb[0]), t->bx0[i].vel.y = q16(c.vb[1]), t->bx0[i].mass = q16(c.mb);
         t->normal[i].x = c.pb[0] - c.pa[0];
         t->normal[i].y = c.pb[1] - c.pa[1];
-        fill_soa(t, i, &c);
+        fill_soa(t, i);
     }
     return t;
 }
@@ -103,7 +106,7 @@ void timing_free(timing_data *t)
     free(t->af0), free(t->bf0), free(t->af), free(t->bf);
     free(t->ax0), free(t->bx0), free(t->ax), free(t->bx);
     free(t->normal), free(t->st);
-    for (k = 0; k < SOA_N; k++) free(t->soa[k]), free(t->soaf[k]);
+    for (k = 0; k < C2D_SOA_FIELDS; k++) free(t->soa.field[k]), free(t->soaf.field[k]);
     for (k = 0; k < 4; k++) free(t->soa_v0[k]), free(t->soaf_v0[k]);
     free(t);
 }
@@ -122,10 +125,10 @@ static void restore(timing_data *t, const contender *k)
         memcpy(t->ax, t->ax0, n * sizeof *t->ax), memcpy(t->bx, t->bx0, n * sizeof *t->bx);
         break;
     case KIND_BATCH:
-        for (j = 0; j < 4; j++) memcpy(t->soa[SOA_VAX + j], t->soa_v0[j], n * sizeof(double));
+        for (j = 0; j < 4; j++) memcpy(t->soa.field[C2D_SOA_VEL_AX + j], t->soa_v0[j], n * sizeof(double));
         break;
     case KIND_BATCHF:
-        for (j = 0; j < 4; j++) memcpy(t->soaf[SOA_VAX + j], t->soaf_v0[j], n * sizeof(float));
+        for (j = 0; j < 4; j++) memcpy(t->soaf.field[C2D_SOA_VEL_AX + j], t->soaf_v0[j], n * sizeof(float));
         break;
     default:
         memcpy(t->a, t->a0, n * sizeof *t->a), memcpy(t->b, t->b0, n * sizeof *t->b);
@@ -151,13 +154,9 @@ static void run_pass(timing_data *t, const contender *k, int n)
     } else if (k->kind == KIND_FIXED) {
         for (i = 0; i < n; i++) acc += (unsigned)c2d_collidex(&t->ax[i], &t->bx[i], C2D_FIXED_ONE);
     } else if (k->kind == KIND_BATCH) {
-        const c2d_pairs p = {t->soa[0], t->soa[1], t->soa[2], t->soa[3], t->soa[4],
-                             t->soa[5], t->soa[6], t->soa[7], t->soa[8], t->soa[9]};
-        acc += (unsigned)c2d_collide_batch(&p, (size_t)n, 1.0, t->st);
+        acc += (unsigned)c2d_collide_batch(&t->pairs, (size_t)n, 1.0, t->st);
     } else {
-        const c2d_pairsf p = {t->soaf[0], t->soaf[1], t->soaf[2], t->soaf[3], t->soaf[4],
-                              t->soaf[5], t->soaf[6], t->soaf[7], t->soaf[8], t->soaf[9]};
-        acc += (unsigned)c2d_collide_batchf(&p, (size_t)n, 1.0f, t->st);
+        acc += (unsigned)c2d_collide_batchf(&t->pairsf, (size_t)n, 1.0f, t->st);
     }
     bench_sink += acc;
 }
@@ -178,21 +177,47 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The canary of a round (as ratio.c's): the seed transcription's pass,
+ * whose time tells a quiet machine from a busy one. */
+static double canary_pass(timing_data *t)
+{
+    static const contender seed = {"canary", "canary", KIND_DOUBLE, bench_seed_equal, 1, 0};
+    return time_pass(t, &seed);
+}
+
+int timing_quiet_rounds, timing_rounds_run;
+double bench_canary_best = INFINITY;
+
 void timing_run(timing_data *t, int rounds, double *ns)
 {
-    const int kn = bench_ncontenders + 1; /* the last slot: the empty call */
-    double *all = malloc((size_t)(kn * rounds) * sizeof *all);
-    int r, j;
-    for (r = 0; r < rounds; r++)
+    const int kn = bench_ncontenders + 1, most = 5 * rounds; /* the last slot: the empty call */
+    double *all = malloc((size_t)(kn * most) * sizeof *all), *canary = malloc((size_t)most * sizeof *canary);
+    double *v = malloc((size_t)most * sizeof *v);
+    int r, j, quiet = 0, done;
+    /* `rounds` rounds, and more (up to five times as many) until enough of
+     * them are quiet against the best canary seen in this run of the bench */
+    for (r = 0; r < most && (r < rounds || quiet < RATIO_MIN_QUIET); r++) {
+        canary[r] = canary_pass(t);
+        if (canary[r] < bench_canary_best) bench_canary_best = canary[r];
+        quiet += canary[r] <= 1.10 * bench_canary_best;
         for (j = 0; j < kn; j++) {
             int idx = (j + r) % kn; /* rotate the order: no contender always runs first */
-            all[idx * rounds + r] = time_pass(t, idx < bench_ncontenders ? &bench_contenders[idx] : NULL);
+            all[idx * most + r] = time_pass(t, idx < bench_ncontenders ? &bench_contenders[idx] : NULL);
         }
-    for (j = 0; j < kn; j++) {
-        qsort(all + j * rounds, (size_t)rounds, sizeof *all, cmp_double);
-        ns[j] = all[j * rounds + rounds / 2];
     }
-    free(all);
+    done = r;
+    for (quiet = 0, r = 0; r < done; r++) quiet += canary[r] <= 1.10 * bench_canary_best;
+    timing_quiet_rounds = quiet;
+    timing_rounds_run = done;
+    /* The median over the quiet rounds when there are enough (ratio.c). */
+    for (j = 0; j < kn; j++) {
+        int m = 0;
+        for (r = 0; r < done; r++)
+            if (quiet < RATIO_MIN_QUIET || canary[r] <= 1.10 * bench_canary_best) v[m++] = all[j * most + r];
+        qsort(v, (size_t)m, sizeof *v, cmp_double);
+        ns[j] = v[m / 2];
+    }
+    free(all), free(canary), free(v);
 }
 
 void callgrind_run(timing_data *t, int n, const char *label)
@@ -263,40 +288,48 @@ static void roof_kernelf(const c2d_pairsf *p, size_t n, c2d_status *st)
 void roof_run(int is_float, size_t count, int reps, roof_result *out)
 {
     const size_t elt = is_float ? sizeof(float) : sizeof(double);
-    void *arr[SOA_N], *v0[4];
+    void *arr[C2D_SOA_FIELDS], *v0[4];
     c2d_status *st = malloc(count * sizeof *st);
+    c2d_soa s;   /* the arrays seen as double or as float: one of the two is used */
+    c2d_soaf sf;
+    c2d_pairs p;
+    c2d_pairsf pf;
     double tb[64], tr[64];
-    rng r;
+    c2d_rng r;
     size_t i;
     int k, rep;
     r.s = 12345;
-    for (k = 0; k < SOA_N; k++) arr[k] = malloc(count * elt);
+    for (k = 0; k < C2D_SOA_FIELDS; k++) {
+        arr[k] = malloc(count * elt);
+        s.field[k] = arr[k];
+        sf.field[k] = arr[k];
+    }
     for (k = 0; k < 4; k++) v0[k] = malloc(count * elt);
+    s.status = sf.status = st;
+    p = c2d_soa_pairs(&s);
+    pf = c2d_soa_pairsf(&sf);
     for (i = 0; i < count; i++) {
         ref_case c;
-        double v[SOA_N];
+        c2d_body a, b;
+        c2d_bodyf af, bf;
         gen_plain(&r, &c);
-        v[0] = c.pa[0], v[1] = c.pa[1], v[2] = c.pb[0], v[3] = c.pb[1];
-        v[4] = c.va[0], v[5] = c.va[1], v[6] = c.vb[0], v[7] = c.vb[1], v[8] = c.ma, v[9] = c.mb;
-        for (k = 0; k < SOA_N; k++) {
-            if (is_float) ((float *)arr[k])[i] = (float)v[k];
-            else ((double *)arr[k])[i] = v[k];
-        }
+        case_to_bodies(&c, &a, &b);
+        case_to_bodiesf(&c, &af, &bf);
+        if (is_float) c2d_soa_putf(&sf, i, &af, &bf);
+        else c2d_soa_put(&s, i, &a, &b);
     }
-    for (k = 0; k < 4; k++) memcpy(v0[k], arr[SOA_VAX + k], count * elt);
+    for (k = 0; k < 4; k++) memcpy(v0[k], arr[C2D_SOA_VEL_AX + k], count * elt);
     if (reps > 64) reps = 64;
     for (rep = 0; rep < reps; rep++) {
         int which;
         for (which = 0; which < 2; which++) {
             double t0, t1;
-            for (k = 0; k < 4; k++) memcpy(arr[SOA_VAX + k], v0[k], count * elt);
+            for (k = 0; k < 4; k++) memcpy(arr[C2D_SOA_VEL_AX + k], v0[k], count * elt);
             t0 = now_ns();
             if (is_float) {
-                const c2d_pairsf p = {arr[0], arr[1], arr[2], arr[3], arr[4], arr[5], arr[6], arr[7], arr[8], arr[9]};
-                if (which == 0) bench_sink += (double)c2d_collide_batchf(&p, count, 1.0f, st);
-                else roof_kernelf(&p, count, st);
+                if (which == 0) bench_sink += (double)c2d_collide_batchf(&pf, count, 1.0f, st);
+                else roof_kernelf(&pf, count, st);
             } else {
-                const c2d_pairs p = {arr[0], arr[1], arr[2], arr[3], arr[4], arr[5], arr[6], arr[7], arr[8], arr[9]};
                 if (which == 0) bench_sink += (double)c2d_collide_batch(&p, count, 1.0, st);
                 else roof_kernel(&p, count, st);
             }
@@ -308,8 +341,8 @@ void roof_run(int is_float, size_t count, int reps, roof_result *out)
     qsort(tr, (size_t)reps, sizeof *tr, cmp_double);
     out->batch_pps = (double)count / (tb[reps / 2] * 1e-9);
     out->roof_pps = (double)count / (tr[reps / 2] * 1e-9);
-    out->bytes_per_pair = (double)(SOA_N * elt + 4 * elt + sizeof(c2d_status));
-    for (k = 0; k < SOA_N; k++) free(arr[k]);
+    out->bytes_per_pair = (double)(C2D_SOA_FIELDS * elt + 4 * elt + sizeof(c2d_status));
+    for (k = 0; k < C2D_SOA_FIELDS; k++) free(arr[k]);
     for (k = 0; k < 4; k++) free(v0[k]);
     free(st);
 }

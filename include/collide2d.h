@@ -35,6 +35,10 @@
  *   C2D_NO_DOUBLE  [undefined]  drop the double-precision API
  *   C2D_NO_FLOAT   [undefined]  drop the single-precision API
  *   C2D_NO_FIXED   [undefined]  drop the Q16.16 fixed-point API
+ *   C2D_NO_DISPATCH [undefined] no run-time choice of CPU-specific code (gcc,
+ *                  hosted x86-64 only: the batch kernel's SSE2/SSE4.2/AVX2/
+ *                  AVX-512 versions and the FMA double-double tier; same bits
+ *                  either way)
  *   C2D_HEADER     ["../include/collide2d.h" from lib/; "collide2d.h" from the
  *                  amalgamation]  how the library's sources find this file,
  *                  e.g. -DC2D_HEADER='"collide2d.h"' when both sit in one
@@ -55,7 +59,7 @@
 #include <stdint.h>
 
 #define C2D_VERSION_MAJOR 1
-#define C2D_VERSION_MINOR 0
+#define C2D_VERSION_MINOR 1
 #define C2D_VERSION_PATCH 0
 /* MAJOR * 10000 + MINOR * 100 + PATCH, the value c2d_version() returns. */
 #define C2D_VERSION \
@@ -103,13 +107,21 @@ typedef struct c2d_body { c2d_vec2 pos; c2d_vec2 vel; double mass; } c2d_body; /
  *                worst: see README "Accuracy"); momentum conserved and energy
  *                conserved at e = 1 to that accuracy; the relative normal
  *                velocity is reversed exactly in sign (no false SEPARATING).
+ *   axis-aligned when the centres share an x or a y coordinate exactly, every
+ *                output is correctly rounded (the representable value
+ *                nearest the exact result, ties to even): equal masses at
+ *                e = 1 swap their normal components exactly, an immovable
+ *                wall at e = 1 negates it exactly, the other component is
+ *                returned bit for bit (Newton's cradle: README).
  *   a == b (same pointer) is C2D_DEGENERATE. */
 c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution);
 
 /* As c2d_collide, with the contact normal given: any finite non-zero vector
  * of any length (subnormal to DBL_MAX), pointing from a towards b.  Positions
  * are ignored apart from validation (they must be finite).  A zero normal is
- * C2D_DEGENERATE.  Use it for walls: b.mass = INFINITY, normal = wall normal. */
+ * C2D_DEGENERATE.  Use it for walls: b.mass = INFINITY, normal = wall normal.
+ * A normal with one zero component gives correctly rounded outputs, as
+ * c2d_collide's axis-aligned case. */
 c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution);
 
 /* Time of impact of two disks moving with constant velocity: the earliest
@@ -138,13 +150,53 @@ c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double 
  *                Needs sqrt from the C library. */
 c2d_status c2d_time_of_impact(const c2d_body *a, const c2d_body *b, double radius_sum, double *t);
 
+/* Time of impact of two disks moving with constant accelerations:
+ * p(t) = pos + vel t + acc t^2 / 2 for each (a ball decelerating on cloth,
+ * a puck under a constant force).  The earliest t in [0, horizon] at which
+ * they touch or overlap (|pb(t) - pa(t)| <= radius_sum) while approaching
+ * ((pb - pa).(vb - va) < 0 just after t).  Masses are ignored.
+ *   acc_a, acc_b   accelerations, finite (same units as vel per time unit)
+ *   radius_sum     >= 0 and finite
+ *   horizon        >= 0, INFINITY allowed: the time until either body's
+ *                  motion changes (a piecewise path is checked piece by piece)
+ *   *t             written only on C2D_OK; 0 <= *t <= horizon.  Overlapping and
+ *                  approaching at 0 gives 0; a pair that overlaps, recedes and
+ *                  turns back gives the turn.
+ *   returns        C2D_OK; C2D_SEPARATING (no contact in [0, horizon],
+ *                  including a tangential graze: touching with no approach
+ *                  speed, and no relative motion at all); C2D_INVALID (NaN/Inf
+ *                  in a position, velocity or acceleration, radius_sum < 0 or
+ *                  not finite, horizon < 0 or NaN, a NULL pointer); C2D_RANGE
+ *                  (the contact lies within the horizon but beyond DBL_MAX).
+ *   status         exact for decisions at t = 0 (touching pairs that stay in
+ *                  contact, separate or are pushed together), otherwise
+ *                  certified by three tiers of evaluation (plain, double
+ *                  length, exact); what even exact evaluation of d(t) at a
+ *                  working-precision time cannot certify is a band of width
+ *                  ~2^-96 (float 2^-38) relative: a graze or a touch at the
+ *                  horizon whose distance is within that of radius_sum, a turn
+ *                  while overlapping whose radial speed is within it of zero,
+ *                  and passes shorter than ~2^-106 of the elapsed time on a
+ *                  curved path.  Ties there resolve as exact ties: a graze is
+ *                  no contact, a touch at the horizon is a contact at it.
+ *                  With zero accelerations it agrees with c2d_time_of_impact.
+ *   accuracy       within 1 unit of ulp(t) + ulp(|d|) / s, s the approach speed
+ *                  at contact (c2d_time_of_impact's unit; measured worst 0.5).
+ *   cost           a few hundred ns for ordinary pairs; microseconds near a
+ *                  tie (exact evaluation); stack up to ~3 KB (x86-64 double),
+ *                  1.6 KB (Cortex-M4F float). */
+c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a, const c2d_body *b, c2d_vec2 acc_b,
+                                    double radius_sum, double horizon, double *t);
+
 /* Batch: resolve `count` independent pairs stored as structure of arrays.
  * Pair i is (pos_ax[i], pos_ay[i], vel_ax[i], vel_ay[i], mass_a[i]) against
  * the same fields of b.  Every pair is resolved exactly as c2d_collide would
  * (bit-identical results and statuses); pairs in the well-scaled common case
- * run through a branch-free kernel in blocks of 16 that -O2 vectorises
- * (clang; gcc 12 for float on baseline x86-64, for double from x86-64-v2),
- * the others fall back to the scalar path.  Arrays must not overlap.
+ * run through a branch-free kernel in blocks of 16 that -O2 vectorises, the
+ * others take the scalar call.  Built by gcc for hosted x86-64, the kernel
+ * is chosen at load time for the CPU (SSE2, SSE4.2, AVX2 or AVX-512;
+ * C2D_NO_DISPATCH turns this off); clang vectorises it at baseline.  Arrays
+ * must not overlap.
  *   status       NULL, or an array of `count` statuses to fill.
  *   returns      the number of pairs with status C2D_OK; 0 if p is NULL. */
 typedef struct c2d_pairs {
@@ -221,6 +273,8 @@ typedef struct c2d_bodyf { c2d_vec2f pos; c2d_vec2f vel; float mass; } c2d_bodyf
 c2d_status c2d_collidef(c2d_bodyf *a, c2d_bodyf *b, float restitution);
 c2d_status c2d_collide_normalf(c2d_bodyf *a, c2d_bodyf *b, c2d_vec2f normal, float restitution);
 c2d_status c2d_time_of_impactf(const c2d_bodyf *a, const c2d_bodyf *b, float radius_sum, float *t);
+c2d_status c2d_time_of_impact_accelf(const c2d_bodyf *a, c2d_vec2f acc_a, const c2d_bodyf *b, c2d_vec2f acc_b,
+                                     float radius_sum, float horizon, float *t);
 
 typedef struct c2d_pairsf {
     const float *pos_ax, *pos_ay, *pos_bx, *pos_by;
@@ -270,6 +324,152 @@ c2d_status c2d_collide_normalx(c2d_bodyx *a, c2d_bodyx *b, c2d_vec2x normal, c2d
  *                beyond 2^13 units it is carried with 29 significant bits). */
 c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed radius_sum, c2d_fixed *t);
 #endif
+
+/* ----------------------------------------- opt-in inline front ends
+ * #define C2D_INLINE before including this header to get
+ *   c2d_collide_inline, c2d_collide_normal_inline (double) and
+ *   c2d_collidef_inline, c2d_collide_normalf_inline (float):
+ * static inline front ends with the library's own input-only accept test,
+ * which resolve the common case at the call site and call c2d_collide (or
+ * its twin) for everything else.  Same statuses, same bits as the library
+ * call (tests/unit/test_inline.c checks it), provided the compiler evaluates
+ * them as written: no -ffast-math and no FMA contraction.  The header turns
+ * them on (C2D_INLINE_AS_WRITTEN 1) only where it can tell: clang (the
+ * functions switch contraction off themselves), gcc in strict ISO mode
+ * (-std=c99, c11, c++11...: contraction off by default) or for a target
+ * without FMA; elsewhere they are plain calls of the library functions.
+ * One case no macro shows: -ffp-contract=fast given explicitly with -std=c99
+ * on gcc for an FMA target.  Don't combine it with C2D_INLINE. */
+#if defined(C2D_INLINE)
+#if !defined(__FAST_MATH__) && (defined(__clang__) || (defined(__GNUC__) && (defined(__STRICT_ANSI__) || \
+    !(defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)))))
+#define C2D_INLINE_AS_WRITTEN 1
+#else
+#define C2D_INLINE_AS_WRITTEN 0
+#endif
+
+#if C2D_INLINE_AS_WRITTEN && !defined(C2D_NO_DOUBLE)
+/* Internal to the inline front ends: the accept test for a normal (nx, ny)
+ * off the axes; 1 with *st set when it decides (velocities written on OK). */
+static inline int c2d_inline_front(double nx, double ny, c2d_body *a, c2d_body *b, double e1, c2d_status *st)
+{
+#ifdef __clang__
+#pragma clang fp contract(off)
+#endif
+    const double hi = 1.6069380442589903e60, lo = 6.2230152778611417e-61; /* 2^200, 2^-200 */
+    const double px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
+    const double d = px + py, k = (px < 0 ? -px : px) + (py < 0 ? -py : py), nn = nx * nx + ny * ny;
+    const double geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
+    if (nx == 0 || ny == 0 || !((k + nn) + (a->mass + b->mass) <= hi && (geometry < lighter ? geometry : lighter) >= lo))
+        return 0;
+    if (4 * d + k <= 0) {
+        const double den = nn * (a->mass + b->mass);
+        const double c = e1 * d / den;
+        const double la = c * b->mass, lb = c * a->mass;
+        a->vel.x = a->vel.x + la * nx;
+        a->vel.y = a->vel.y + la * ny;
+        b->vel.x = b->vel.x - lb * nx;
+        b->vel.y = b->vel.y - lb * ny;
+        *st = C2D_OK;
+        return 1;
+    }
+    if (4 * d - k >= 0) {
+        *st = C2D_SEPARATING;
+        return 1;
+    }
+    return 0;
+}
+
+static inline c2d_status c2d_collide_inline(c2d_body *a, c2d_body *b, double restitution)
+{
+    c2d_status st;
+    if (a != NULL && b != NULL && restitution >= 0 && restitution <= 1 &&
+        c2d_inline_front(b->pos.x - a->pos.x, b->pos.y - a->pos.y, a, b, 1 + restitution, &st))
+        return st;
+    return c2d_collide(a, b, restitution);
+}
+
+static inline c2d_status c2d_collide_normal_inline(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution)
+{
+    c2d_status st;
+    if (a != NULL && b != NULL && a != b && restitution >= 0 && restitution <= 1 &&
+        ((a->pos.x - a->pos.x) + (a->pos.y - a->pos.y)) + ((b->pos.x - b->pos.x) + (b->pos.y - b->pos.y)) == 0 &&
+        c2d_inline_front(normal.x, normal.y, a, b, 1 + restitution, &st))
+        return st;
+    return c2d_collide_normal(a, b, normal, restitution);
+}
+#elif !defined(C2D_NO_DOUBLE)
+static inline c2d_status c2d_collide_inline(c2d_body *a, c2d_body *b, double restitution)
+{
+    return c2d_collide(a, b, restitution);
+}
+
+static inline c2d_status c2d_collide_normal_inline(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution)
+{
+    return c2d_collide_normal(a, b, normal, restitution);
+}
+#endif
+
+#if C2D_INLINE_AS_WRITTEN && !defined(C2D_NO_FLOAT)
+static inline int c2d_inline_frontf(float nx, float ny, c2d_bodyf *a, c2d_bodyf *b, float e1, c2d_status *st)
+{
+#ifdef __clang__
+#pragma clang fp contract(off)
+#endif
+    const float hi = 1048576.0f, lo = 9.5367431640625e-07f; /* 2^20, 2^-20 */
+    const float px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
+    const float d = px + py, k = (px < 0 ? -px : px) + (py < 0 ? -py : py), nn = nx * nx + ny * ny;
+    const float geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
+    if (nx == 0 || ny == 0 || !((k + nn) + (a->mass + b->mass) <= hi && (geometry < lighter ? geometry : lighter) >= lo))
+        return 0;
+    if (4 * d + k <= 0) {
+        const float den = nn * (a->mass + b->mass);
+        const float c = e1 * d / den;
+        const float la = c * b->mass, lb = c * a->mass;
+        a->vel.x = a->vel.x + la * nx;
+        a->vel.y = a->vel.y + la * ny;
+        b->vel.x = b->vel.x - lb * nx;
+        b->vel.y = b->vel.y - lb * ny;
+        *st = C2D_OK;
+        return 1;
+    }
+    if (4 * d - k >= 0) {
+        *st = C2D_SEPARATING;
+        return 1;
+    }
+    return 0;
+}
+
+static inline c2d_status c2d_collidef_inline(c2d_bodyf *a, c2d_bodyf *b, float restitution)
+{
+    c2d_status st;
+    if (a != NULL && b != NULL && restitution >= 0 && restitution <= 1 &&
+        c2d_inline_frontf(b->pos.x - a->pos.x, b->pos.y - a->pos.y, a, b, 1 + restitution, &st))
+        return st;
+    return c2d_collidef(a, b, restitution);
+}
+
+static inline c2d_status c2d_collide_normalf_inline(c2d_bodyf *a, c2d_bodyf *b, c2d_vec2f normal, float restitution)
+{
+    c2d_status st;
+    if (a != NULL && b != NULL && a != b && restitution >= 0 && restitution <= 1 &&
+        ((a->pos.x - a->pos.x) + (a->pos.y - a->pos.y)) + ((b->pos.x - b->pos.x) + (b->pos.y - b->pos.y)) == 0 &&
+        c2d_inline_frontf(normal.x, normal.y, a, b, 1 + restitution, &st))
+        return st;
+    return c2d_collide_normalf(a, b, normal, restitution);
+}
+#elif !defined(C2D_NO_FLOAT)
+static inline c2d_status c2d_collidef_inline(c2d_bodyf *a, c2d_bodyf *b, float restitution)
+{
+    return c2d_collidef(a, b, restitution);
+}
+
+static inline c2d_status c2d_collide_normalf_inline(c2d_bodyf *a, c2d_bodyf *b, c2d_vec2f normal, float restitution)
+{
+    return c2d_collide_normalf(a, b, normal, restitution);
+}
+#endif
+#endif /* C2D_INLINE */
 
 #ifdef __cplusplus
 }

@@ -27,6 +27,8 @@
 #endif
 #if defined(__FP_FAST_FMA) && defined(__GNUC__)
 #define C2D_R_FMA __builtin_fma /* TwoProduct in one instruction; same bits */
+#elif defined(C2D_DISPATCH)
+#define C2D_R_FUSED __builtin_fma /* TwoProduct by FMA where run-time dispatch finds it (real_exact.h) */
 #endif
 #define C2D_R_EXP_K 900      /* fast window: |products| summed in [2^-900, 2^900] */
 #define C2D_R_EXP_KAPPA2 41  /* tier-2 d trusted if it cancels by at most 2^41 */
@@ -35,16 +37,27 @@
 
 #define C2D_R_QUICK 200        /* front end's window: [2^-200, 2^200] (real_fast.h) */
 
+#define C2D_R_TOI_WINDOW 100   /* time of impact unscaled within [2^-100, 2^100] (real_toi.h) */
+
 #include "real_bits.h"
 #include "real_exact.h"
+#include "real_sign.h"
+#include "real_round.h"
 #include "real_fast.h"
 #include "real_general.h"
 #include "real_collide.h"
+#include "real_axis.h"
 #include "real_batch.h"
-#include "real_sign.h"
 #include "real_toi.h"
 #include "real_dd.h"
 #include "real_rough.h"
+#include "real_toia_num.h"
+#include "real_toia_problem.h"
+#include "real_toia_eval.h"
+#include "real_toia_newton.h"
+#include "real_toia_turns.h"
+#include "real_toia_scan.h"
+#include "real_toia.h"
 
 c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution)
 {
@@ -74,6 +87,12 @@ c2d_status c2d_collide_rough(c2d_disk *a, c2d_disk *b, c2d_surface s)
 c2d_status c2d_collide_rough_normal(c2d_disk *a, c2d_disk *b, c2d_vec2 normal, c2d_surface s)
 {
     return c2d_real_collide_rough(a, b, &normal, &s);
+}
+
+c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a, const c2d_body *b, c2d_vec2 acc_b,
+                                    double radius_sum, double horizon, double *t)
+{
+    return c2d_toia_solve(a, &acc_a, b, &acc_b, radius_sum, horizon, t);
 }
 
 #endif /* C2D_NO_DOUBLE */

@@ -28,6 +28,8 @@
 #endif
 #if defined(__FP_FAST_FMAF) && defined(__GNUC__)
 #define C2D_R_FMA __builtin_fmaf /* TwoProduct in one instruction; same bits */
+#elif defined(C2D_DISPATCH)
+#define C2D_R_FUSED __builtin_fmaf /* TwoProduct by FMA where run-time dispatch finds it (real_exact.h) */
 #endif
 #define C2D_R_EXP_K 90       /* fast window: |products| summed in [2^-90, 2^90] */
 #define C2D_R_EXP_KAPPA2 12  /* tier-2 d trusted if it cancels by at most 2^12 */
@@ -36,16 +38,27 @@
 
 #define C2D_R_QUICK 20        /* front end's window: [2^-20, 2^20] (real_fast.h) */
 
+#define C2D_R_TOI_WINDOW 12   /* time of impact unscaled within [2^-12, 2^12] (real_toi.h) */
+
 #include "real_bits.h"
 #include "real_exact.h"
+#include "real_sign.h"
+#include "real_round.h"
 #include "real_fast.h"
 #include "real_general.h"
 #include "real_collide.h"
+#include "real_axis.h"
 #include "real_batch.h"
-#include "real_sign.h"
 #include "real_toi.h"
 #include "real_dd.h"
 #include "real_rough.h"
+#include "real_toia_num.h"
+#include "real_toia_problem.h"
+#include "real_toia_eval.h"
+#include "real_toia_newton.h"
+#include "real_toia_turns.h"
+#include "real_toia_scan.h"
+#include "real_toia.h"
 
 c2d_status c2d_collidef(c2d_bodyf *a, c2d_bodyf *b, float restitution)
 {
@@ -75,6 +88,12 @@ c2d_status c2d_collide_roughf(c2d_diskf *a, c2d_diskf *b, c2d_surfacef s)
 c2d_status c2d_collide_rough_normalf(c2d_diskf *a, c2d_diskf *b, c2d_vec2f normal, c2d_surfacef s)
 {
     return c2d_real_collide_rough(a, b, &normal, &s);
+}
+
+c2d_status c2d_time_of_impact_accelf(const c2d_bodyf *a, c2d_vec2f acc_a, const c2d_bodyf *b, c2d_vec2f acc_b,
+                                    float radius_sum, float horizon, float *t)
+{
+    return c2d_toia_solve(a, &acc_a, b, &acc_b, radius_sum, horizon, t);
 }
 
 #endif /* C2D_NO_FLOAT */

@@ -43,6 +43,17 @@ float sqrtf(float x);
 #define C2D_COLD static
 #endif
 
+/* Run-time dispatch (real_batch.h: gcc's target_clones, an ifunc resolved
+ * by the loader; real_collide.h: the FMA tier): only gcc on hosted x86-64
+ * ELF builds, off with C2D_NO_DISPATCH, never in freestanding or MCU
+ * builds.  Not clang: clang 14 gives a static function's target_clones
+ * resolver a global name, so double.c's and float.c's kernels would clash
+ * at link time. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) && \
+    defined(__STDC_HOSTED__) && __STDC_HOSTED__ == 1 && !defined(C2D_NO_DISPATCH)
+#define C2D_DISPATCH 1
+#endif
+
 /* What the fast path (and tier 2) concluded.  Internal only: never mixed
  * with the public c2d_status; c2d_verdict_status (real_fast.h) converts the
  * final ones. */
@@ -51,7 +62,8 @@ typedef enum c2d_verdict {
     C2D_VERDICT_SEPARATING, /* valid, not approaching */
     C2D_VERDICT_RANGE,      /* valid, a result overflows */
     C2D_VERDICT_ACCURATE,   /* valid and in the window, but d cancels: recompute d in double-double */
-    C2D_VERDICT_GENERAL     /* outside the window: validate in full and take the general path */
+    C2D_VERDICT_GENERAL,    /* outside the window: validate in full and take the general path */
+    C2D_VERDICT_AXIS        /* the normal has a zero component: correctly rounded (real_axis.h) */
 } c2d_verdict;
 
 /* "No exponent": the exponent reported for a zero vector (int is >= 16 bits;

@@ -2,20 +2,36 @@
  * Needs real_collide.h (and what it needs) first.
  *
  * HOW IT STAYS BIT-IDENTICAL TO THE SCALAR CALL
- *   Pairs are taken in blocks of C2D_BLOCK.  A full block runs the fast
- *   path's flag computation (c2d_fast_flags, the very function the scalar
- *   call inlines) for every lane in a loop with a fixed trip count and no
- *   branches, which the compiler vectorises: clang at -O2, gcc 12 for float
- *   on baseline x86-64 and for double from x86-64-v2 on (SSE2 has no 64-bit
- *   compare for the flag masks).  Then each lane's verdict is decoded: OK,
- *   SEPARATING and RANGE are final; the others go straight to the tier the
- *   verdict names, exactly as the scalar call would send them.  A partial
- *   block (the tail) and a bad restitution take the whole scalar call.
+ *   Pairs are taken in blocks of C2D_BLOCK.  A full block runs the scalar
+ *   call's input-only accept test (real_fast.h, "front end") for every lane
+ *   in a loop with a fixed trip count and no branches, which the compiler
+ *   vectorises: the test and the arithmetic it accepts are the very
+ *   operations of c2d_quick, so an accepted lane has the scalar call's bits,
+ *   and a separating lane its status.  Every other lane (walls, cancelling
+ *   d, anything outside the window, bad input) takes the whole scalar call.
+ *   An accepted lane's velocities are committed with a bit-mask select that
+ *   leaves the others untouched, so the scalar call sees them as they were.
+ *   A partial block (the tail) and a bad restitution take the scalar call.
+ *
+ * RUN-TIME DISPATCH
+ *   On hosted x86-64 ELF with gcc or clang (C2D_DISPATCH, internal.h; off
+ *   with C2D_NO_DISPATCH, and never in freestanding or MCU builds) the
+ *   kernel is compiled four times by target_clones and the loader picks one
+ *   (ifunc): baseline x86-64 (SSE2: float vectorises, double does not, for
+ *   want of 64-bit compares), x86-64-v2 (SSE4.2: double too), x86-64-v3
+ *   (AVX2: four doubles or eight floats a vector), x86-64-v4 (AVX-512:
+ *   eight or sixteen; the double kernel is bound by the division's
+ *   throughput, so the widest vectors pay most).  Contraction stays off in
+ *   every clone (-ffp-contract=off; nothing here calls fma), and division
+ *   and square root are correctly rounded at any width: same bits.
  */
 #ifndef C2D_REAL_BATCH_H
 #define C2D_REAL_BATCH_H
 
 enum { C2D_BLOCK = 16 };
+
+/* What the kernel found for a lane. */
+enum { C2D_LANE_SCALAR = 0, C2D_LANE_OK = 1, C2D_LANE_SEPARATING = 2 };
 
 /* Pairs in the block that starts `left` pairs before the end. */
 static size_t c2d_block_width(size_t left) { return left < (size_t)C2D_BLOCK ? left : (size_t)C2D_BLOCK; }
@@ -35,48 +51,72 @@ static void c2d_batch_load(const c2d_real_pairs *p, size_t i, c2d_real_body *a, 
     b->mass = p->mass_b[i];
 }
 
-/* The fast path over one full block, from `base`: flags and results. */
-static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1,
-                             c2d_real_bits flags[C2D_BLOCK], c2d_real out[4][C2D_BLOCK])
+/* v[j] = x[j] where keep[j] is all ones, else unchanged: a bit-mask select
+ * (and/andnot/or or a blend once vectorised), never a memcpy call.  Inlined
+ * into the kernel, so it is vectorised with the kernel's target. */
+static inline void c2d_batch_commit(c2d_real *v, const c2d_real *x, const c2d_real_bits *keep)
 {
+    size_t j;
+    for (j = 0; j < (size_t)C2D_BLOCK; j++)
+        v[j] = c2d_from_bits((c2d_bits(x[j]) & keep[j]) | (c2d_bits(v[j]) & ~keep[j]));
+}
+
+/* The front end over one full block from `base`: each lane's C2D_LANE_*,
+ * and the accepted lanes' velocities committed in place.  c2d_quick's
+ * arithmetic with & in place of its branches (both masses finite: walls go
+ * to the scalar call).  Results go to local arrays first, so nothing the
+ * main loop writes can alias what it reads; each commit loop then touches
+ * one array. */
+#ifdef C2D_DISPATCH
+__attribute__((target_clones("default", "arch=x86-64-v2", "arch=x86-64-v3", "arch=x86-64-v4")))
+#endif
+static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, c2d_real_bits *restrict lane)
+{
+    c2d_real out[4][C2D_BLOCK];
+    c2d_real_bits keep[C2D_BLOCK];
+    const c2d_real hi = c2d_pow2(C2D_R_QUICK), lo = c2d_pow2(-C2D_R_QUICK);
     const c2d_real *pax = p->pos_ax + base, *pay = p->pos_ay + base;
     const c2d_real *pbx = p->pos_bx + base, *pby = p->pos_by + base;
     const c2d_real *vax = p->vel_ax + base, *vay = p->vel_ay + base;
     const c2d_real *vbx = p->vel_bx + base, *vby = p->vel_by + base;
     const c2d_real *ma = p->mass_a + base, *mb = p->mass_b + base;
     size_t j;
-    for (j = 0; j < C2D_BLOCK; j++) {
-        c2d_real o[4];
-        c2d_pair q;
-        q.n.x = pbx[j] - pax[j];
-        q.n.y = pby[j] - pay[j];
-        q.va.x = vax[j];
-        q.va.y = vay[j];
-        q.vb.x = vbx[j];
-        q.vb.y = vby[j];
-        q.ma = ma[j];
-        q.mb = mb[j];
-        flags[j] = c2d_fast_flags(&q, e1, o);
-        out[0][j] = o[0];
-        out[1][j] = o[1];
-        out[2][j] = o[2];
-        out[3][j] = o[3];
+    for (j = 0; j < (size_t)C2D_BLOCK; j++) {
+        const c2d_real nx = pbx[j] - pax[j], ny = pby[j] - pay[j];
+        const c2d_real px = (vbx[j] - vax[j]) * nx, py = (vby[j] - vay[j]) * ny;
+        const c2d_real d = px + py;
+        const c2d_real k = c2d_abs(px) + c2d_abs(py);
+        const c2d_real nn = nx * nx + ny * ny;
+        const c2d_real geometry = k < nn ? k : nn, lighter = ma[j] < mb[j] ? ma[j] : mb[j];
+        const c2d_real least = geometry < lighter ? geometry : lighter;
+        /* Truth values in the floating type's width (c2d_real_bits), combined
+         * with & and |: no branch, and no narrowing of a comparison's mask. */
+        const c2d_real_bits window = (c2d_real_bits)((k + nn) + (ma[j] + mb[j]) <= hi) & (c2d_real_bits)(least >= lo) &
+                                     (c2d_real_bits)(nx != 0) & (c2d_real_bits)(ny != 0); /* axes: scalar */
+        const c2d_real_bits ok = window & (c2d_real_bits)(4 * d + k <= 0);
+        const c2d_real den = nn * (ma[j] + mb[j]);
+        const c2d_real c = e1 * d / den;
+        const c2d_real la = c * mb[j], lb = c * ma[j];
+        out[0][j] = vax[j] + la * nx;
+        out[1][j] = vay[j] + la * ny;
+        out[2][j] = vbx[j] - lb * nx;
+        out[3][j] = vby[j] - lb * ny;
+        keep[j] = (c2d_real_bits)0 - ok;
+        lane[j] = ok | (window & (c2d_real_bits)(4 * d - k >= 0)) << 1;
     }
+    c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep);
+    c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep);
+    c2d_batch_commit(&p->vel_bx[base], &out[2][0], keep);
+    c2d_batch_commit(&p->vel_by[base], &out[3][0], keep);
 }
 
-/* One lane the kernel did not settle (or did not run for): the tier the
- * verdict names, or the whole scalar call. */
-static c2d_status c2d_batch_lane(const c2d_real_pairs *p, size_t i, int kernel_ran, c2d_verdict v, c2d_real restitution)
+/* One lane the kernel did not settle: the whole scalar call. */
+static c2d_status c2d_batch_lane(const c2d_real_pairs *p, size_t i, c2d_real restitution)
 {
     c2d_real_body a, b;
     c2d_status s;
     c2d_batch_load(p, i, &a, &b);
-    if (kernel_ran == 0)
-        s = c2d_real_collide(&a, &b, restitution);
-    else if (v == C2D_VERDICT_ACCURATE)
-        s = c2d_collide_accurate(&a, &b, restitution);
-    else
-        s = c2d_collide_slow(&a, &b, restitution);
+    s = c2d_real_collide(&a, &b, restitution);
     if (s == C2D_OK) {
         p->vel_ax[i] = a.vel.x;
         p->vel_ay[i] = a.vel.y;
@@ -86,6 +126,36 @@ static c2d_status c2d_batch_lane(const c2d_real_pairs *p, size_t i, int kernel_r
     return s;
 }
 
+/* Each lane's status (the scalar call for the lanes the kernel left);
+ * returns how many are OK. */
+static size_t c2d_batch_finish_block(const c2d_real_pairs *p, size_t base, size_t width, const c2d_real_bits *lane,
+                                     c2d_real restitution, c2d_status *status)
+{
+    size_t j, done = 0;
+    c2d_real_bits all = (c2d_real_bits)C2D_LANE_OK;
+    for (j = 0; j < width; j++) all &= lane[j];
+    if (width == (size_t)C2D_BLOCK && all == (c2d_real_bits)C2D_LANE_OK) {
+        /* Every lane accepted: C2D_OK is 0 = C2D_LANE_OK - 1, written lane by
+         * lane (a constant store would become a memset call). */
+        if (status != NULL)
+            for (j = 0; j < (size_t)C2D_BLOCK; j++) status[base + j] = (c2d_status)(lane[j] - 1u);
+        return (size_t)C2D_BLOCK;
+    }
+    for (j = 0; j < width; j++) {
+        const size_t i = base + j;
+        c2d_status s;
+        if (lane[j] == (c2d_real_bits)C2D_LANE_OK)
+            s = C2D_OK;
+        else if (lane[j] == (c2d_real_bits)C2D_LANE_SEPARATING)
+            s = C2D_SEPARATING;
+        else
+            s = c2d_batch_lane(p, i, restitution);
+        if (s == C2D_OK) done++;
+        if (status != NULL) status[i] = s;
+    }
+    return done;
+}
+
 static size_t c2d_real_collide_batch(const c2d_real_pairs *p, size_t count, c2d_real restitution, c2d_status *status)
 {
     size_t base, done = 0;
@@ -93,34 +163,15 @@ static size_t c2d_real_collide_batch(const c2d_real_pairs *p, size_t count, c2d_
     const c2d_real e1 = 1 + restitution;
     if (p == NULL) return 0;
     for (base = 0; base < count; base += C2D_BLOCK) {
-        c2d_real out[4][C2D_BLOCK];
-        c2d_real_bits flags[C2D_BLOCK];
+        c2d_real_bits lane[C2D_BLOCK];
         const size_t width = c2d_block_width(count - base);
-        const int kernel_ran = width == (size_t)C2D_BLOCK && e_ok;
-        size_t j;
-        if (kernel_ran != 0) {
-            c2d_batch_kernel(p, base, e1, flags, out);
+        if (width == (size_t)C2D_BLOCK && e_ok != 0) {
+            c2d_batch_kernel(p, base, e1, lane);
         } else {
-            for (j = 0; j < width; j++) flags[j] = 0; /* all to the scalar call */
+            size_t j;
+            for (j = 0; j < width; j++) lane[j] = (c2d_real_bits)C2D_LANE_SCALAR;
         }
-        for (j = 0; j < width; j++) {
-            size_t i = base + j;
-            c2d_verdict v = c2d_fast_verdict(flags[j]);
-            c2d_status s;
-            if (v == C2D_VERDICT_OK) {
-                p->vel_ax[i] = out[0][j];
-                p->vel_ay[i] = out[1][j];
-                p->vel_bx[i] = out[2][j];
-                p->vel_by[i] = out[3][j];
-                s = C2D_OK;
-            } else if (v == C2D_VERDICT_SEPARATING || v == C2D_VERDICT_RANGE) {
-                s = c2d_verdict_status(v);
-            } else {
-                s = c2d_batch_lane(p, i, kernel_ran, v, restitution);
-            }
-            if (s == C2D_OK) done++;
-            if (status != NULL) status[i] = s;
-        }
+        done += c2d_batch_finish_block(p, base, width, lane, restitution, status);
     }
     return done;
 }

@@ -1,6 +1,6 @@
 /* real_collide.h - template: c2d_collide and c2d_collide_normal, the three
  * tiers chained.  Needs real_bits.h, real_exact.h, real_fast.h and
- * real_general.h first.
+ * real_general.h first (and real_axis.h after).
  *
  * THE TIERS
  *   1. The fast path (real_fast.h): plain arithmetic, branch-free, when every
@@ -128,6 +128,63 @@ C2D_COLD c2d_status c2d_collide_accurate(c2d_real_body *a, c2d_real_body *b, c2d
     return c2d_resolve(a, b, &nh, &nl, restitution);
 }
 
+/* Axis-aligned impacts, correctly rounded: real_axis.h. */
+C2D_COLD c2d_status c2d_axis_impact(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *given, int axis, int sign,
+                                    c2d_real restitution);
+
+/* Tier 2 for a pair the front end (c2d_quick) found valid and inside its
+ * window, but whose d cancels: c2d_accurate's arithmetic without the checks
+ * the window makes redundant.  With k, n.n and the masses in [W^-1, W] and
+ * |d| >= 2^-KAPPA2 k, c = (1+e) d / (n.n (ma + mb)), la and lb are normal, so
+ * c2d_finish cannot decline; the rest is c2d_accurate's own route.  `fused`:
+ * TwoProduct by FMA (c2d_two_prod_as). */
+C2D_HOT c2d_status c2d_cancelling_as(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *nh, const c2d_real_vec *nl,
+                                     c2d_real restitution, int fused)
+{
+    const c2d_real rx = b->vel.x - a->vel.x, ry = b->vel.y - a->vel.y;
+    const c2d_real k = c2d_abs(rx * nh->x) + c2d_abs(ry * nh->y);
+    const c2d_real split = c2d_abs(rx) + c2d_abs(ry) + c2d_abs(nh->x) + c2d_abs(nh->y);
+    c2d_real d, fa, fb, den, c, la, lb;
+    if (!(split <= c2d_pow2(C2D_R_EMAX / 2))) return c2d_resolve(a, b, nh, nl, restitution);
+    d = c2d_dot2_as(nh, nl, &a->vel, &b->vel, fused);
+    if (!(c2d_abs(d) * c2d_pow2(C2D_R_EXP_KAPPA2) >= k)) return c2d_resolve(a, b, nh, nl, restitution);
+    if (d >= 0) return C2D_SEPARATING;
+    fa = a->mass > C2D_R_MAX ? (c2d_real)1.0 : (b->mass > C2D_R_MAX ? (c2d_real)0.0 : a->mass);
+    fb = b->mass > C2D_R_MAX ? (c2d_real)1.0 : (a->mass > C2D_R_MAX ? (c2d_real)0.0 : b->mass);
+    den = (nh->x * nh->x + nh->y * nh->y) * (fa + fb);
+    c = (1 + restitution) * d / den;
+    la = c * fb;
+    lb = c * fa;
+    a->vel.x = a->vel.x + la * nh->x;
+    a->vel.y = a->vel.y + la * nh->y;
+    b->vel.x = b->vel.x - lb * nh->x;
+    b->vel.y = b->vel.y - lb * nh->y;
+    return C2D_OK;
+}
+
+#ifdef C2D_R_FUSED
+/* The tier compiled for x86-64-v3 (which has FMA), with fused TwoProducts. */
+__attribute__((target("arch=x86-64-v3"))) C2D_COLD c2d_status c2d_cancelling_fused(c2d_real_body *a, c2d_real_body *b,
+                                                                                     const c2d_real_vec *nh,
+                                                                                     const c2d_real_vec *nl,
+                                                                                     c2d_real restitution)
+{
+    return c2d_cancelling_as(a, b, nh, nl, restitution, 1);
+}
+#endif
+
+/* Tier 2 for the front end: with FMA when the CPU has it (chosen at run
+ * time under C2D_DISPATCH), Dekker's split otherwise; the same bits. */
+C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *nh,
+                                         const c2d_real_vec *nl, c2d_real restitution)
+{
+#ifdef C2D_R_FUSED
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+        return c2d_cancelling_fused(a, b, nh, nl, restitution);
+#endif
+    return c2d_cancelling_as(a, b, nh, nl, restitution, 0);
+}
+
 /* What c2d_collide's front end could not decide: the fast path, then the
  * tier its verdict names.  Out of line, so the front end stays small. */
 C2D_COLD c2d_status c2d_collide_fallback(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
@@ -157,11 +214,19 @@ static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2
         return C2D_OK;
     }
     if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
+    if (v == C2D_VERDICT_AXIS) {
+        const int on_y = b->pos.x == a->pos.x; /* the centres share x: the normal is along y */
+        const c2d_real pa = on_y != 0 ? a->pos.y : a->pos.x, pb = on_y != 0 ? b->pos.y : b->pos.x;
+        return c2d_axis_impact(a, b, NULL, on_y, pb > pa ? 1 : (pb < pa ? -1 : 0), restitution);
+    }
     /* A valid pair whose d cancels: where the fast path would send it, unless
      * the positions are so large that c2d_collide_slow takes another route. */
     if (v == C2D_VERDICT_ACCURATE && c2d_abs(a->pos.x) + c2d_abs(a->pos.y) + c2d_abs(b->pos.x) + c2d_abs(b->pos.y) <
-                                         c2d_pow2(C2D_R_EMAX - 2))
-        return c2d_collide_accurate(a, b, restitution);
+                                         c2d_pow2(C2D_R_EMAX - 2)) {
+        c2d_real_vec nh, nl;
+        c2d_exact_normal(a, b, &nh, &nl);
+        return c2d_quick_cancelling(a, b, &nh, &nl, restitution);
+    }
     return c2d_collide_fallback(a, b, restitution);
 }
 
@@ -213,7 +278,17 @@ static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body
         return C2D_OK;
     }
     if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
-    if (v == C2D_VERDICT_ACCURATE) return c2d_collide_normal_slow(a, b, normal, restitution, v);
+    if (v == C2D_VERDICT_AXIS) {
+        const int on_y = normal->x == 0;
+        const c2d_real ni = on_y != 0 ? normal->y : normal->x;
+        return c2d_axis_impact(a, b, normal, on_y, ni > 0 ? 1 : (ni < 0 ? -1 : 0), restitution);
+    }
+    if (v == C2D_VERDICT_ACCURATE) {
+        c2d_real_vec zero;
+        zero.x = 0;
+        zero.y = 0;
+        return c2d_quick_cancelling(a, b, normal, &zero, restitution);
+    }
     return c2d_collide_normal_fallback(a, b, normal, restitution);
 }
 

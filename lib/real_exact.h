@@ -58,6 +58,25 @@ static c2d_real c2d_two_prod(c2d_real a, c2d_real b, c2d_real *err)
     return p;
 }
 
+/* TwoProduct for code dispatched at run time (real_collide.h): with
+ * fused != 0, the error from a fused multiply-add, which only a caller
+ * compiled for a target with FMA and chosen because the CPU has it may ask
+ * for (C2D_R_FUSED, defined under C2D_DISPATCH); otherwise c2d_two_prod.
+ * The error term is a * b - p exactly either way: the same bits. */
+C2D_HOT c2d_real c2d_two_prod_as(c2d_real a, c2d_real b, c2d_real *err, int fused)
+{
+#ifdef C2D_R_FUSED
+    if (fused != 0) {
+        c2d_real p = a * b;
+        *err = C2D_R_FUSED(a, b, -p);
+        return p;
+    }
+#else
+    (void)fused;
+#endif
+    return c2d_two_prod(a, b, err);
+}
+
 /* Add b to the nonoverlapping expansion e[0..n) (increasing magnitude),
  * keeping it exact and nonoverlapping (GROW-EXPANSION with zero
  * elimination).  Returns the new length (<= n + 1). */
@@ -130,18 +149,24 @@ static void c2d_exact_diff(c2d_real x1, c2d_real x0, c2d_xf *hi, c2d_xf *lo)
 
 /* r.(nh + nl) for r = vb - va as a double-double: exact differences and
  * exact products, so the error is ~1 ulp of the result plus ~u^2 of the
- * terms. */
-static c2d_real c2d_dot2(const c2d_real_vec *nh, const c2d_real_vec *nl, const c2d_real_vec *va,
-                         const c2d_real_vec *vb)
+ * terms.  `fused` as for c2d_two_prod_as. */
+C2D_HOT c2d_real c2d_dot2_as(const c2d_real_vec *nh, const c2d_real_vec *nl, const c2d_real_vec *va,
+                             const c2d_real_vec *vb, int fused)
 {
     c2d_real rlx, rly, ex, ey, t;
     c2d_real rhx = c2d_two_sum(vb->x, -va->x, &rlx);
     c2d_real rhy = c2d_two_sum(vb->y, -va->y, &rly);
-    c2d_real px = c2d_two_prod(rhx, nh->x, &ex);
-    c2d_real py = c2d_two_prod(rhy, nh->y, &ey);
+    c2d_real px = c2d_two_prod_as(rhx, nh->x, &ex, fused);
+    c2d_real py = c2d_two_prod_as(rhy, nh->y, &ey, fused);
     c2d_real s = c2d_two_sum(px, py, &t);
     c2d_real small = ((rhx * nl->x + rlx * nh->x) + (rhy * nl->y + rly * nh->y)) + (rlx * nl->x + rly * nl->y);
     return s + (t + ((ex + ey) + small));
+}
+
+static c2d_real c2d_dot2(const c2d_real_vec *nh, const c2d_real_vec *nl, const c2d_real_vec *va,
+                         const c2d_real_vec *vb)
+{
+    return c2d_dot2_as(nh, nl, va, vb, 0);
 }
 
 /* x.y for double-double vectors (xh + xl, yh + yl), to about 2 ulp even

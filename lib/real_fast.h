@@ -158,10 +158,10 @@ static inline int c2d_quick_wall(const c2d_pair *p, c2d_real *fa, c2d_real *fb)
     return 0;
 }
 
-/* OK (out written) or SEPARATING when the accept test decides; ACCURATE
- * for a valid pair inside the window whose d cancels (the double-double
- * tier's case); else GENERAL: the caller then asks the fast path (c2d_fast)
- * as before. */
+/* OK (out written) or SEPARATING when the accept test decides; AXIS when
+ * the normal has a zero component (real_axis.h); ACCURATE for a valid pair
+ * inside the window whose d cancels (the double-double tier's case); else
+ * GENERAL: the caller then asks the fast path (c2d_fast) as before. */
 C2D_HOT c2d_verdict c2d_quick(const c2d_pair *p, c2d_real e1, c2d_real *out)
 {
     const c2d_real hi = c2d_pow2(C2D_R_QUICK), lo = c2d_pow2(-C2D_R_QUICK);
@@ -171,6 +171,7 @@ C2D_HOT c2d_verdict c2d_quick(const c2d_pair *p, c2d_real e1, c2d_real *out)
     const c2d_real nn = p->n.x * p->n.x + p->n.y * p->n.y;
     const c2d_real geometry = k < nn ? k : nn, lighter = p->ma < p->mb ? p->ma : p->mb;
     c2d_real fa = p->ma, fb = p->mb;
+    if (p->n.x == 0 || p->n.y == 0) return C2D_VERDICT_AXIS;
     if (!((k + nn) + (fa + fb) <= hi && (geometry < lighter ? geometry : lighter) >= lo) &&
         !(c2d_quick_wall(p, &fa, &fb) && k + nn <= hi && geometry >= lo))
         return C2D_VERDICT_GENERAL;

@@ -198,26 +198,135 @@ C2D_COLD c2d_status c2d_toi_exact(const c2d_real_body *a, const c2d_real_body *b
 /* A decision the fast path can take: |x - y| clears the error bound. */
 static int c2d_clear_of(c2d_real x, c2d_real y, c2d_real bound) { return c2d_abs(x - y) > bound; }
 
-static c2d_status c2d_real_time_of_impact(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum,
-                                          c2d_real *t)
+/* ------------------------------------------------------------ plain path
+ * In plain arithmetic, for pairs whose differences are moderate.  With d, v
+ * the rounded differences (each component within u of its exact value,
+ * u = 2^-(MANT+1)) and every nonzero |d_i|, |v_i| and R within
+ * [2^-W, 2^W] (W = C2D_R_TOI_WINDOW), no product under- or overflows, and
+ *   b = d.v is within 4u k of its exact value, k = |dx vx| + |dy vy| (the
+ *     inputs' rounding 2u k, the products' and the sum's 2u k);
+ *   |d|^2 - R^2 within 6u of the larger of |d|^2, R^2 (4u and u, and the
+ *     subtraction's u);
+ *   (d x v)^2 - R^2 |v|^2 within 8u (|d x v| k' + R^2 |v|^2), k' =
+ *     |dx vy| + |dy vx| (d x v within 4u k', R^2 |v|^2 within 6u).
+ * Each sign is taken only when its value clears twice its bound (8u k,
+ * 16u max(|d|^2, R^2), 16u (|d x v| k' + R^2 |v|^2)); every other pair goes
+ * to the careful path below, so the status stays exact.  A miss is found on
+ * squares, with no square root.  For a hit, t = c / (sqrt(disc) - b) with
+ * c = (|d| - R)(|d| + R), disc = |v|^2 (R - h)(R + h), h = |d x v| / |v|:
+ * b < 0 and sqrt(disc) >= 0 in the denominator, so their relative errors
+ * (a few u) pass to t unamplified; c's absolute error, about u |d|^2, is the
+ * time one rounding of |d| is worth at the approach speed; the cross
+ * product's error moves sqrt(disc) by at most 2h/R of that unit
+ * (docs/METHOD.md).  Measured worst: README "Accuracy".  Returns 0 when it
+ * cannot decide. */
+static inline int c2d_toi_plain(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, c2d_real *t,
+                                c2d_status *status)
+{
+    const c2d_real lo = c2d_pow2(-C2D_R_TOI_WINDOW), hi = c2d_pow2(C2D_R_TOI_WINDOW);
+    const c2d_real u8 = c2d_pow2(-C2D_R_MANT + 2), u16 = c2d_pow2(-C2D_R_MANT + 3); /* 8u, 16u */
+    const c2d_real dx = b->pos.x - a->pos.x, dy = b->pos.y - a->pos.y;
+    const c2d_real vx = b->vel.x - a->vel.x, vy = b->vel.y - a->vel.y;
+    const c2d_real r = radius_sum;
+    /* The window: zeros count as hi for the minimum; NaN and Inf (from any
+     * non-finite input) fail the sum; a negative radius fails r >= 0. */
+    const c2d_real mx = c2d_abs(dx) == 0 ? hi : c2d_abs(dx), my = c2d_abs(dy) == 0 ? hi : c2d_abs(dy);
+    const c2d_real nx = c2d_abs(vx) == 0 ? hi : c2d_abs(vx), ny = c2d_abs(vy) == 0 ? hi : c2d_abs(vy);
+    const c2d_real mr = r == 0 ? hi : r;
+    const c2d_real least = (mx < my ? mx : my) < (nx < ny ? nx : ny) ? (mx < my ? mx : my) : (nx < ny ? nx : ny);
+    c2d_real dv, k, q, r2, a2, dist, speed, cross, h, kc;
+    if (!((c2d_abs(dx) + c2d_abs(dy)) + (c2d_abs(vx) + c2d_abs(vy)) + r <= hi && (least < mr ? least : mr) >= lo))
+        return 0;
+    if ((vx == 0 && vy == 0) || (dx == 0 && dy == 0)) { /* exact: moderate values subtract to 0 only if equal */
+        *status = C2D_SEPARATING;
+        return 1;
+    }
+    dv = dx * vx + dy * vy;
+    k = c2d_abs(dx * vx) + c2d_abs(dy * vy);
+    if (!(c2d_abs(dv) > u8 * k)) return 0;
+    if (dv > 0) {
+        *status = C2D_SEPARATING;
+        return 1;
+    }
+    /* Overlap and miss decided on squares, so a miss costs no square root:
+     * |d|^2 - R^2 (relative errors 4u and u) and (d x v)^2 - R^2 |v|^2
+     * (cross's error 4u k', so its square's 8u |d x v| k' + ...). */
+    q = dx * dx + dy * dy;
+    r2 = r * r;
+    if (!c2d_clear_of(q, r2, u16 * (q > r2 ? q : r2))) return 0;
+    if (q < r2) {
+        *t = 0;
+        *status = C2D_OK;
+        return 1;
+    }
+    a2 = vx * vx + vy * vy;
+    cross = dx * vy - dy * vx;
+    kc = c2d_abs(dx * vy) + c2d_abs(dy * vx);
+    if (!c2d_clear_of(cross * cross, r2 * a2, u16 * (c2d_abs(cross) * kc + r2 * a2))) return 0;
+    if (cross * cross > r2 * a2) {
+        *status = C2D_SEPARATING;
+        return 1;
+    }
+    dist = C2D_R_SQRT(q);
+    speed = C2D_R_SQRT(a2);
+    h = c2d_abs(cross) / speed;
+    *t = (dist - r) * (dist + r) / (speed * C2D_R_SQRT((r - h) * (r + h)) - dv);
+    *status = C2D_OK;
+    return 1;
+}
+
+/* Every input 0 or of magnitude within [2^-W, 2^W] (W = C2D_R_TOI_WINDOW:
+ * 100 double, 12 float).  Then the power-of-two scaling cannot matter: d's
+ * and v's parts, their products and every later quantity stay far inside
+ * the normal range with or without it (the smallest nonzero part is an ulp
+ * of an input, 2^-(W + MANT); products of two such are still normal, and
+ * the filters' 2^(EMIN + 4) floor stays below half an ulp of the bounds it
+ * is added to), so each operation rounds the same scaled or not: the
+ * scaling is skipped, with the same bits. */
+static int c2d_toi_in_window(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum)
+{
+    const c2d_real lo = c2d_pow2(-C2D_R_TOI_WINDOW), hi = c2d_pow2(C2D_R_TOI_WINDOW);
+    c2d_real x[9];
+    int i, in = 1;
+    x[0] = a->pos.x, x[1] = a->pos.y, x[2] = b->pos.x, x[3] = b->pos.y;
+    x[4] = a->vel.x, x[5] = a->vel.y, x[6] = b->vel.x, x[7] = b->vel.y, x[8] = radius_sum;
+    for (i = 0; i < 9; i++) {
+        const c2d_real m = c2d_abs(x[i]);
+        in &= (int)(m == 0) | ((int)(m >= lo) & (int)(m <= hi));
+    }
+    return in;
+}
+
+/* Everything the plain path left: validation, then the double-double path
+ * (scaled unless inside the window), then the exact path. */
+C2D_COLD c2d_status c2d_toi_careful(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, c2d_real *t)
 {
     const c2d_real rel = c2d_pow2(-C2D_R_MANT + 2), rel2 = c2d_pow2(-2 * C2D_R_MANT + 4);
     const c2d_real tiny = c2d_pow2(C2D_R_EMIN + 4);
     c2d_real dh[2], dl[2], vh[2], vl[2], crossh[2], crossl[2];
     c2d_real rad, dist, speed, dv, cross, h, c, disc, tt, k;
-    int kd, kv, exact = 1;
-    if (a == NULL || b == NULL || t == NULL) return C2D_INVALID;
+    int kd = 0, kv = 0, exact = 1;
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y) || !c2d_finite4(a->vel.x, a->vel.y, b->vel.x, b->vel.y) ||
         !(radius_sum >= 0 && radius_sum <= C2D_R_MAX))
         return C2D_INVALID;
-    kv = c2d_scaled_diff2(b->vel.x, a->vel.x, b->vel.y, a->vel.y, vh, vl, &exact);
-    if (kv == C2D_NO_EXP) return C2D_SEPARATING; /* no relative motion */
-    kd = c2d_scaled_diff2(b->pos.x, a->pos.x, b->pos.y, a->pos.y, dh, dl, &exact);
-    if (kd == C2D_NO_EXP) return C2D_SEPARATING; /* coincident: not approaching */
-    rad = c2d_scale2(radius_sum, -kd); /* Inf when far larger than |d|: overlapping */
-    if (exact == 0 || (rad != 0 && rad < c2d_pow2(C2D_R_EMIN))) return c2d_toi_exact(a, b, radius_sum, t);
-    /* In units of 2^kd for lengths and 2^kv for speeds, both vectors have
-     * their largest component in [1, 4): squares and products are safe. */
+    if (c2d_toi_in_window(a, b, radius_sum) != 0) {
+        vh[0] = c2d_two_sum(b->vel.x, -a->vel.x, &vl[0]);
+        vh[1] = c2d_two_sum(b->vel.y, -a->vel.y, &vl[1]);
+        dh[0] = c2d_two_sum(b->pos.x, -a->pos.x, &dl[0]);
+        dh[1] = c2d_two_sum(b->pos.y, -a->pos.y, &dl[1]);
+        if (vh[0] == 0 && vh[1] == 0) return C2D_SEPARATING; /* no relative motion */
+        if (dh[0] == 0 && dh[1] == 0) return C2D_SEPARATING; /* coincident: not approaching */
+        rad = radius_sum;
+    } else {
+        kv = c2d_scaled_diff2(b->vel.x, a->vel.x, b->vel.y, a->vel.y, vh, vl, &exact);
+        if (kv == C2D_NO_EXP) return C2D_SEPARATING;
+        kd = c2d_scaled_diff2(b->pos.x, a->pos.x, b->pos.y, a->pos.y, dh, dl, &exact);
+        if (kd == C2D_NO_EXP) return C2D_SEPARATING;
+        rad = c2d_scale2(radius_sum, -kd); /* Inf when far larger than |d|: overlapping */
+        if (exact == 0 || (rad != 0 && rad < c2d_pow2(C2D_R_EMIN))) return c2d_toi_exact(a, b, radius_sum, t);
+    }
+    /* In units of 2^kd for lengths and 2^kv for speeds (or as they are, in
+     * the window), squares and products are safe. */
     dv = c2d_dot_dd(dh, dl, vh, vl);
     k = c2d_abs(dh[0] * vh[0]) + c2d_abs(dh[1] * vh[1]);
     if (!(c2d_abs(dv) > rel2 * k + tiny)) return c2d_toi_exact(a, b, radius_sum, t);
@@ -243,10 +352,22 @@ static c2d_status c2d_real_time_of_impact(const c2d_real_body *a, const c2d_real
     c = (dist - rad) * (dist + rad);
     disc = speed * C2D_R_SQRT((rad - h) * (rad + h));
     tt = c / (disc - dv);
-    tt = c2d_scale2(tt, kd - kv);
+    if (kd != kv) tt = c2d_scale2(tt, kd - kv);
     if (!(tt <= C2D_R_MAX)) return C2D_RANGE;
     *t = tt;
     return C2D_OK;
+}
+
+/* c2d_time_of_impact: the plain path, else the careful one.  The plain path
+ * needs no validation of its own: a NaN or Inf input makes a difference NaN
+ * or Inf, which its window refuses. */
+static c2d_status c2d_real_time_of_impact(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum,
+                                          c2d_real *t)
+{
+    c2d_status plain;
+    if (a == NULL || b == NULL || t == NULL) return C2D_INVALID;
+    if (c2d_toi_plain(a, b, radius_sum, t, &plain) != 0) return plain;
+    return c2d_toi_careful(a, b, radius_sum, t);
 }
 
 #endif /* C2D_REAL_TOI_H */

@@ -33,13 +33,15 @@ inline() {
 # names, struct/union/enum tags and enum constants.
 template_names() {
     cat "$lib"/real_*.h | awk '
-        /^(static|C2D_HOT|C2D_COLD)[^(=]*[ *]c2d_[a-z0-9_]+\(/ {
-            s = $0; sub(/\(.*/, "", s); n = split(s, w, /[ *]+/); print w[n] }
+        /^(__attribute__[^ ]* )?(static|C2D_HOT|C2D_COLD)[^(=]*[ *]c2d_[a-z0-9_]+\(/ {
+            s = $0; sub(/^__attribute__[^ ]* /, "", s); sub(/\(.*/, "", s); n = split(s, w, /[ *]+/); print w[n] }
         /^typedef / { s = $0; sub(/.*\}/, "", s); sub(/;.*/, "", s); n = split(s, w, /[ *{}]+/); print w[n]
                       if ($2 ~ /^(struct|union|enum)$/) print $3 }
         /^enum / { if ($2 ~ /^c2d_/) print $2 }
-        /^ *C2D_[A-Z0-9_]+ = / { s = $0; sub(/^ */, "", s); sub(/ .*/, "", s); print s }
-        /^enum \{ *C2D_[A-Z0-9_]+ = / { s = $0; sub(/^enum \{ */, "", s); sub(/ .*/, "", s); print s }' |
+        /^(typedef )?enum [a-z0-9_]* *\{ *$/ { in_enum = 1; next }
+        in_enum && /^ *\}/ { in_enum = 0 }
+        in_enum && /^ *C2D_[A-Z0-9_]+/ { s = $0; sub(/^ */, "", s); sub(/[ ,=].*/, "", s); print s }
+        /^enum \{/ { s = $0; while (match(s, /C2D_[A-Z0-9_]+ =/)) { print substr(s, RSTART, RLENGTH - 2); s = substr(s, RSTART + RLENGTH) } }' |
         sort -u
 }
 

@@ -1,7 +1,7 @@
 # tests/fuzz/fuzz.mk - dynamic hardening runs, included by the top-level
 # Makefile: the libFuzzer harness for every public entry point, the
 # cross-compiler determinism hash, and the demo under valgrind.
-# (Static analysis: tests/lint.mk.)
+# (Static analysis: tests/build/lint.mk.)
 #   make fuzz          fuzz for FUZZ_SECONDS (new inputs: $(B)/fuzz/corpus,
 #                      crashes: $(B)/fuzz/crash-*); add a crash to
 #                      tests/fuzz/corpus/regress-NAME once the bug is fixed
@@ -20,9 +20,15 @@ FUZZ_CLANG := clang-14
 FUZZ_DIR := $(B)/fuzz
 FUZZ_BIN := $(FUZZ_DIR)/fuzz_collide2d
 FUZZ_REPLAY := $(FUZZ_DIR)/replay
-FUZZ_SRC := tests/fuzz/fuzz_collide2d.c
+# The harness: the entry point and report, the decoder, the bounds, one
+# translation unit per variant (fuzz_template.h for double and float), and
+# the shared test helper (tests/harness/) for the batch arrays and checks.
+FUZZ_SRC := $(addprefix tests/fuzz/,fuzz_collide2d.c decode.c bounds.c fuzz_double.c fuzz_float.c fuzz_fixed.c) \
+  tests/harness/harness.c
+FUZZ_HDR := $(wildcard tests/fuzz/*.h) $(HARNESS_HDR)
 FUZZ_CORPUS := tests/fuzz/corpus
-FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off -Iinclude \
+FUZZ_INC := -Iinclude -Itests/harness -Itests/fuzz
+FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off $(FUZZ_INC) \
   -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
 .PHONY: fuzz-deps fuzz test-fuzz fuzz-seeds
@@ -30,17 +36,18 @@ FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off -Iinclude \
 fuzz-deps:
 	@sh scripts/deps.sh $(FUZZ_DEPS)
 
-$(FUZZ_BIN): $(FUZZ_SRC) $(LIB_SRC) $(LIB_DEPS) | fuzz-deps
+# c2d_put (the helper's output, for the replay's closing line) goes to stdout.
+$(FUZZ_BIN): $(FUZZ_SRC) $(FUZZ_HDR) $(LIB_SRC) $(LIB_DEPS) | fuzz-deps
 	@mkdir -p $(@D)
-	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) $(LIB_SRC) -lm
+	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) -lm
 
-$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) $(LIB_DEPS)
+$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(FUZZ_HDR) $(LIB_SRC) $(LIB_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -o $@ tests/fuzz/replay.c $(FUZZ_SRC) $(LIB_SRC) -lm
+	$(CC) $(ALL_CFLAGS) $(FUZZ_INC) -o $@ tests/fuzz/replay.c $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) -lm
 
-$(FUZZ_DIR)/make_seeds: tests/fuzz/make_seeds.c
+$(FUZZ_DIR)/make_seeds: tests/fuzz/make_seeds.c tests/fuzz/fuzz.h
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -std=c99 $(WARN) -o $@ $<
+	$(CC) $(CFLAGS) -std=c99 $(WARN) $(FUZZ_INC) -o $@ $<
 
 fuzz-seeds: $(FUZZ_DIR)/make_seeds
 	$(FUZZ_DIR)/make_seeds $(FUZZ_CORPUS)
@@ -65,7 +72,7 @@ TEST_TARGETS += test-fuzz
 .PHONY: test-determinism test-valgrind
 test-determinism: $(AMALGAMATION)
 	@sh scripts/deps.sh gcc clang
-	@sh tests/determinism.sh $(B)/determinism 100000 $(AMALGAMATION)
+	@sh tests/build/determinism.sh $(B)/determinism 100000 $(AMALGAMATION)
 
 TEST_TARGETS += test-determinism
 
@@ -79,7 +86,7 @@ test-valgrind:
 else
 test-valgrind: $(B)/billiards
 	@sh scripts/deps.sh $(VALGRIND_DEPS)
-	@sh tests/valgrind.sh $(B)/billiards $(B)/valgrind
+	@sh tests/build/valgrind.sh $(B)/billiards $(B)/valgrind
 endif
 
 TEST_TARGETS += test-valgrind

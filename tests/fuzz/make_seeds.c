@@ -7,8 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-enum { COLLIDE, NORMAL, TOI, COLLIDEF, NORMALF, TOIF, COLLIDEX, NORMALX, TOIX, BATCH, BATCHF };
-enum { MIXED = 0, TAME = 1 };
+#include "fuzz.h" /* the entry points and modes */
 
 static unsigned char buf[4096];
 static size_t len;
@@ -72,15 +71,15 @@ static void scene_pair(int entry, const char *name, double unit)
     };
     size_t i;
     for (i = 0; i < sizeof s / sizeof s[0]; i++) {
-        start(entry, TAME);
+        start(entry, C2D_FUZZ_TAME);
         tame_body(s[i].a[0], s[i].a[1], s[i].a[2], s[i].a[3], s[i].ma, unit);
         tame_body(s[i].b[0], s[i].b[1], s[i].b[2], s[i].b[3], s[i].mb, unit);
-        if (entry == TOI || entry == TOIF || entry == TOIX) {
+        if (entry == C2D_FUZZ_TOI || entry == C2D_FUZZ_TOIF || entry == C2D_FUZZ_TOIX) {
             i16((long)(0.5 * unit)); /* radius_sum */
         } else {
             i16((long)(s[i].nx * unit));
             i16((long)(s[i].ny * unit));
-            if (entry == COLLIDEX || entry == NORMALX) byte(0); /* tag */
+            if (entry == C2D_FUZZ_COLLIDEX || entry == C2D_FUZZ_COLLIDE_NORMALX) byte(0); /* tag */
             byte(s[i].e);
         }
         snprintf(full, sizeof full, "%s-%s", name, s[i].what);
@@ -102,7 +101,7 @@ static void scene_special(int entry, const char *name)
     int f;
     for (i = 0; i < sizeof s / sizeof s[0]; i++) {
         static const int base[10] = {0, 0, 1, 0, 1, 1, 0, 0, 0, 1};
-        start(entry, MIXED);
+        start(entry, C2D_FUZZ_MIXED);
         for (f = 0; f < 10; f++) {
             if (f == s[i].field) special(s[i].value);
             else small(base[f]);
@@ -113,7 +112,7 @@ static void scene_special(int entry, const char *name)
         snprintf(full, sizeof full, "%s-%s", name, s[i].what);
         save(full);
     }
-    start(entry, MIXED);
+    start(entry, C2D_FUZZ_MIXED);
     for (f = 0; f < 12; f++) small(f % 3 - 1);
     byte(0); /* restitution from a full value: */
     special(5); /* 2.0: invalid */
@@ -125,7 +124,7 @@ static void scene_batch(int entry, const char *name)
 {
     char full[256];
     int i, count = 19; /* two kernel blocks and a tail */
-    start(entry, TAME);
+    start(entry, C2D_FUZZ_TAME);
     byte(count);
     byte(230);
     for (i = 0; i < count; i++) {
@@ -135,7 +134,7 @@ static void scene_batch(int entry, const char *name)
     }
     snprintf(full, sizeof full, "%s-mixed19", name);
     save(full);
-    start(entry, TAME | 4); /* status == NULL */
+    start(entry, C2D_FUZZ_TAME | C2D_FUZZ_NULL_STATUS);
     byte(8);
     byte(255);
     for (i = 0; i < 8; i++) {
@@ -156,11 +155,11 @@ int main(int argc, char **argv)
         return 2;
     }
     dir = argv[1];
-    for (e = COLLIDE; e <= TOIX; e++) {
-        scene_pair(e, names[e], e >= COLLIDEX ? 4096 : 256);
-        if (e < COLLIDEX) scene_special(e, names[e]);
+    for (e = C2D_FUZZ_COLLIDE; e <= C2D_FUZZ_TOIX; e++) {
+        scene_pair(e, names[e], e >= C2D_FUZZ_COLLIDEX ? 4096 : 256);
+        if (e < C2D_FUZZ_COLLIDEX) scene_special(e, names[e]);
     }
-    scene_batch(BATCH, "collide_batch");
-    scene_batch(BATCHF, "collide_batchf");
+    scene_batch(C2D_FUZZ_BATCH, "collide_batch");
+    scene_batch(C2D_FUZZ_BATCHF, "collide_batchf");
     return 0;
 }

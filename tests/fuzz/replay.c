@@ -10,6 +10,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "harness.h"
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 static int run_file(const char *path)
@@ -29,18 +31,15 @@ static int run_file(const char *path)
 
 int main(int argc, char **argv)
 {
-    int i, pass = 0, failed = 0;
+    c2d_tally tally = {0, 0};
+    int i;
     for (i = 1; i < argc; i++) {
         int st = 0;
         pid_t pid = fork();
         if (pid == 0) _exit(run_file(argv[i]));
-        if (pid < 0 || waitpid(pid, &st, 0) != pid || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
+        if (!c2d_tally_add(&tally, pid > 0 && waitpid(pid, &st, 0) == pid && WIFEXITED(st) && WEXITSTATUS(st) == 0))
             fprintf(stderr, "fuzz-replay: FAILED %s\n", argv[i]);
-            failed++;
-        } else {
-            pass++;
-        }
     }
-    printf("fuzz-replay: %d passed, %d failed\n", pass, failed);
-    return failed != 0;
+    c2d_put_tally("fuzz-replay", &tally);
+    return c2d_tally_status(&tally);
 }

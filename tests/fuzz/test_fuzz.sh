@@ -4,8 +4,8 @@
 # Prints "fuzz: N passed, N failed"; exit status 1 on any failure.
 set -u
 fuzzer=$1 replay=$2 corpus=$3 work=$4 runs=$5
-pass=0
-fail=0
+. tests/harness/tally.sh
+c2d_tally_name=fuzz
 files=$(find "$corpus" -type f | sort)
 nfiles=$(echo "$files" | wc -l)
 
@@ -14,15 +14,14 @@ out=$("$replay" $files)
 echo "$out"
 p=$(echo "$out" | sed -n 's/^fuzz-replay: \([0-9]*\) passed, \([0-9]*\) failed$/\1/p')
 f=$(echo "$out" | sed -n 's/^fuzz-replay: \([0-9]*\) passed, \([0-9]*\) failed$/\2/p')
-pass=$((pass + ${p:-0}))
-fail=$((fail + ${f:-1}))
+c2d_pass=$((c2d_pass + ${p:-0}))
+c2d_fail=$((c2d_fail + ${f:-1}))
 
 if "$fuzzer" -runs=0 "$corpus" >"$work/corpus.log" 2>&1; then
-    pass=$((pass + 1))
+    c2d_passed
     echo "fuzz: libFuzzer replayed $nfiles corpus inputs"
 else
-    fail=$((fail + 1))
-    echo "fuzz: FAILED corpus replay under libFuzzer" >&2
+    c2d_failed "corpus replay under libFuzzer"
     tail -n 30 "$work/corpus.log" >&2
 fi
 
@@ -31,12 +30,10 @@ mkdir -p "$work/smoke"
 cp "$corpus"/* "$work/smoke/"
 if "$fuzzer" -seed=1 -runs="$runs" -max_total_time=60 -artifact_prefix="$work/" \
     "$work/smoke" >"$work/smoke.log" 2>&1; then
-    pass=$((pass + 1))
+    c2d_passed
     echo "fuzz: smoke run: $(sed -n 's/^Done \([0-9]*\) runs in \([0-9]*\) second.*/\1 executions in \2 s/p' "$work/smoke.log")"
 else
-    fail=$((fail + 1))
-    echo "fuzz: FAILED smoke run (crash input saved in $work/)" >&2
+    c2d_failed "smoke run (crash input saved in $work/)"
     tail -n 30 "$work/smoke.log" >&2
 fi
-echo "fuzz: $pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+c2d_summary

@@ -6,7 +6,7 @@
 #                    sqrt/sqrtf, on recursion or unbounded stack, on double
 #                    arithmetic or a sqrtf call on M4F, and if the Q16.16 path
 #                    does not link on M0 with -nostdlib -lgcc.
-#   make test-mcu    runs the shared test vectors (tests/vectors.c) on the
+#   make test-mcu    runs the shared test vectors (tests/vectors/vectors.c) on the
 #                    four cores (plus Q16.16 alone on M0) under QEMU, each
 #                    linked once against lib/ and once against the
 #                    amalgamated single file (make amalgamate).
@@ -67,7 +67,13 @@ MCU_m0q16_QEMU := qemu-system-arm -M microbit
 # Only the compiler's own headers (stddef.h, stdint.h, float.h): no C
 # library's.  Asked of the compiler when the recipe runs, after deps.
 MCU_COMPILE = $(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_$*_OPTS) $(MCU_CFLAGS) \
-  -nostdinc -isystem "$$($(MCU_$*_CC) $(MCU_$*_ARCH) -print-file-name=include)" -Iinclude -Itests -I$(MCU_DIR)
+  -nostdinc -isystem "$$($(MCU_$*_CC) $(MCU_$*_ARCH) -print-file-name=include)" -Iinclude \
+  -Itests/harness -Itests/vectors -I$(MCU_DIR)
+
+# The harness: main.c, the vector table and its checks (tests/vectors/), the
+# shared test helper (tests/harness/), as on the host.
+MCU_TEST_SRC := $(MCU_DIR)/main.c tests/vectors/vectors.c $(wildcard tests/vectors/check_*.c) tests/harness/harness.c
+MCU_TEST_HDR := $(MCU_DIR)/mcu.h $(wildcard tests/vectors/*.h tests/harness/*.h) $(LIB_HDR)
 
 MCU_ARM := m0 m4f m7
 MCU_ARM_LINK := -nostdlib -T $(MCU_DIR)/arm.ld -Wl,--gc-sections
@@ -94,13 +100,12 @@ $(MCU_B)/%/lib.o: $(LIB_SRC) $(LIB_DEPS) $(MCU_DIR)/mcu.mk | mcu-deps
 	for f in $(LIB_SRC); do $(MCU_COMPILE) -c $$f -o $(@D)/lib/$$(basename $$f .c).o || exit 1; done
 	$(MCU_$*_CC) $(MCU_$*_ARCH) -nostdlib -r -o $@ $(patsubst lib/%.c,$(@D)/lib/%.o,$(LIB_SRC))
 
-$(MCU_B)/%/harness.o: $(MCU_DIR)/harness.c $(MCU_DIR)/harness_variant.h $(MCU_DIR)/mcu.h tests/vectors.h $(LIB_HDR) | mcu-deps
-	@mkdir -p $(@D)
-	$(MCU_COMPILE) -DC2D_MCU_NAME='"$*"' -c $< -o $@
-
-$(MCU_B)/%/vectors.o: tests/vectors.c tests/vectors.h $(LIB_HDR) | mcu-deps
-	@mkdir -p $(@D)
-	$(MCU_COMPILE) -c $< -o $@
+# tests.o: the harness's translation units linked relocatably, as lib.o.
+$(MCU_B)/%/tests.o: $(MCU_TEST_SRC) $(MCU_TEST_HDR) $(MCU_DIR)/mcu.mk | mcu-deps
+	@mkdir -p $(@D)/tests
+	for f in $(MCU_TEST_SRC); do \
+	  $(MCU_COMPILE) -DC2D_MCU_NAME='"$*"' -c $$f -o $(@D)/tests/$$(basename $$f .c).o || exit 1; done
+	$(MCU_$*_CC) $(MCU_$*_ARCH) -nostdlib -r -o $@ $(patsubst %.c,$(@D)/tests/%.o,$(notdir $(MCU_TEST_SRC)))
 
 $(MCU_B)/%/startup_arm.o: $(MCU_DIR)/startup_arm.c $(MCU_DIR)/mcu.h | mcu-deps
 	@mkdir -p $(@D)
@@ -117,33 +122,33 @@ $(MCU_B)/rv32/platform_rv32.o: $(MCU_DIR)/platform_rv32.c $(MCU_DIR)/mcu.h | mcu
 
 # newlib's libm supplies sqrt/sqrtf where the core has no FPU for them.
 # harness.elf links lib/, harness_all.elf the amalgamation.
-$(MCU_ARM:%=$(MCU_B)/%/harness.elf): $(MCU_B)/%/harness.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/harness.o \
-  $(MCU_B)/%/vectors.o $(MCU_B)/%/lib.o $(MCU_DIR)/arm.ld
+$(MCU_ARM:%=$(MCU_B)/%/harness.elf): $(MCU_B)/%/harness.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/tests.o \
+  $(MCU_B)/%/lib.o $(MCU_DIR)/arm.ld
 	$(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) \
 	  -Wl,--start-group -lm -lc -lgcc -Wl,--end-group
 
-$(MCU_ARM:%=$(MCU_B)/%/harness_all.elf): $(MCU_B)/%/harness_all.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/harness.o \
-  $(MCU_B)/%/vectors.o $(MCU_B)/%/collide2d.o $(MCU_DIR)/arm.ld
+$(MCU_ARM:%=$(MCU_B)/%/harness_all.elf): $(MCU_B)/%/harness_all.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/tests.o \
+  $(MCU_B)/%/collide2d.o $(MCU_DIR)/arm.ld
 	$(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) \
 	  -Wl,--start-group -lm -lc -lgcc -Wl,--end-group
 
 # Q16.16 alone: libgcc is the only library.
-$(MCU_B)/m0q16/harness.elf: $(MCU_B)/m0q16/startup_arm.o $(MCU_B)/m0q16/harness.o $(MCU_B)/m0q16/vectors.o \
+$(MCU_B)/m0q16/harness.elf: $(MCU_B)/m0q16/startup_arm.o $(MCU_B)/m0q16/tests.o \
   $(MCU_B)/m0q16/lib.o $(MCU_DIR)/arm.ld
 	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
 
-$(MCU_B)/m0q16/harness_all.elf: $(MCU_B)/m0q16/startup_arm.o $(MCU_B)/m0q16/harness.o $(MCU_B)/m0q16/vectors.o \
+$(MCU_B)/m0q16/harness_all.elf: $(MCU_B)/m0q16/startup_arm.o $(MCU_B)/m0q16/tests.o \
   $(MCU_B)/m0q16/collide2d.o $(MCU_DIR)/arm.ld
 	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
 
 $(MCU_B)/m0q16/q16_link.elf: $(MCU_B)/m0q16/q16_caller.o $(MCU_B)/m0q16/collide2d.o
 	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) -nostdlib -Wl,--gc-sections -Wl,-e,c2d_q16_entry -o $@ $^ -lgcc
 
-$(MCU_B)/rv32/harness.elf: $(MCU_B)/rv32/platform_rv32.o $(MCU_B)/rv32/harness.o $(MCU_B)/rv32/vectors.o \
+$(MCU_B)/rv32/harness.elf: $(MCU_B)/rv32/platform_rv32.o $(MCU_B)/rv32/tests.o \
   $(MCU_B)/rv32/lib.o
 	$(MCU_rv32_CC) $(MCU_rv32_ARCH) $(MCU_RV32_LINK) -o $@ $^ -lm
 
-$(MCU_B)/rv32/harness_all.elf: $(MCU_B)/rv32/platform_rv32.o $(MCU_B)/rv32/harness.o $(MCU_B)/rv32/vectors.o \
+$(MCU_B)/rv32/harness_all.elf: $(MCU_B)/rv32/platform_rv32.o $(MCU_B)/rv32/tests.o \
   $(MCU_B)/rv32/collide2d.o
 	$(MCU_rv32_CC) $(MCU_rv32_ARCH) $(MCU_RV32_LINK) -o $@ $^ -lm
 

@@ -1,0 +1,41 @@
+# SPDX-License-Identifier: MIT
+# examples/examples.mk - the examples, built and run by `make test`
+# (included by the top-level Makefile):
+#   two_body        the README's example (c2d_collide, c2d_collide_normal)
+#   ball_in_box     a ball bouncing between four walls (c2d_collide_normal)
+#   hard_disk_gas   event-driven hard-disk gas: pressure against Henderson's
+#                   equation of state (c2d_time_of_impact, c2d_collide)
+#   firmware        float only (C2D_NO_DOUBLE) on a Cortex-M4F, under QEMU
+#                   with the MCU harness's start-up code (tests/mcu/mcu.mk)
+#   make examples        builds them
+#   make test-examples   builds and runs each; each ends with a pass line
+
+EXAMPLES := two_body ball_in_box hard_disk_gas
+EXAMPLE_BINS := $(EXAMPLES:%=$(B)/examples/%)
+EXAMPLE_FIRMWARE := $(MCU_B)/m4f/firmware.elf
+
+.PHONY: examples test-examples
+examples: $(EXAMPLE_BINS) $(EXAMPLE_FIRMWARE)
+
+$(B)/examples/%: examples/%.c $(STATIC) $(LIB_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Werror -o $@ $< $(STATIC) -lm
+
+# The firmware: MCU_COMPILE gives the target's flags (m4f: C2D_NO_DOUBLE);
+# -Wdouble-promotion catches any double arithmetic in the example itself.
+$(MCU_B)/%/firmware.o: examples/firmware.c $(LIB_HDR) $(MCU_DIR)/mcu.h | mcu-deps
+	@mkdir -p $(@D)
+	$(MCU_COMPILE) -Wdouble-promotion -c $< -o $@
+
+$(EXAMPLE_FIRMWARE): $(MCU_B)/m4f/startup_arm.o $(MCU_B)/m4f/firmware.o $(MCU_B)/m4f/lib.o $(MCU_DIR)/arm.ld
+	$(MCU_m4f_CC) $(MCU_m4f_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
+
+test-examples: examples
+	@fail=0; for x in $(EXAMPLE_BINS); do echo "== $$x"; $$x || fail=1; done; \
+	echo "== $(EXAMPLE_FIRMWARE) (Cortex-M4F, QEMU)"; \
+	if arm-none-eabi-nm $(EXAMPLE_FIRMWARE) | grep -q ' __aeabi_d'; then \
+	  echo "firmware: FAILED (double-precision helpers linked)"; fail=1; fi; \
+	sh $(MCU_DIR)/run.sh firmware $(EXAMPLE_FIRMWARE) $(MCU_m4f_QEMU) || fail=1; \
+	if [ $$fail -ne 0 ]; then echo "make test-examples: FAILED"; exit 1; fi; echo "make test-examples: passed"
+
+TEST_TARGETS += test-examples

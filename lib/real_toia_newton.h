@@ -1,0 +1,335 @@
+/* real_toia_newton.h - template: the time of impact under acceleration,
+ * part 4 of 7: extended arithmetic for the bounds, plain Newton in a local
+ * frame, the double-length polish and bisection on certified signs.  See
+ * real_toia.h. */
+#ifndef C2D_REAL_TOIA_NEWTON_H
+#define C2D_REAL_TOIA_NEWTON_H
+/* Extended-number arithmetic for the bounds                             */
+/* ===================================================================== */
+
+/* *r = a + b (one rounding). */
+static void c2d_toia_x_add(c2d_toia_x *r, const c2d_toia_x *a, const c2d_toia_x *b)
+{
+    int k;
+    if (a->m == 0) {
+        c2d_toia_x_copy(r, b);
+        return;
+    }
+    if (b->m == 0) {
+        c2d_toia_x_copy(r, a);
+        return;
+    }
+    k = a->e - b->e;
+    if (k > C2D_R_MANT + 3) {
+        c2d_toia_x_copy(r, a);
+    } else if (k < -(C2D_R_MANT + 3)) {
+        c2d_toia_x_copy(r, b);
+    } else if (k >= 0) {
+        c2d_toia_x_set(r, a->m + c2d_scale2(b->m, -k), a->e);
+    } else {
+        c2d_toia_x_set(r, c2d_scale2(a->m, k) + b->m, b->e);
+    }
+}
+
+/* sign(a - b) of two extended numbers, with a relative slack of
+ * 2^(4 - MANT) counted against the claim (returns 0 when closer). */
+static int c2d_toia_x_cmp(const c2d_toia_x *a, const c2d_toia_x *b)
+{
+    c2d_toia_x nb, d;
+    nb.m = -b->m;
+    nb.e = b->e;
+    c2d_toia_x_add(&d, a, &nb);
+    if (d.m == 0) return 0;
+    {
+        int top = a->m == 0 ? b->e : (b->m == 0 ? a->e : c2d_toia_imax(a->e, b->e));
+        if (d.e < top + 5 - C2D_R_MANT) return 0;
+    }
+    return c2d_toia_sgn(d.m);
+}
+
+/* The time difference a - b as an extended number. */
+static void c2d_toia_t_diff(c2d_toia_x *d, const c2d_toia_t *a, const c2d_toia_t *b)
+{
+    c2d_toia_t w;
+    c2d_toia_t_copy(&w, a);
+    c2d_toia_t_add(&w, -b->h, b->e);
+    c2d_toia_t_add(&w, -b->l, b->e);
+    c2d_toia_x_set(d, w.h + w.l, w.e);
+}
+
+/* ===================================================================== */
+/* Plain-arithmetic Newton in a local frame                              */
+/* ===================================================================== */
+
+/* The frame for times in [0, 2^kt): lengths in units of 2^kl chosen so
+ * every term is below 1/2 there.  Returns 0 when some nonzero input falls
+ * so far below the frame's scale (2^(EMIN/2 + MANT)) that squares lose it:
+ * the caller then searches with certified evaluations instead. */
+static int c2d_toia_frame_set(c2d_toia_frame *fr, c2d_toia_ctx *c, int kt)
+{
+    int kl = 0, have = 0, k, i, ok = 1;
+    const int lim = C2D_R_EMIN / 2 + C2D_R_MANT;
+    int ek[3];
+    ek[0] = c->ex[0];
+    ek[1] = c->ex[1] + kt;
+    ek[2] = c->ex[2] + 2 * kt - 1;
+    for (k = 0; k < 3; k++) {
+        if (c->nz[k] != 0 && (have == 0 || ek[k] > kl)) {
+            kl = ek[k];
+            have = 1;
+        }
+    }
+    kl += 3;
+    for (k = 0; k < 3; k++)
+        if (c->nz[k] != 0 && ek[k] - kl < lim) ok = 0;
+    for (i = 0; i < 2; i++) {
+        fr->p[i] = c->nz[0] != 0 ? c->m[0][i] * c2d_toia_p2(ek[0] - kl) : 0;
+        fr->v[i] = c->nz[1] != 0 ? c->m[1][i] * c2d_toia_p2(ek[1] - kl) : 0;
+        fr->a[i] = c->nz[2] != 0 ? c->m[2][i] * c2d_toia_p2(ek[2] + 1 - kl) : 0;
+        fr->ha[i] = fr->a[i] * (c2d_real)0.5;
+    }
+    if (c->r.e - kl > C2D_R_EMAX / 2 - 4) {
+        fr->r2 = c2d_pow2(C2D_R_EMAX - 8);
+    } else {
+        c2d_real r = c->r.m * c2d_toia_p2(c->r.e - kl);
+        if (c->r.e - kl < lim) ok = 0;
+        fr->r2 = r * r;
+    }
+    fr->kt = kt;
+    return ok;
+}
+
+/* phi = f (which 0) or g (1) at the local time x, its derivative (2g, or
+ * h) and *noise, a bound on phi's rounding error in this plain arithmetic
+ * (u times the magnitudes of the terms, constants rounded up): where
+ * |phi| <= *noise its sign is not known. */
+static c2d_real c2d_toia_e0(const c2d_toia_frame *fr, int which, c2d_real x, c2d_real *dphi, c2d_real *noise)
+{
+    const c2d_real u = c2d_pow2(-C2D_R_MANT - 1);
+    c2d_real d0 = fr->p[0] + (fr->v[0] + fr->ha[0] * x) * x;
+    c2d_real d1 = fr->p[1] + (fr->v[1] + fr->ha[1] * x) * x;
+    c2d_real e0 = fr->v[0] + fr->a[0] * x, e1 = fr->v[1] + fr->a[1] * x;
+    c2d_real ax = c2d_abs(x);
+    c2d_real n0 = 5 * u * (c2d_abs(fr->p[0]) + (c2d_abs(fr->v[0]) + c2d_abs(fr->ha[0]) * ax) * ax);
+    c2d_real n1 = 5 * u * (c2d_abs(fr->p[1]) + (c2d_abs(fr->v[1]) + c2d_abs(fr->ha[1]) * ax) * ax);
+    c2d_real m0 = 3 * u * (c2d_abs(fr->v[0]) + c2d_abs(fr->a[0]) * ax);
+    c2d_real m1 = 3 * u * (c2d_abs(fr->v[1]) + c2d_abs(fr->a[1]) * ax);
+    c2d_real g = d0 * e0 + d1 * e1;
+    if (which == C2D_TOIA_QF) {
+        c2d_real q = d0 * d0 + d1 * d1;
+        *dphi = 2 * g;
+        *noise = (2 * c2d_abs(d0) + n0) * n0 + (2 * c2d_abs(d1) + n1) * n1 + 4 * u * (q + fr->r2);
+        return q - fr->r2;
+    }
+    *dphi = (e0 * e0 + e1 * e1) + (d0 * fr->a[0] + d1 * fr->a[1]);
+    *noise = (c2d_abs(e0) + m0) * n0 + c2d_abs(d0) * m0 + (c2d_abs(e1) + m1) * n1 + c2d_abs(d1) * m1 +
+             3 * u * (c2d_abs(d0 * e0) + c2d_abs(d1 * e1));
+    return g;
+}
+
+/* Safeguarded Newton on [a, b] (local times) for a root of phi, which has
+ * sign sa at a and -sa at b (as the caller certified).  Newton steps while
+ * they stay in the bracket and shrink; else bisection (geometric when the
+ * bracket spans more than a factor 16).  A value inside its noise does not
+ * move the bracket.  Returns the estimate; *ok = 1 when the estimate is
+ * trustworthy: the iteration converged and phi's noise there spans at most
+ * 2^(8 - MANT) of it (so double-length Newton can finish from it), 0 when
+ * cancellation swamps the plain values (the caller then searches with
+ * certified double-length values); *width = the last step or the noise's
+ * width there, whichever is larger (local units). */
+static c2d_real c2d_toia_newton0(const c2d_toia_frame *fr, int which, c2d_real a, c2d_real b, int sa, int *ok,
+                                 c2d_real *width)
+{
+    const c2d_real tol = c2d_pow2(-C2D_R_MANT);
+    c2d_real x, dphi, prev = b - a, noise;
+    int it;
+    c2d_real fa = c2d_toia_e0(fr, which, a, &dphi, &noise), fb;
+    if (!((c2d_real)sa * fa > noise)) fa = 0;
+    fb = c2d_toia_e0(fr, which, b, &dphi, &noise);
+    if (!((c2d_real)sa * fb < -noise)) fb = 0;
+    *ok = 0;
+    *width = b - a;
+    /* secant start where the plain values agree with the bracket */
+    if (fa != 0 && fb != 0) {
+        x = a + (b - a) * (fa / (fa - fb));
+    } else {
+        x = a + (b - a) * (c2d_real)0.5;
+    }
+    if (!(x > a && x < b)) x = a + (b - a) * (c2d_real)0.5;
+    for (it = 0; it < C2D_TOIA_ITER; it++) {
+        c2d_real xn, d, phi = c2d_toia_e0(fr, which, x, &dphi, &noise);
+        if (c2d_abs(phi) <= noise) {
+            /* in the noise: fine if that region is narrow here */
+            *ok = dphi != 0 && noise <= c2d_abs(dphi) * c2d_pow2(8 - C2D_R_MANT) * x;
+            *width = dphi != 0 ? noise / c2d_abs(dphi) : b - a;
+            return x;
+        }
+        if ((c2d_real)sa * phi > 0) a = x;
+        else b = x;
+        xn = x - phi / dphi;
+        d = c2d_abs(xn - x);
+        if (!(xn > a && xn < b) || !(d <= prev * (c2d_real)0.5)) {
+            if (a * 16 < b) xn = a == 0 ? b * (c2d_real)0.0625 : C2D_R_SQRT(a) * C2D_R_SQRT(b);
+            else xn = a + (b - a) * (c2d_real)0.5;
+            d = c2d_abs(xn - x);
+        }
+        prev = d;
+        if (d <= tol * c2d_abs(xn) || b - a <= tol * b || !(xn > a && xn < b)) {
+            *ok = xn > a && xn < b;
+            *width = d + noise / (dphi != 0 ? c2d_abs(dphi) : 1);
+            return *ok != 0 ? xn : x;
+        }
+        x = xn;
+    }
+    return x;
+}
+
+/* Local time of t in the frame 2^kt. */
+static c2d_real c2d_toia_t_local(const c2d_toia_t *t, int kt)
+{
+    if (t->h == 0) return 0;
+    return c2d_scale2(t->h + t->l, t->e - kt);
+}
+
+/* ===================================================================== */
+/* Newton in double length (polish), bisection on certified signs        */
+/* ===================================================================== */
+
+/* Newton steps on phi = f (which 0: t -= f / 2g), g (1: t -= g / h) or h
+ * (2: t -= h / hp) with
+ * tier-2 values (tier 3 when tier 2's bound is a sizeable fraction of what
+ * a working-precision rounding of |d| costs), kept inside [lo, hi].
+ * Returns 1 when the last step fell below 2^-bits t or the value
+ * reached its noise level (the root is then within the evaluation's
+ * resolution), 0 when it did not converge. */
+C2D_COLD int c2d_toia_polish(c2d_toia_ctx *c, c2d_toia_t *t, int which, const c2d_toia_t *lo, const c2d_toia_t *hi,
+                           int bits)
+{
+    c2d_toia_ev ev;
+    int it, tier = 2;
+    for (it = 0; it < C2D_TOIA_POLISH; it++) {
+        const c2d_toia_v *q, *dq;
+        c2d_real num;
+        int de;
+        if (tier == 2) c2d_toia_e2(c, t, &ev);
+        else c2d_toia_e3(c, t, &ev);
+        q = &ev.q[which];
+        dq = &ev.q[which + 1];
+        if (tier == 2 && (which == C2D_TOIA_QH ? q->r > c2d_pow2(-8) * ev.hmag
+                                                : q->r > c2d_pow2(-C2D_R_MANT - 5) *
+                                                             (which == C2D_TOIA_QF ? ev.fmag : ev.gmag))) {
+            /* heavy cancellation: tier 2's error is not far below one
+             * rounding of the scale (for h, computed in plain arithmetic
+             * from tier 2's d and d': when it lost even that); continue
+             * with exact d, d' */
+            tier = 3;
+            c2d_toia_e3(c, t, &ev);
+        }
+        if (q->v == 0 || c2d_abs(q->v) <= q->r) return 1;
+        if (dq->v == 0) return 0;
+        num = -q->v / (which == C2D_TOIA_QF ? 2 * dq->v : dq->v);
+        de = q->e - dq->e;
+        {
+            c2d_toia_x st, nx;
+            c2d_toia_x_set(&st, num, de);
+            c2d_toia_t_add(t, num, de);
+            if (c2d_toia_t_cmp(t, lo) < 0) c2d_toia_t_copy(t, lo);
+            if (c2d_toia_t_cmp(t, hi) > 0) c2d_toia_t_copy(t, hi);
+            if (st.m == 0 || st.e < t->e - bits) return 1;
+            /* Newton's error after this step is at most (max|phi''| /
+             * 2 min|phi'|) step^2; with phi''/phi' estimated here (x 4 for
+             * their variation over the step) it already lies below 2^-bits
+             * t when the step was small: no second evaluation needed */
+            if (which != C2D_TOIA_QH && st.e < t->e - C2D_R_MANT / 2 && ev.q[which + 2].v != 0) {
+                /* |phi''/phi'| = |h / g| for f (f'' = 2h, f' = 2g), |hp / h| for g */
+                c2d_toia_x_set(&nx, 4 * c2d_abs(ev.q[which + 2].v / dq->v) * st.m * st.m,
+                               ev.q[which + 2].e - dq->e + 2 * st.e);
+                if (nx.m == 0 || nx.e < t->e - bits) return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+/* The root of phi (f: which 0, g: 1) in [lo, hi], where phi has sign sa at
+ * lo and -sa at hi, with certified double-length values (tier 2, tier 3
+ * where its sign is uncertain) in extended time: Newton steps from the
+ * certified values while they stay in the bracket and shrink, bisection
+ * otherwise; stops at the root's resolution (a sign tier 3 cannot certify,
+ * or a bracket or step below 2^-2MANT of t).  For the cases the plain
+ * frame cannot represent (heavy cancellation, extreme magnitudes). */
+C2D_COLD void c2d_toia_rootx(c2d_toia_ctx *c, c2d_toia_t *lo, c2d_toia_t *hi, int which, int sa, c2d_toia_t *out)
+{
+    c2d_toia_ev ev;
+    c2d_toia_t t, tn;
+    c2d_toia_x w, prev;
+    int it, done = 0;
+    prev.m = 0;
+    prev.e = 0;
+    c2d_toia_t_mid(&t, lo, hi);
+    for (it = 0; it < C2D_TOIA_ITER && done == 0; it++) {
+        const c2d_toia_v *q, *dq;
+        int s, newton = 0;
+        c2d_toia_probe(c, &t, 1 << which, 2, &ev);
+        s = ev.s[which];
+        if (s == 0) {
+            done = 1; /* at the root, to the evaluation's resolution */
+        } else {
+            if (s == sa) c2d_toia_t_copy(lo, &t);
+            else c2d_toia_t_copy(hi, &t);
+            c2d_toia_t_diff(&w, hi, lo);
+            if (w.m == 0 || w.e < hi->e - 2 * C2D_R_MANT) done = 1;
+        }
+        q = &ev.q[which];
+        dq = &ev.q[which + 1];
+        if (done == 0 && dq->v != 0) {
+            c2d_toia_x st;
+            c2d_toia_x_set(&st, -q->v / (which == C2D_TOIA_QF ? 2 * dq->v : dq->v), q->e - dq->e);
+            c2d_toia_t_copy(&tn, &t);
+            c2d_toia_t_add(&tn, st.m, st.e);
+            if (c2d_toia_t_cmp(&tn, lo) > 0 && c2d_toia_t_cmp(&tn, hi) < 0 &&
+                (prev.m == 0 || st.e < prev.e || (st.e == prev.e && c2d_abs(st.m) < c2d_abs(prev.m)))) {
+                newton = 1;
+                c2d_toia_x_copy(&prev, &st);
+                c2d_toia_t_copy(&t, &tn);
+                if (st.e < t.e - 2 * C2D_R_MANT) done = 1;
+            }
+        }
+        if (done == 0 && newton == 0) {
+            prev.m = 0;
+            c2d_toia_t_mid(&t, lo, hi);
+        }
+    }
+    c2d_toia_t_copy(out, &t);
+}
+
+/* The root of phi (f: which 0, g: 1) in [lo, hi], where phi has sign sa at
+ * lo and -sa at hi (certified, or a tie at hi): plain Newton in a local
+ * frame, then double-length polish; the certified search (rootx) when the
+ * frame cannot represent the problem or its values drown in cancellation
+ * or the polish does not converge. */
+C2D_COLD void c2d_toia_root(c2d_toia_ctx *c, const c2d_toia_t *lo, const c2d_toia_t *hi, int which, int sa,
+                          c2d_toia_t *out)
+{
+    c2d_toia_frame fr;
+    c2d_toia_t a, b;
+    int kt = hi->e + 1, ok = 0;
+    c2d_real width;
+    c2d_toia_t_copy(&a, lo);
+    c2d_toia_t_copy(&b, hi);
+    if (c2d_toia_frame_set(&fr, c, kt) != 0) {
+        c2d_real x =
+            c2d_toia_newton0(&fr, which, c2d_toia_t_local(lo, kt), c2d_toia_t_local(hi, kt), sa, &ok, &width);
+        if (ok != 0) {
+            c2d_toia_t_set(out, x, 0, kt);
+            if (c2d_toia_t_cmp(out, lo) < 0) c2d_toia_t_copy(out, lo);
+            if (c2d_toia_t_cmp(out, hi) > 0) c2d_toia_t_copy(out, hi);
+            if (c2d_toia_polish(c, out, which, lo, hi, C2D_R_MANT + 3) != 0) return;
+        }
+    }
+    c2d_toia_rootx(c, &a, &b, which, sa, out);
+    (void)c2d_toia_polish(c, out, which, &a, &b, C2D_R_MANT + 3);
+}
+/* ===================================================================== */
+
+#endif /* C2D_REAL_TOIA_NEWTON_H */

@@ -1,0 +1,448 @@
+/* real_toia_num.h - template: the time of impact under acceleration, part 1
+ * of 7: its types, extended numbers and times (m 2^e, times as (h + l) 2^e)
+ * and exact sums of products in a sliding exponent window.  The method and
+ * the order of the parts: real_toia.h.  Needs real_bits.h and real_exact.h
+ * first. */
+#ifndef C2D_REAL_TOIA_NUM_H
+#define C2D_REAL_TOIA_NUM_H
+/* ===================================================================== */
+/* Types and internal constants                                          */
+/* ===================================================================== */
+
+
+enum { C2D_TOIA_ATOMS = 32 }; /* atoms of an exact sum, at most (phase 0: h(0) = |v|^2 + d0.a) */
+enum { C2D_TOIA_DATOMS = 14 }; /* atoms of d(t) at a working-precision time */
+/* Exact-sum window: atoms scaled by at least 2^-C2D_TOIA_WIN of the largest
+ * stay normal, so their TwoSum chain is exact; the window's sum is accepted
+ * when it exceeds the (at most 2^5) atoms below the window by 2^DOM, far
+ * below u^2. */
+enum { C2D_TOIA_WIN = -C2D_R_EMIN - 4, C2D_TOIA_DOM = 2 * C2D_R_MANT + 12 };
+/* Newton / bisection iteration caps (never reached in tests; a safety net). */
+enum { C2D_TOIA_ITER = 200, C2D_TOIA_POLISH = 16 };
+
+/* Which quantity: f = |d|^2 - R^2, g = d.d' = f'/2, h = g' = |d'|^2 + d.a,
+ * hp = h' = 3 d'.a. */
+enum { C2D_TOIA_QF = 0, C2D_TOIA_QG = 1, C2D_TOIA_QH = 2, C2D_TOIA_QHP = 3 };
+enum { C2D_TOIA_MF = 1, C2D_TOIA_MG = 2, C2D_TOIA_MH = 4, C2D_TOIA_MHP = 8 };
+
+/* Internal verdict of the scan; never mixed with c2d_status. */
+typedef enum c2d_toia_verdict {
+    C2D_TOIA_NONE, /* no contact in [0, horizon] */
+    C2D_TOIA_HIT   /* contact at the time returned */
+} c2d_toia_verdict;
+
+/* Extended number m 2^e, |m| in [1, 2) or m == 0. */
+typedef struct c2d_toia_x {
+    c2d_real m;
+    int e;
+} c2d_toia_x;
+
+/* A time (h + l) 2^e: h in [1, 2) (or 0), |l| <= ulp(h): double length,
+ * unbounded exponent. */
+typedef struct c2d_toia_t {
+    c2d_real h, l;
+    int e;
+} c2d_toia_t;
+
+/* A certified value: the exact quantity lies in [v - r, v + r] 2^e. */
+typedef struct c2d_toia_v {
+    c2d_real v, r;
+    int e;
+} c2d_toia_v;
+
+/* One evaluation at a time: f, g, h, hp with bounds, the signs certified
+ * so far (+1, -1, or 0 = not certified) and the tier that produced q. */
+typedef struct c2d_toia_ev {
+    c2d_toia_v q[4];
+    c2d_real fmag, gmag, hmag; /* |d|^2 + R^2, sum |d_i d'_i|, |d'|^2 + sum |d_i a_i| (their units) */
+    int s[4];
+    int tier;
+} c2d_toia_ev;
+
+/* The problem: d0 = pb - pa, v = vb - va, a = ab - aa (k = 0, 1, 2) as
+ * vectors of their exact differences' hi (m) and lo (ml) parts on one scale
+ * 2^ex[k] (largest hi component in [1, 2); a part far below may round or
+ * vanish there, which the error floors cover), nz[k] = the vector is not
+ * zero, and R.  The exact paths take the parts as extended numbers straight
+ * from the inputs kept here (c2d_toia_part). */
+typedef struct c2d_toia_ctx {
+    c2d_real m[3][2], ml[3][2];
+    int ex[3], nz[3];
+    c2d_toia_x r;
+    const c2d_real_body *ba, *bb;
+    const c2d_real_vec *aa, *ab;
+} c2d_toia_ctx;
+
+/* A local frame for plain-arithmetic Newton iterations on an interval
+ * [0, 2^kt): lengths in units of 2^kl, times of 2^kt (rounded copies). */
+typedef struct c2d_toia_frame {
+    c2d_real p[2], v[2], a[2], ha[2], r2;
+    int kt;
+} c2d_toia_frame;
+
+/* f and g at a time, certified (as in c2d_toia_ev): what a bracket keeps. */
+typedef struct c2d_toia_fg {
+    c2d_toia_v f, g;
+    int sf, sg;
+} c2d_toia_fg;
+
+/* A g-root bracket: g changes sign on [lo, hi]; f and g at both ends. */
+typedef struct c2d_toia_br {
+    c2d_toia_t lo, hi;
+    c2d_toia_fg elo, ehi;
+} c2d_toia_br;
+
+/* ===================================================================== */
+/* Extended numbers and times                                            */
+/* ===================================================================== */
+
+static void c2d_toia_x_set(c2d_toia_x *x, c2d_real m, int e)
+{
+    if (m == 0) {
+        x->m = 0;
+        x->e = 0;
+    } else {
+        int k = c2d_ilogb(m);
+        x->m = c2d_scale2(m, -k);
+        x->e = e + k;
+    }
+}
+
+static void c2d_toia_x_copy(c2d_toia_x *d, const c2d_toia_x *s)
+{
+    d->m = s->m;
+    d->e = s->e;
+}
+
+/* 2^k clamped into the normal range.  Below it the result is 2^EMIN,
+ * larger than the true factor by at most that: callers' error floors
+ * (a few 2^EMIN in scaled units) cover it. */
+static c2d_real c2d_toia_p2(int k)
+{
+    if (k < C2D_R_EMIN) return c2d_pow2(C2D_R_EMIN);
+    if (k > C2D_R_EMAX) return c2d_pow2(C2D_R_EMAX);
+    return c2d_pow2(k);
+}
+
+static int c2d_toia_sgn(c2d_real x) { return (x > 0) - (x < 0); }
+
+static int c2d_toia_imax(int a, int b) { return a > b ? a : b; }
+
+/* floor(a / b) for b > 0 (C's / truncates toward zero). */
+static int c2d_toia_fdiv(int a, int b)
+{
+    int q = a / b;
+    return (q * b > a) ? q - 1 : q;
+}
+
+/* (h + l) 2^e, renormalised. */
+static void c2d_toia_t_set(c2d_toia_t *t, c2d_real h, c2d_real l, int e)
+{
+    c2d_real err, s = c2d_two_sum(h, l, &err);
+    if (s == 0) {
+        t->h = 0;
+        t->l = 0;
+        t->e = 0;
+    } else {
+        int k = c2d_ilogb(s);
+        t->h = c2d_scale2(s, -k);
+        t->l = c2d_scale2(err, -k);
+        t->e = e + k;
+    }
+}
+
+static void c2d_toia_t_copy(c2d_toia_t *d, const c2d_toia_t *s)
+{
+    d->h = s->h;
+    d->l = s->l;
+    d->e = s->e;
+}
+
+/* sign(a - b). */
+static int c2d_toia_t_cmp(const c2d_toia_t *a, const c2d_toia_t *b)
+{
+    c2d_real ah, al, bh, bl, s, err;
+    int k;
+    if (a->h == 0) return -c2d_toia_sgn(b->h);
+    if (b->h == 0) return c2d_toia_sgn(a->h);
+    k = a->e - b->e;
+    if (k > 3) return c2d_toia_sgn(a->h);
+    if (k < -3) return -c2d_toia_sgn(b->h);
+    ah = a->h;
+    al = a->l;
+    bh = b->h;
+    bl = b->l;
+    if (k > 0) { /* |k| <= 3: scaling by 2^-k is exact unless subnormal */
+        bh = c2d_scale2(bh, -k);
+        bl = c2d_scale2(bl, -k);
+    } else if (k < 0) {
+        ah = c2d_scale2(ah, k);
+        al = c2d_scale2(al, k);
+    }
+    s = c2d_two_sum(ah, -bh, &err);
+    err += al - bl;
+    return c2d_toia_sgn(s + err);
+}
+
+/* t += dm 2^de, in double length. */
+static void c2d_toia_t_add(c2d_toia_t *t, c2d_real dm, int de)
+{
+    c2d_toia_x d;
+    c2d_real s, err, dv;
+    int k;
+    c2d_toia_x_set(&d, dm, de);
+    if (d.m == 0) return;
+    if (t->h == 0) {
+        c2d_toia_t_set(t, d.m, 0, d.e);
+        return;
+    }
+    k = d.e - t->e;
+    if (k < -(2 * C2D_R_MANT + 8)) return; /* below t's low part */
+    if (k > 2 * C2D_R_MANT + 8) {          /* t below d's low part */
+        c2d_toia_t_set(t, d.m, 0, d.e);
+        return;
+    }
+    dv = c2d_scale2(d.m, k);
+    s = c2d_two_sum(t->h, dv, &err);
+    c2d_toia_t_set(t, s, err + t->l, t->e);
+}
+
+/* The time rounded to the working format, or C2D_R_MAX * 2 (Inf) beyond it. */
+static c2d_real c2d_toia_t_value(const c2d_toia_t *t)
+{
+    if (t->h == 0) return 0;
+    if (t->e > C2D_R_EMAX) return C2D_R_MAX * 2;
+    return c2d_scale2(t->h + t->l, t->e);
+}
+
+/* Double-length arithmetic on (h + l) 2^e (the classical double-double
+ * algorithms with an exponent; each within a few u^2). */
+static void c2d_toia_t_neg(c2d_toia_t *t)
+{
+    t->h = -t->h;
+    t->l = -t->l;
+}
+
+static void c2d_toia_t_sum(c2d_toia_t *r, const c2d_toia_t *a, const c2d_toia_t *b)
+{
+    c2d_real ah = a->h, al = a->l, bh = b->h, bl = b->l, s, e1, t, e2;
+    int k = a->e - b->e, e = a->e;
+    if (b->h == 0) {
+        c2d_toia_t_copy(r, a);
+        return;
+    }
+    if (a->h == 0 || k < -(2 * C2D_R_MANT + 8)) {
+        c2d_toia_t_copy(r, b);
+        return;
+    }
+    if (k > 2 * C2D_R_MANT + 8) {
+        c2d_toia_t_copy(r, a);
+        return;
+    }
+    if (k >= 0) {
+        bh = c2d_scale2(bh, -k);
+        bl = c2d_scale2(bl, -k);
+    } else {
+        ah = c2d_scale2(ah, k);
+        al = c2d_scale2(al, k);
+        e = b->e;
+    }
+    s = c2d_two_sum(ah, bh, &e1);
+    t = c2d_two_sum(al, bl, &e2);
+    e1 += t;
+    s = c2d_two_sum(s, e1, &e1);
+    c2d_toia_t_set(r, s, e1 + e2, e);
+}
+
+static void c2d_toia_t_mul(c2d_toia_t *r, const c2d_toia_t *a, const c2d_toia_t *b)
+{
+    c2d_real err, p = c2d_two_prod(a->h, b->h, &err);
+    err += a->h * b->l + a->l * b->h;
+    c2d_toia_t_set(r, p, err, a->e + b->e);
+}
+
+/* a / b, b != 0 */
+static void c2d_toia_t_div(c2d_toia_t *r, const c2d_toia_t *a, const c2d_toia_t *b)
+{
+    c2d_real q1 = a->h / b->h, err, p = c2d_two_prod(q1, b->h, &err);
+    c2d_real rem = ((a->h - p) - err + a->l) - q1 * b->l;
+    c2d_toia_t_set(r, q1, rem / b->h, a->e - b->e);
+}
+
+/* sqrt(a), a >= 0 */
+static void c2d_toia_t_sqrt(c2d_toia_t *r, const c2d_toia_t *a)
+{
+    c2d_real h = a->h, l = a->l, s, err, p;
+    int odd = a->e & 1;
+    if (!(h > 0)) {
+        c2d_toia_t_set(r, 0, 0, 0);
+        return;
+    }
+    if (odd != 0) {
+        h *= 2;
+        l *= 2;
+    }
+    s = C2D_R_SQRT(h);
+    p = c2d_two_prod(s, s, &err);
+    c2d_toia_t_set(r, s, ((h - p) - err + l) / (2 * s), (a->e - odd) / 2);
+}
+
+/* Geometric or arithmetic midpoint of a < b (both >= 0), for bisection:
+ * arithmetic when b < 4a, else 2^((ea + eb) / 2), with a == 0 taken as
+ * the smallest positive time 2^(eb - 3 MANT) below which nothing is
+ * resolved (bisection of [0, b] then reaches every scale in a few dozen
+ * steps; the Newton phase does the rest). */
+static void c2d_toia_t_mid(c2d_toia_t *m, const c2d_toia_t *a, const c2d_toia_t *b)
+{
+    int ea = a->h == 0 ? b->e - 4 * C2D_R_MANT : a->e;
+    if (a->h != 0 && b->e - a->e <= 1) {
+        c2d_real h, l;
+        int k = b->e - a->e; /* 0 or 1 */
+        h = c2d_two_sum(c2d_scale2(a->h, -k), b->h, &l);
+        l += c2d_scale2(a->l, -k) + b->l;
+        c2d_toia_t_set(m, h, l, b->e - 1);
+        return;
+    }
+    c2d_toia_t_set(m, (c2d_real)1.5, 0, c2d_toia_fdiv(ea + b->e, 2));
+}
+/* ===================================================================== */
+/* Exact sums of products (Shewchuk expansions in a sliding window)      */
+/* ===================================================================== */
+
+/* Add b to the nonoverlapping expansion w[0..n) (increasing magnitude),
+ * exactly (GROW-EXPANSION with zero elimination).  New length <= n + 1. */
+static int c2d_toia_grow(c2d_real *w, int n, c2d_real b)
+{
+    c2d_real q = b, h;
+    int i, k = 0;
+    for (i = 0; i < n; i++) {
+        q = c2d_two_sum(q, w[i], &h);
+        if (h != 0) {
+            w[k] = h;
+            k++;
+        }
+    }
+    if (q != 0) {
+        w[k] = q;
+        k++;
+    }
+    return k;
+}
+
+/* Append sgn * x * y * 2^shift as (at most) two atoms, exactly: the
+ * significands' product is hi + lo by TwoProduct (both in [1, 4) or
+ * a multiple of 2^-2MANT: neither over- nor underflows). */
+static int c2d_toia_push(c2d_real *m, int *e, int n, const c2d_toia_x *x, const c2d_toia_x *y, int shift, int sgn)
+{
+    c2d_real lo, hi;
+    c2d_toia_x z;
+    if (x->m == 0 || y->m == 0) return n;
+    hi = c2d_two_prod(x->m, y->m, &lo);
+    if (sgn < 0) {
+        hi = -hi;
+        lo = -lo;
+    }
+    c2d_toia_x_set(&z, hi, x->e + y->e + shift);
+    m[n] = z.m;
+    e[n] = z.e;
+    n++;
+    if (lo != 0) {
+        c2d_toia_x_set(&z, lo, x->e + y->e + shift);
+        m[n] = z.m;
+        e[n] = z.e;
+        n++;
+    }
+    return n;
+}
+
+/* Append sgn * x as one atom. */
+static int c2d_toia_push1(c2d_real *m, int *e, int n, const c2d_toia_x *x, int sgn)
+{
+    if (x->m == 0) return n;
+    m[n] = sgn < 0 ? -x->m : x->m;
+    e[n] = x->e;
+    return n + 1;
+}
+
+/* The exact sum of the n atoms m[i] 2^e[i] (normalised: |m| in [1, 2)),
+ * rounded to double length: returns E with (*hi + *lo) 2^E equal to the sum
+ * within a relative (2 *k + 2) u^2, u = 2^-(MANT+1) (*k = the number of
+ * exact components rounded), *hi in [1, 2); *hi == 0 exactly when the sum
+ * is 0, and sign(*hi) is the exact sign.  Atoms within C2D_TOIA_WIN binades
+ * of the largest are scaled into one window (exactly: they stay normal) and
+ * summed exactly; if that sum exceeds 2^(DOM - WIN) of the window's top, the
+ * atoms below the window (each < 2^-WIN of the top, fewer than 2^5) change
+ * it by less than 2^(5 - DOM) relative, far below u^2, and it is returned;
+ * otherwise its components rejoin the rest and the next window starts at
+ * the new largest atom (at least WIN - DOM binades lower, so this ends).
+ * Works in place: the window's atoms are moved to the front and the
+ * expansion grows over them (after reading atom j it has at most j + 1
+ * components), the others behind.  The atoms are overwritten. */
+C2D_COLD int c2d_toia_xsum(c2d_real *m, int *e, int n, c2d_real *hi, c2d_real *lo, int *k_out)
+{
+    for (;;) {
+        int i, j, k = 0, nw = 0, top = 0, found = 0;
+        c2d_real h = 0, l = 0;
+        for (i = 0; i < n; i++) {
+            if (m[i] != 0 && (found == 0 || e[i] > top)) {
+                top = e[i];
+                found = 1;
+            }
+        }
+        if (found == 0) {
+            *hi = 0;
+            *lo = 0;
+            *k_out = 0;
+            return 0;
+        }
+        /* partition: window atoms (scaled) to the front, the rest behind */
+        for (i = 0; i < n; i++) {
+            if (m[i] != 0 && e[i] >= top - C2D_TOIA_WIN) {
+                c2d_real x = m[i];
+                int ei = e[i];
+                m[i] = m[nw];
+                e[i] = e[nw];
+                m[nw] = c2d_scale2(x, ei - top);
+                e[nw] = 0;
+                nw++;
+            }
+        }
+        for (j = 0; j < nw; j++) k = c2d_toia_grow(m, k, m[j]);
+        /* Round the exact components (increasing, nonoverlapping) to
+         * double length: all but the largest sum to less than an ulp of the
+         * largest, so adding them in plain arithmetic errs by at most
+         * 2 (k - 1) u^2 of the total, and one TwoSum renormalises. */
+        if (k > 0) {
+            for (i = 0; i + 1 < k; i++) l += m[i];
+            h = c2d_two_sum(m[k - 1], l, &l);
+        }
+        if (nw == n || (h != 0 && c2d_ilogb(h) >= C2D_TOIA_DOM - C2D_TOIA_WIN)) {
+            if (h == 0) {
+                *hi = 0;
+                *lo = 0;
+                *k_out = 0;
+                return 0;
+            }
+            i = c2d_ilogb(h); /* normalise: *hi in [1, 2) */
+            *hi = c2d_scale2(h, -i);
+            *lo = c2d_scale2(l, -i);
+            *k_out = k;
+            return top + i;
+        }
+        /* the window's components become atoms again, the rest follow */
+        for (i = 0; i < k; i++) {
+            c2d_toia_x z;
+            c2d_toia_x_set(&z, m[i], top);
+            m[i] = z.m;
+            e[i] = z.e;
+        }
+        for (i = nw; i < n; i++) {
+            m[k] = m[i];
+            e[k] = e[i];
+            k++;
+        }
+        n = k;
+    }
+}
+
+#endif /* C2D_REAL_TOIA_NUM_H */

@@ -1,0 +1,135 @@
+/* real_toia_problem.h - template: the time of impact under acceleration,
+ * part 2 of 7: the problem (exact differences d0, v, a, the radius) and the
+ * exact signs at t = 0, degree-2 polynomials in the inputs.  See real_toia.h. */
+#ifndef C2D_REAL_TOIA_PROBLEM_H
+#define C2D_REAL_TOIA_PROBLEM_H
+/* ===================================================================== */
+/* The problem                                                           */
+/* ===================================================================== */
+
+/* x1 - x0 exactly as (hi + lo) (halved first when it could overflow: exact
+ * for the large operand; what a subnormal small one loses is far below). */
+static void c2d_toia_diff(c2d_real x1, c2d_real x0, c2d_toia_x *hi, c2d_toia_x *lo)
+{
+    int e = 0;
+    c2d_real h, l;
+    if (c2d_abs(x1) >= c2d_pow2(C2D_R_EMAX - 1) || c2d_abs(x0) >= c2d_pow2(C2D_R_EMAX - 1)) {
+        x1 *= (c2d_real)0.5;
+        x0 *= (c2d_real)0.5;
+        e = 1;
+    }
+    h = c2d_two_sum(x1, -x0, &l);
+    c2d_toia_x_set(hi, h, e);
+    c2d_toia_x_set(lo, l, e);
+}
+
+/* The exact part (hi: j = 0, lo: j = 1) of input difference k (0
+ * position, 1 velocity, 2 acceleration) along axis i, as an extended number. */
+C2D_COLD void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_toia_x *x)
+{
+    c2d_toia_x hi, lo;
+    if (k == 0) {
+        c2d_toia_diff(i == 0 ? c->bb->pos.x : c->bb->pos.y, i == 0 ? c->ba->pos.x : c->ba->pos.y, &hi, &lo);
+    } else if (k == 1) {
+        c2d_toia_diff(i == 0 ? c->bb->vel.x : c->bb->vel.y, i == 0 ? c->ba->vel.x : c->ba->vel.y, &hi, &lo);
+    } else {
+        c2d_toia_diff(i == 0 ? c->ab->x : c->ab->y, i == 0 ? c->aa->x : c->aa->y, &hi, &lo);
+    }
+    c2d_toia_x_copy(x, j == 0 ? &hi : &lo);
+}
+
+/* One vector's exact difference x1 - x0 (per axis hi + lo, halved first
+ * when it could overflow) as hi/lo vectors on a common scale 2^ex. */
+static void c2d_toia_load_vec(c2d_toia_ctx *c, int k, c2d_real x1, c2d_real x0, c2d_real y1, c2d_real y0)
+{
+    const c2d_real big = c2d_pow2(C2D_R_EMAX - 1);
+    c2d_real h[2], l[2];
+    int sh = 0, i, top = 0, nz = 0;
+    if (c2d_abs(x1) >= big || c2d_abs(x0) >= big || c2d_abs(y1) >= big || c2d_abs(y0) >= big) {
+        x1 *= (c2d_real)0.5;
+        x0 *= (c2d_real)0.5;
+        y1 *= (c2d_real)0.5;
+        y0 *= (c2d_real)0.5;
+        sh = 1; /* (exact for the large operands; a subnormal small one's last bit is far below) */
+    }
+    h[0] = c2d_two_sum(x1, -x0, &l[0]);
+    h[1] = c2d_two_sum(y1, -y0, &l[1]);
+    for (i = 0; i < 2; i++) {
+        if (h[i] != 0) {
+            int e = c2d_ilogb(h[i]);
+            if (nz == 0 || e > top) top = e;
+            nz = 1;
+        }
+    }
+    c->ex[k] = top + sh;
+    c->nz[k] = nz;
+    if (top >= -C2D_R_EMAX && top <= -C2D_R_EMIN) { /* 2^-top is a normal number: one exact multiply */
+        c2d_real s = c2d_pow2(-top);
+        for (i = 0; i < 2; i++) {
+            c->m[k][i] = h[i] * s;
+            c->ml[k][i] = l[i] * s;
+        }
+    } else {
+        for (i = 0; i < 2; i++) {
+            c->m[k][i] = c2d_scale2(h[i], -top);
+            c->ml[k][i] = c2d_scale2(l[i], -top);
+        }
+    }
+}
+
+static void c2d_toia_load(c2d_toia_ctx *c, const c2d_real_body *a, const c2d_real_vec *aa, const c2d_real_body *b,
+                          const c2d_real_vec *ab, c2d_real radius_sum)
+{
+    c->ba = a;
+    c->bb = b;
+    c->aa = aa;
+    c->ab = ab;
+    c2d_toia_load_vec(c, 0, b->pos.x, a->pos.x, b->pos.y, a->pos.y);
+    c2d_toia_load_vec(c, 1, b->vel.x, a->vel.x, b->vel.y, a->vel.y);
+    c2d_toia_load_vec(c, 2, ab->x, aa->x, ab->y, aa->y);
+    c2d_toia_x_set(&c->r, radius_sum, 0);
+}
+
+/* ===================================================================== */
+/* Exact signs at t = 0 (degree-2 polynomials in the inputs)             */
+/* ===================================================================== */
+
+/* Append the atoms of sgn * (x.y) for two input differences x = vector kx,
+ * y = vector ky (exact: hi + lo per axis). */
+static int c2d_toia_push_dot(const c2d_toia_ctx *c, c2d_real *m, int *e, int n, int kx, int ky, int sgn)
+{
+    int i, j, k;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++)
+            for (k = 0; k < 2; k++) {
+                c2d_toia_x x, y;
+                c2d_toia_part(c, kx, i, j, &x);
+                c2d_toia_part(c, ky, i, k, &y);
+                n = c2d_toia_push(m, e, n, &x, &y, 0, sgn);
+            }
+    return n;
+}
+
+/* Exact sign of f(0) = |d0|^2 - R^2 (which 0), g(0) = d0.v (1),
+ * h(0) = |v|^2 + d0.a (2) or hp(0) / 3 = v.a (3). */
+C2D_COLD int c2d_toia_sign0(c2d_toia_ctx *c, int which)
+{
+    c2d_real m[C2D_TOIA_ATOMS], hi, lo;
+    int e[C2D_TOIA_ATOMS], n = 0, k;
+    if (which == C2D_TOIA_QF) {
+        n = c2d_toia_push_dot(c, m, e, n, 0, 0, 1);
+        n = c2d_toia_push(m, e, n, &c->r, &c->r, 0, -1);
+    } else if (which == C2D_TOIA_QG) {
+        n = c2d_toia_push_dot(c, m, e, n, 0, 1, 1);
+    } else if (which == C2D_TOIA_QH) {
+        n = c2d_toia_push_dot(c, m, e, n, 1, 1, 1);
+        n = c2d_toia_push_dot(c, m, e, n, 0, 2, 1);
+    } else {
+        n = c2d_toia_push_dot(c, m, e, n, 1, 2, 1);
+    }
+    (void)c2d_toia_xsum(m, e, n, &hi, &lo, &k);
+    return c2d_toia_sgn(hi);
+}
+/* ===================================================================== */
+
+#endif /* C2D_REAL_TOIA_PROBLEM_H */

@@ -1,0 +1,464 @@
+/* real_toia_turns.h - template: the time of impact under acceleration,
+ * part 5 of 7: the turning points of f (roots of g, bracketed, with f's
+ * value there) and of g (the roots of the quadratic h).  See real_toia.h. */
+#ifndef C2D_REAL_TOIA_TURNS_H
+#define C2D_REAL_TOIA_TURNS_H
+/* Turning points of f: brackets of the roots of g and f's value there   */
+/* ===================================================================== */
+
+static void c2d_toia_x_mul(c2d_toia_x *r, const c2d_toia_x *a, const c2d_toia_x *b)
+{
+    c2d_toia_x_set(r, a->m * b->m, a->e + b->e);
+}
+
+/* val > 0 with a margin of 2^(4 - MANT) of scale (>= 0): a decision that
+ * survives the few roundings the bound arithmetic made. */
+static int c2d_toia_x_clear(const c2d_toia_x *val, const c2d_toia_x *scale)
+{
+    if (!(val->m > 0)) return 0;
+    if (scale->m == 0) return 1;
+    return val->e > scale->e + 4 - C2D_R_MANT;
+}
+
+/* Where c is the root of g in the bracket br (g monotone on it, with sign
+ * -dir at br->lo and dir at br->hi), bound f(c):
+ *   local minimum of f (dir = +1): f(c) <= f(end) for both ends, and
+ *     f(c) >= f(end) - 2 max|g| w (|f'| = 2|g| <= 2|g(end)| between end
+ *     and c, w the bracket's width);
+ *   local maximum (dir = -1): the same with the roles exchanged;
+ * and the optional center evaluation (a point of the bracket) tightens
+ * the one-sided bound.  Returns -1 if f(c) < 0 is certain, +1 if f(c) > 0,
+ * 0 if neither. */
+C2D_COLD int c2d_toia_fturn(const c2d_toia_br *br, int dir, const c2d_toia_fg *center)
+{
+    c2d_toia_x w, x, y, z;
+    int i, res = 0;
+    c2d_toia_t_diff(&w, &br->hi, &br->lo);
+    w.m = c2d_abs(w.m);
+    for (i = 0; i < 3; i++) {
+        const c2d_toia_fg *ev = i == 0 ? &br->elo : (i == 1 ? &br->ehi : center);
+        c2d_toia_x f, r, tg, lo, hi;
+        if (ev == NULL) continue;
+        c2d_toia_x_set(&f, ev->f.v, ev->f.e);
+        c2d_toia_x_set(&r, ev->f.r, ev->f.e);
+        tg.m = 0;
+        tg.e = 0;
+        if (i < 2) {
+            c2d_toia_x_set(&x, c2d_abs(ev->g.v) + ev->g.r, ev->g.e + 1);
+            c2d_toia_x_mul(&tg, &x, &w);
+        }
+        /* lo = f - r - (dir > 0 ? tg : 0), hi = f + r + (dir < 0 ? tg : 0);
+         * each candidate judged against its own rounding scale |f| + r + tg */
+        x.m = -r.m;
+        x.e = r.e;
+        c2d_toia_x_add(&lo, &f, &x);
+        c2d_toia_x_add(&hi, &f, &r);
+        y.m = -tg.m;
+        y.e = tg.e;
+        if (dir > 0) c2d_toia_x_add(&lo, &lo, &y);
+        else c2d_toia_x_add(&hi, &hi, &tg);
+        z.m = c2d_abs(f.m);
+        z.e = f.e;
+        c2d_toia_x_add(&z, &z, &r);
+        c2d_toia_x_add(&z, &z, &tg);
+        /* a point value bounds a minimum from above only, a maximum from below */
+        if (!(i == 2 && dir > 0) && c2d_toia_x_clear(&lo, &z) != 0) res = 1;
+        x.m = -hi.m;
+        x.e = hi.e;
+        if (!(i == 2 && dir < 0) && c2d_toia_x_clear(&x, &z) != 0) res = -1;
+    }
+    return res;
+}
+
+/* The plain estimate of g's root in (x, y) (Newton in a local frame): 1 with
+ * *r and the exponent *dw of 4 of its uncertainties, 0 if the frame's
+ * values are not trustworthy there. */
+C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_t *y, int dir,
+                                         c2d_toia_t *r, int *dw)
+{
+    c2d_toia_frame fr;
+    c2d_real width = 0, xr;
+    int ok = 0, kt = y->e + 1;
+    if (c2d_toia_frame_set(&fr, c, kt) == 0) return 0;
+    xr = c2d_toia_newton0(&fr, C2D_TOIA_QG, c2d_toia_t_local(x, kt), c2d_toia_t_local(y, kt), -dir, &ok, &width);
+    if (ok == 0) return 0;
+    c2d_toia_t_set(r, xr, 0, kt);
+    *dw = r->e - C2D_R_MANT + 4;
+    if (width > 0 && c2d_ilogb(width) + kt + 3 > *dw) *dw = c2d_ilogb(width) + kt + 3;
+    return 1;
+}
+
+/* The exponent of 4 times the double-length Newton step on g at r plus
+ * its noise, at least dw. */
+C2D_COLD int c2d_toia_gstep(c2d_toia_ctx *c, const c2d_toia_t *r, int dw)
+{
+    c2d_toia_ev ev;
+    c2d_toia_e2(c, r, &ev);
+    if (ev.q[C2D_TOIA_QH].v != 0) {
+        c2d_toia_x st;
+        c2d_toia_x_set(&st, (c2d_abs(ev.q[C2D_TOIA_QG].v) + ev.q[C2D_TOIA_QG].r) / c2d_abs(ev.q[C2D_TOIA_QH].v),
+                       ev.q[C2D_TOIA_QG].e - ev.q[C2D_TOIA_QH].e);
+        if (st.m != 0 && st.e + 3 > dw) dw = st.e + 3;
+    }
+    return dw;
+}
+
+/* The double-length estimate of g's root in (x, y) (certified search and
+ * Newton), with the exponent *dw of its uncertainty (at least 16 ulp of the
+ * working format). */
+C2D_COLD void c2d_toia_gdd(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_t *y, int dir,
+                                       c2d_toia_t *r, int *dw)
+{
+    c2d_toia_root(c, x, y, C2D_TOIA_QG, -dir, r);
+    *dw = c2d_toia_gstep(c, r, r->e - C2D_R_MANT + 4);
+}
+
+/* Bracket the root of g in the piece (x, y), where g has sign -dir at x
+ * and dir at y: the plain estimate first (Newton in a local frame), else or
+ * if it cannot be certified the double-length one; then certified signs of
+ * g at the estimate +- 4 uncertainties (widening 64-fold: up to twice for
+ * the plain estimate, three times for the other); at worst the piece
+ * itself.  f and g are evaluated at both ends. */
+C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_t *y, int dir,
+                                            c2d_toia_br *br)
+{
+    c2d_toia_t r;
+    int k, dw = 0, pass = 1;
+    if (c2d_toia_gplain(c, x, y, dir, &r, &dw) != 0) pass = 0;
+    for (; pass < 2; pass++) {
+        int widenings = 4;
+        if (pass == 1) c2d_toia_gdd(c, x, y, dir, &r, &dw);
+        if (pass == 0) widenings = 2;
+        for (k = 0; k < widenings; k++) {
+            c2d_toia_t_copy(&br->lo, &r);
+            c2d_toia_t_add(&br->lo, -1, dw);
+            if (c2d_toia_t_cmp(&br->lo, x) < 0) c2d_toia_t_copy(&br->lo, x);
+            c2d_toia_t_copy(&br->hi, &r);
+            c2d_toia_t_add(&br->hi, 1, dw);
+            if (c2d_toia_t_cmp(&br->hi, y) > 0) c2d_toia_t_copy(&br->hi, y);
+            c2d_toia_probe_fg(c, &br->lo, 1, &br->elo);
+            if (br->elo.sg == -dir) {
+                c2d_toia_probe_fg(c, &br->hi, 1, &br->ehi);
+                if (br->ehi.sg == dir) return;
+            }
+            dw += 6;
+        }
+    }
+    c2d_toia_t_copy(&br->lo, x);
+    c2d_toia_t_copy(&br->hi, y);
+    c2d_toia_probe_fg(c, &br->lo, 1, &br->elo);
+    c2d_toia_probe_fg(c, &br->hi, 1, &br->ehi);
+}
+
+/* Tighten a bracket whose f-decision was a tie: double-length Newton on g
+ * from its middle, certified signs (tiers 2-3) at +- 4 steps, and a tier-3
+ * value of f at the center (*ct). */
+C2D_COLD void c2d_toia_tighten(c2d_toia_ctx *c, c2d_toia_br *br, int dir, c2d_toia_t *ct,
+                                           c2d_toia_fg *center)
+{
+    c2d_toia_t lo, hi;
+    c2d_toia_fg elo, ehi;
+    int dw;
+    c2d_toia_t_mid(ct, &br->lo, &br->hi);
+    (void)c2d_toia_polish(c, ct, C2D_TOIA_QG, &br->lo, &br->hi, 2 * C2D_R_MANT + 2);
+    dw = c2d_toia_gstep(c, ct, ct->e - 2 * C2D_R_MANT + 2);
+    c2d_toia_t_copy(&lo, ct);
+    c2d_toia_t_add(&lo, -1, dw);
+    c2d_toia_t_copy(&hi, ct);
+    c2d_toia_t_add(&hi, 1, dw);
+    if (c2d_toia_t_cmp(&lo, &br->lo) > 0 && c2d_toia_t_cmp(&hi, &br->hi) < 0) {
+        c2d_toia_probe_fg(c, &lo, 2, &elo);
+        c2d_toia_probe_fg(c, &hi, 2, &ehi);
+        if (elo.sg == -dir && ehi.sg == dir) {
+            c2d_toia_t_copy(&br->lo, &lo);
+            c2d_toia_t_copy(&br->hi, &hi);
+            c2d_toia_fg_copy(&br->elo, &elo);
+            c2d_toia_fg_copy(&br->ehi, &ehi);
+        }
+    }
+    c2d_toia_probe_fg(c, ct, 3, center);
+}
+
+/* Append the atoms of x cross y = x0 y1 - x1 y0 for input differences kx, ky. */
+static int c2d_toia_push_cross(const c2d_toia_ctx *c, c2d_real *m, int *e, int n, int kx, int ky)
+{
+    int j, k;
+    for (j = 0; j < 2; j++)
+        for (k = 0; k < 2; k++) {
+            c2d_toia_x x, y;
+            c2d_toia_part(c, kx, 0, j, &x);
+            c2d_toia_part(c, ky, 1, k, &y);
+            n = c2d_toia_push(m, e, n, &x, &y, 0, 1);
+            c2d_toia_part(c, kx, 1, j, &x);
+            c2d_toia_part(c, ky, 0, k, &y);
+            n = c2d_toia_push(m, e, n, &x, &y, 0, -1);
+        }
+    return n;
+}
+
+/* a = 0: g = d0.v + |v|^2 t has its root at c = -d0.v / |v|^2, and by
+ * Lagrange's identity f(c) |v|^2 = (d0 x v)^2 - R^2 |v|^2: no time enters,
+ * so even a contact far shorter than any resolution of t is decided.
+ * X = d0 x v and V = |v|^2 are exact sums rounded to double length
+ * (relative errors (2k + 2) u^2), then X^2 - R^2 V in double length.
+ * Returns the sign of f(c) (-1 contact, +1 miss), 0 if within its bound. */
+C2D_COLD int c2d_toia_lin_min(c2d_toia_ctx *c)
+{
+    const c2d_real u2 = c2d_pow2(-2 * C2D_R_MANT - 2), fl = c2d_pow2(C2D_R_EMIN + 4);
+    c2d_real m[C2D_TOIA_ATOMS], xh, xl, vh, vl, ah = 0, al = 0, bh, bl, rh, rl, qh, ql, sa, sb, bound;
+    int e[C2D_TOIA_ATOMS], n, kx, kv, ex, ev, ea, eb, E;
+    n = c2d_toia_push_cross(c, m, e, 0, 0, 1);
+    ex = c2d_toia_xsum(m, e, n, &xh, &xl, &kx);
+    n = c2d_toia_push_dot(c, m, e, 0, 1, 1, 1);
+    ev = c2d_toia_xsum(m, e, n, &vh, &vl, &kv);
+    if (xh != 0) ah = c2d_toia_dmul(xh, xl, xh, xl, &al);
+    ea = 2 * ex;
+    rh = c2d_two_prod(c->r.m, c->r.m, &rl);
+    bh = c2d_toia_dmul(rh, rl, vh, vl, &bl);
+    eb = 2 * c->r.e + ev;
+    E = (xh != 0 && ea > eb) ? ea : eb;
+    sa = c2d_toia_p2(ea - E);
+    sb = c2d_toia_p2(eb - E);
+    qh = c2d_toia_dadd(ah * sa, al * sa, -bh * sb, -bl * sb, &ql);
+    bound = ((c2d_real)(4 * kx + 12) * c2d_abs(ah * sa) + (c2d_real)(2 * kv + 12) * c2d_abs(bh * sb)) * u2 + fl;
+    if (qh + ql > bound) return 1;
+    if (qh + ql < -bound) return -1;
+    return 0;
+}
+
+/* d0, v and a all parallel (exactly: their three cross products vanish):
+ * the relative motion runs along one line through the origin. */
+C2D_COLD int c2d_toia_collinear(c2d_toia_ctx *c)
+{
+    c2d_real m[C2D_TOIA_ATOMS], hi, lo;
+    int e[C2D_TOIA_ATOMS], n, k, i, j;
+    for (i = 0; i < 3; i++)
+        for (j = i + 1; j < 3; j++) {
+            n = c2d_toia_push_cross(c, m, e, 0, i, j);
+            (void)c2d_toia_xsum(m, e, n, &hi, &lo, &k);
+            if (hi != 0) return 0;
+        }
+    return 1;
+}
+
+/* For collinear motion: d(lo) and d(hi) point in opposite directions, so
+ * the path passes through the origin between them (distance 0 < R).  d is
+ * parallel to the nonzero input vector w, so d.w has no cancellation and
+ * its double-length value has the exact sign. */
+C2D_COLD int c2d_toia_crosses(c2d_toia_ctx *c, const c2d_toia_br *br)
+{
+    c2d_real dh[2], dlo[2], dl[2], d1h[2], d1lo[2], dl1[2], s0, s1;
+    const c2d_real *w = c->nz[0] != 0 ? c->m[0] : (c->nz[1] != 0 ? c->m[1] : c->m[2]);
+    int E, E1;
+    c2d_toia_dexact(c, &br->lo, dh, dlo, dl, d1h, d1lo, dl1, &E, &E1);
+    s0 = dh[0] * w[0] + dh[1] * w[1];
+    c2d_toia_dexact(c, &br->hi, dh, dlo, dl, d1h, d1lo, dl1, &E, &E1);
+    s1 = dh[0] * w[0] + dh[1] * w[1];
+    return (s0 > 0 && s1 < 0) || (s0 < 0 && s1 > 0);
+}
+
+/* The decision at a minimum of f, the root of g in the piece (x, y) where
+ * g goes from - to +: -1 contact (f(c) < 0), +1 no contact, 0 a graze tie
+ * (no contact).  On -1, *neg = a time in the piece's bracket where f < 0 is
+ * certified, or NULL when no representable time has f < 0 (a contact
+ * shorter than the time resolution): then *ct is the minimum's location. */
+C2D_COLD int c2d_toia_fmin(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_t *y, c2d_toia_br *br,
+                                       c2d_toia_t *ct, c2d_toia_fg *center, const c2d_toia_t **neg)
+{
+    int d, tight = 0;
+    *neg = NULL;
+    center->sf = 0;
+    if (c->nz[2] == 0) {
+        d = c2d_toia_lin_min(c);
+        if (d >= 0) return d;
+        c2d_toia_gbracket(c, x, y, 1, br);
+    } else {
+        c2d_toia_gbracket(c, x, y, 1, br);
+        d = c2d_toia_fturn(br, 1, NULL);
+        if (d == 0) {
+            c2d_toia_tighten(c, br, 1, ct, center);
+            tight = 1;
+            d = c2d_toia_fturn(br, 1, center);
+            if (d == 0 && c2d_toia_collinear(c) != 0 && c2d_toia_crosses(c, br) != 0) d = -1;
+        }
+        if (d >= 0) return d;
+    }
+    if (br->elo.sf < 0) {
+        *neg = &br->lo;
+    } else if (br->ehi.sf < 0) {
+        *neg = &br->hi;
+    } else {
+        if (tight == 0) c2d_toia_tighten(c, br, 1, ct, center);
+        if (br->elo.sf < 0) *neg = &br->lo;
+        else if (br->ehi.sf < 0) *neg = &br->hi;
+        else if (center->sf < 0) *neg = ct;
+    }
+    return -1;
+}
+
+/* ===================================================================== */
+/* Turning points of g: the roots of h = g' (a quadratic)                */
+/* ===================================================================== */
+
+/* Certify the sign of g on the "sliver" between s, an approximation of a
+ * root q of h with h' of sign kind at s, and q itself.  h is exactly
+ * quadratic: h(s + x) = h(s) + h'(s) x + (h''/2) x^2, h'' = 3|a|^2 > 0; if
+ * h(s) < 0, or h'(s)^2 >= 2 h'' h(s), the root nearest s is at
+ * 2|h(s)| / (|h'(s)| + sqrt(h'(s)^2 - 2 h'' h(s))), within D = 2|h(s)|/|h'(s)|
+ * (and it is q: the nearer root lies on s's side of the vertex, which
+ * h'(s)'s sign tells), |h| <= |h(s)| between, and g varies there by at
+ * most S = |h(s)| D.  So sign(g(s)) holds on the whole sliver if
+ * |g(s)| > S.  With bounds: |h(s)| <= H, |h'(s)| >= P.  Tried with tier 1,
+ * then after two double-length Newton steps on h with tiers 2 and 3; if it
+ * never holds, g is within S of 0 at its extremum: the tie value kind (g
+ * touching 0 from below at a maximum, from above at a minimum: no sign
+ * change) is returned.  *sf = f's sign at s if tier 1 certified it. */
+C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_toia_t *s, int kind, int *sf, int *tied)
+{
+    c2d_toia_ev ev;
+    c2d_toia_x h2, H, P, D, S, G, x, y;
+    int tier;
+    *sf = 0;
+    *tied = 0;
+    /* h'' = 3 |a|^2, rounded up */
+    c2d_toia_x_set(&h2,
+                   3 * (c->m[2][0] * c->m[2][0] + c->m[2][1] * c->m[2][1]) * (1 + c2d_pow2(3 - C2D_R_MANT)),
+                   2 * c->ex[2]);
+    for (tier = 1; tier <= 3; tier++) {
+        if (tier == 1) {
+            c2d_toia_e1(c, s, &ev);
+            if (c2d_abs(ev.q[C2D_TOIA_QF].v) > ev.q[C2D_TOIA_QF].r) *sf = c2d_toia_sgn(ev.q[C2D_TOIA_QF].v);
+        } else {
+            if (tier == 2) {
+                c2d_toia_t lo, hi;
+                c2d_toia_t_copy(&lo, s);
+                c2d_toia_t_copy(&hi, s);
+                c2d_toia_t_add(&lo, -1, s->e - 8);
+                c2d_toia_t_add(&hi, 1, s->e - 8);
+                (void)c2d_toia_polish(c, s, C2D_TOIA_QH, &lo, &hi, 2 * C2D_R_MANT);
+                c2d_toia_e2(c, s, &ev);
+            } else {
+                c2d_toia_e3(c, s, &ev);
+            }
+        }
+        if (!(c2d_abs(ev.q[C2D_TOIA_QHP].v) > ev.q[C2D_TOIA_QHP].r) ||
+            c2d_toia_sgn(ev.q[C2D_TOIA_QHP].v) != kind)
+            continue;
+        c2d_toia_x_set(&H, c2d_abs(ev.q[C2D_TOIA_QH].v) + ev.q[C2D_TOIA_QH].r, ev.q[C2D_TOIA_QH].e);
+        c2d_toia_x_set(&P, c2d_abs(ev.q[C2D_TOIA_QHP].v) - ev.q[C2D_TOIA_QHP].r, ev.q[C2D_TOIA_QHP].e);
+        /* the root exists within D unless h(s) may be positive (same sign as
+         * h''): then P^2 >= 2 h'' H is needed (with slack) */
+        if (!(ev.q[C2D_TOIA_QH].v + ev.q[C2D_TOIA_QH].r < 0)) {
+            c2d_toia_x_mul(&x, &P, &P);
+            c2d_toia_x_mul(&y, &h2, &H);
+            y.e += 1;
+            if (H.m != 0 && c2d_toia_x_cmp(&x, &y) <= 0) continue;
+        }
+        /* D = 2 H / P, S = H D (rounded up by the slack in the test) */
+        c2d_toia_x_set(&D, 2 * H.m / P.m, H.e - P.e);
+        c2d_toia_x_mul(&S, &H, &D);
+        S.m *= 1 + c2d_pow2(4 - C2D_R_MANT);
+        c2d_toia_x_set(&G, c2d_abs(ev.q[C2D_TOIA_QG].v) - ev.q[C2D_TOIA_QG].r, ev.q[C2D_TOIA_QG].e);
+        if (G.m > 0 && c2d_toia_x_cmp(&G, &S) > 0) return c2d_toia_sgn(ev.q[C2D_TOIA_QG].v);
+    }
+    *tied = 1;
+    return kind;
+}
+
+/* x.y (+ z.w) for input differences, as a double-length number: the exact
+ * sum of the exact products when exact != 0, else from the hi parts in
+ * plain arithmetic (a hint; relative error a few u unless it cancels). */
+static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_toia_t *r);
+
+/* An exact sum of products (atoms) as a double-length number. */
+static void c2d_toia_t_xsum(c2d_toia_t *r, c2d_real *m, int *e, int n)
+{
+    c2d_real hi, lo;
+    int k, ex = c2d_toia_xsum(m, e, n, &hi, &lo, &k);
+    c2d_toia_t_set(r, hi, lo, ex);
+}
+
+static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_toia_t *r)
+{
+    if (exact != 0) {
+        c2d_real m[C2D_TOIA_ATOMS];
+        int e[C2D_TOIA_ATOMS], n = c2d_toia_push_dot(c, m, e, 0, kx, ky, sgn);
+        if (kz >= 0) n = c2d_toia_push_dot(c, m, e, n, kz, kw, sgn);
+        c2d_toia_t_xsum(r, m, e, n);
+    } else {
+        c2d_toia_t p, q;
+        c2d_toia_t_set(&p, c->nz[kx] * c->nz[ky] != 0 ? (c2d_real)sgn * (c->m[kx][0] * c->m[ky][0] + c->m[kx][1] * c->m[ky][1]) : 0,
+                       0, c->ex[kx] + c->ex[ky]);
+        if (kz >= 0) {
+            c2d_toia_t_set(&q, c->nz[kz] * c->nz[kw] != 0 ? (c2d_real)sgn * (c->m[kz][0] * c->m[kw][0] + c->m[kz][1] * c->m[kw][1]) : 0,
+                           0, c->ex[kz] + c->ex[kw]);
+            c2d_toia_t_sum(r, &p, &q);
+        } else {
+            c2d_toia_t_copy(r, &p);
+        }
+    }
+}
+
+/* The roots of the quadratic h(t) = (3/2)|a|^2 t^2 + 3 (v.a) t + h(0), as
+ * double-length hints (then polished and certified by the caller).  Its
+ * coefficients are exact sums rounded to double length; with beta =
+ * v.a / |a|^2 and gamma = (2/3) h(0) / |a|^2 the roots are -beta +-
+ * sqrt(beta^2 - gamma).  The forms used avoid every subtraction of
+ * near-equal numbers: the root of larger magnitude is -beta - sgn(beta)
+ * sqrt(...), the other gamma over it; and when gamma > 0 with beta < 0 (two
+ * positive roots, where beta^2 - gamma cancels), the vertex form m +- w,
+ * m = -beta, w^2 = -2 h(m) / h'' with h(m) evaluated at m (at_m, certified
+ * negative by the caller): h is exactly quadratic, so h(m) is its minimum
+ * and w is accurate to its own precision.  Returns 0 if there is no real
+ * root to report.  exact = 0: the coefficients from the hi parts (cheap
+ * hints); 1: from exact sums (when the cheap ones did not certify). */
+C2D_COLD int c2d_toia_hroots(c2d_toia_ctx *c, const c2d_toia_ev *at_m, int exact, c2d_toia_t *rm,
+                                         c2d_toia_t *rp)
+{
+    c2d_toia_t a2, beta, gamma, x, y, sq;
+    c2d_toia_dotq(c, 2, 2, -1, -1, 1, exact, &a2);
+    c2d_toia_dotq(c, 1, 2, -1, -1, 1, exact, &x);
+    c2d_toia_t_div(&beta, &x, &a2);
+    c2d_toia_dotq(c, 1, 1, 0, 2, 1, exact, &x);
+    c2d_toia_t_div(&gamma, &x, &a2);
+    c2d_toia_t_set(&y, (c2d_real)2 / (c2d_real)3, 0, 0); /* 2/3 to double length is enough for a hint */
+    c2d_toia_t_mul(&gamma, &gamma, &y);
+    if (at_m != NULL && beta.h < 0 && gamma.h > 0) {
+        /* vertex form: w^2 = -2 h(m) / (3 |a|^2) */
+        c2d_toia_t_set(&x, -2 * at_m->q[C2D_TOIA_QH].v, 0, at_m->q[C2D_TOIA_QH].e);
+        c2d_toia_t_set(&y, 3, 0, 0);
+        c2d_toia_t_mul(&y, &y, &a2);
+        c2d_toia_t_div(&x, &x, &y);
+        if (!(x.h > 0)) return 0;
+        c2d_toia_t_sqrt(&sq, &x);
+        c2d_toia_t_copy(&x, &beta);
+        c2d_toia_t_neg(&x);
+        c2d_toia_t_sum(rp, &x, &sq); /* m + w */
+        /* m - w may cancel: the product of the roots is gamma */
+        c2d_toia_t_div(rm, &gamma, rp);
+        return 1;
+    }
+    c2d_toia_t_mul(&x, &beta, &beta);
+    c2d_toia_t_copy(&y, &gamma);
+    c2d_toia_t_neg(&y);
+    c2d_toia_t_sum(&x, &x, &y);
+    if (!(x.h > 0)) return 0;
+    c2d_toia_t_sqrt(&sq, &x);
+    if (beta.h > 0) c2d_toia_t_neg(&sq);
+    c2d_toia_t_copy(&x, &beta);
+    c2d_toia_t_neg(&x);
+    c2d_toia_t_sum(&x, &x, &sq); /* -beta - sgn(beta) sqrt: no cancellation */
+    if (x.h == 0) return 0;
+    c2d_toia_t_div(&y, &gamma, &x);
+    if (beta.h > 0) {
+        c2d_toia_t_copy(rm, &x);
+        c2d_toia_t_copy(rp, &y);
+    } else {
+        c2d_toia_t_copy(rp, &x);
+        c2d_toia_t_copy(rm, &y);
+    }
+    return 1;
+}
+/* ===================================================================== */
+
+#endif /* C2D_REAL_TOIA_TURNS_H */

@@ -1,0 +1,197 @@
+# SPDX-License-Identifier: MIT
+"""collide2d: exact, robust 2-D disk collisions (Python binding over ctypes).
+
+Every call goes straight to the C library (libcollide2d.so, built by `make`;
+see collide2d._native for where it is looked for), so results are the C
+library's bit for bit.
+
+Units: any consistent set (SI: m, m/s, kg, s, rad/s, kg m^2).  Masses > 0;
+math.inf is immovable.  Restitution in [0, 1].  A normal points from a
+towards b and may have any finite non-zero length.
+
+Scalar calls take the C structs (Body, Disk, Vec2, Surface for double; the
+same names ending in f for float), write the new velocities (and spins) into
+the bodies in place, and return a Status.  Any status but Status.OK leaves
+both bodies untouched, bit for bit.
+
+    >>> from collide2d import Body, collide
+    >>> a, b = Body((0, 0), (1, 0), 1.0), Body((1, 1), (0, 0), 1.0)
+    >>> collide(a, b, 1.0)
+    <Status.OK: 0>
+    >>> tuple(a.vel), tuple(b.vel)
+    ((0.5, -0.5), (0.5, 0.5))
+
+The batch calls (collide_batch, collide_batchf) work in place on numpy
+arrays: see collide2d.batch.
+"""
+import enum
+import numbers
+
+from . import _native
+
+__all__ = [
+    "Status", "version", "status_string", "LIB_PATH",
+    "Vec2", "Body", "Disk", "Surface", "Vec2f", "Bodyf", "Diskf", "Surfacef",
+    "collide", "collide_normal", "time_of_impact", "collide_rough", "collide_rough_normal",
+    "collidef", "collide_normalf", "time_of_impactf", "collide_roughf", "collide_rough_normalf",
+    "collide_batch", "collide_batchf",
+]
+
+LIB_PATH = _native.LIB_PATH
+
+Vec2, Body, Disk, Surface = (_native.DOUBLE[k] for k in ("Vec2", "Body", "Disk", "Surface"))
+Vec2f, Bodyf, Diskf, Surfacef = (_native.FLOAT[k] for k in ("Vec2", "Body", "Disk", "Surface"))
+
+
+class Status(enum.IntEnum):
+    """What a call did (c2d_status).  Priority when several apply:
+    INVALID > DEGENERATE > SEPARATING > RANGE > OK."""
+
+    OK = 0          #: velocities updated
+    SEPARATING = 1  #: not approaching along the normal (relative normal velocity >= 0)
+    DEGENERATE = 2  #: zero normal (coincident centres) or both bodies immovable
+    INVALID = 3     #: NaN or Inf anywhere, mass <= 0, restitution outside [0, 1], ...
+    RANGE = 4       #: a result would overflow the format
+
+    def __str__(self):
+        return status_string(self)
+
+
+def version():
+    """The library's version as (major, minor, patch), from c2d_version()."""
+    v = _native.LIB.c2d_version()
+    return (v // 10000, v // 100 % 100, v % 100)
+
+
+__version__ = "%d.%d.%d" % version()
+
+
+def status_string(status):
+    """The C library's name for a status ("ok", "separating", ...); "unknown"
+    for a value outside the enum."""
+    return _native.LIB.c2d_status_string(int(status)).decode("ascii")
+
+
+# ------------------------------------------------------------ calling C
+
+def _convert(value, ctype, position, name):
+    """One argument as the C function wants it, or a TypeError saying which."""
+    if isinstance(ctype, type) and issubclass(ctype, _native.ctypes._Pointer):
+        target = ctype._type_
+        if not isinstance(value, target):
+            raise TypeError(f"{name}: argument {position} must be {target.__name__}, not {type(value).__name__}")
+        return _native.ctypes.byref(value)
+    if isinstance(ctype, type) and issubclass(ctype, _native.ctypes.Structure):
+        if isinstance(value, ctype):
+            return value
+        try:
+            return ctype(*value)
+        except (TypeError, RuntimeError, ValueError) as e:
+            fields = ", ".join(f for f, _ in ctype._fields_)
+            raise TypeError(f"{name}: argument {position} must be {ctype.__name__} or a sequence ({fields}) "
+                            f"of numbers, not {value!r}") from e
+    if not isinstance(value, numbers.Real):
+        raise TypeError(f"{name}: argument {position} must be a real number, not {type(value).__name__}")
+    return float(value)
+
+
+def _call(cname, *args):
+    """Call the C function `cname`: check and convert the arguments, allocate
+    its outputs.  Returns the Status, or (Status, output...) when it has
+    outputs (each None unless the status is OK)."""
+    fn, pyname = _native.function(cname), cname[len("c2d_"):]
+    if fn is None:
+        raise NotImplementedError(f"{cname} is not in {LIB_PATH} (built without this variant?)")
+    proto = _native.PROTOTYPES[cname]
+    inputs = [a for a in proto if not isinstance(a, _native.Out)]
+    if len(args) != len(inputs):
+        raise TypeError(f"{pyname} takes {len(inputs)} arguments ({len(args)} given)")
+    values, outputs, it = [], [], iter(args)
+    for position, ctype in enumerate(proto, 1):
+        if isinstance(ctype, _native.Out):
+            out = ctype.ctype()
+            outputs.append(out)
+            values.append(_native.ctypes.byref(out))
+        else:
+            values.append(_convert(next(it), ctype, position, pyname))
+    status = Status(fn(*values))
+    if not outputs:
+        return status
+    return (status,) + tuple(o.value if status == Status.OK else None for o in outputs)
+
+
+# ------------------------------------------------------------ double
+
+def collide(a, b, restitution):
+    """Resolve an impact of disks a and b (Body) along the line of centres
+    b.pos - a.pos, taken exactly.  restitution e in [0, 1]: the relative
+    normal velocity after is -e times the one before.  Writes a.vel, b.vel
+    (in the velocity unit of the inputs) on Status.OK.  Accuracy: each output
+    component within 16 ulp of its body's velocity scale; correctly rounded
+    when the centres share an x or a y coordinate (axis-aligned)."""
+    return _call("c2d_collide", a, b, restitution)
+
+
+def collide_normal(a, b, normal, restitution):
+    """As collide, with the contact normal given (Vec2 or (x, y): any finite
+    non-zero vector from a towards b; positions are only validated).  For
+    walls: b.mass = math.inf, normal = the wall's normal pointing away from a."""
+    return _call("c2d_collide_normal", a, b, normal, restitution)
+
+
+def time_of_impact(a, b, radius_sum):
+    """Time of impact of two disks (Body) moving with constant velocities:
+    the earliest t >= 0 at which |(b.pos - a.pos) + (b.vel - a.vel) t| =
+    radius_sum while they approach (radius_sum >= 0, in the position unit).
+    Returns (Status, t): t in the velocities' time unit on Status.OK (0 when
+    already overlapping and approaching), None otherwise (SEPARATING: they
+    recede, miss or graze).  Masses are ignored."""
+    return _call("c2d_time_of_impact", a, b, radius_sum)
+
+
+def collide_rough(a, b, surface):
+    """Impact of two rough disks (Disk: pos, vel, spin in rad per time unit
+    counter-clockwise, mass, radius, inertia = moment of inertia about the
+    centre, e.g. m r^2 / 2) along the line of centres, with friction and spin
+    (Walton's model).  surface: Surface or (restitution e in [0, 1],
+    friction mu >= 0, tangential_restitution beta in [-1, 1]).  Writes both
+    velocities and spins on Status.OK.  mu = 0 or beta = -1 give collide's
+    velocities bit for bit."""
+    return _call("c2d_collide_rough", a, b, surface)
+
+
+def collide_rough_normal(a, b, normal, surface):
+    """As collide_rough with the contact normal given (from a towards b).
+    For cushions: b.mass = b.inertia = math.inf, b.radius = 0."""
+    return _call("c2d_collide_rough_normal", a, b, normal, surface)
+
+
+# ------------------------------------------------------------ float
+
+def collidef(a, b, restitution):
+    """Float twin of collide (Bodyf; float arithmetic only, accuracy in float
+    ulp)."""
+    return _call("c2d_collidef", a, b, restitution)
+
+
+def collide_normalf(a, b, normal, restitution):
+    """Float twin of collide_normal (Bodyf, Vec2f)."""
+    return _call("c2d_collide_normalf", a, b, normal, restitution)
+
+
+def time_of_impactf(a, b, radius_sum):
+    """Float twin of time_of_impact (Bodyf): returns (Status, t or None)."""
+    return _call("c2d_time_of_impactf", a, b, radius_sum)
+
+
+def collide_roughf(a, b, surface):
+    """Float twin of collide_rough (Diskf, Surfacef)."""
+    return _call("c2d_collide_roughf", a, b, surface)
+
+
+def collide_rough_normalf(a, b, normal, surface):
+    """Float twin of collide_rough_normal (Diskf, Vec2f, Surfacef)."""
+    return _call("c2d_collide_rough_normalf", a, b, normal, surface)
+
+
+from .batch import collide_batch, collide_batchf  # noqa: E402  (needs Status)

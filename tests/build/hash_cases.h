@@ -1,0 +1,42 @@
+/* SPDX-License-Identifier: MIT */
+/* hash_cases.h - the determinism hash: a fixed stream of generated cases run
+ * through every entry point compiled in, and FNV-1a hashes of the bits of
+ * every output and status, one per variant.
+ *
+ * Freestanding (no C library, no allocation: only the compiler's headers,
+ * the library's, the shared harness and referee/rng.h), so the same code
+ * runs on the host (tests/build/hash_vectors.c), on Linux targets under
+ * qemu-user and on microcontrollers under QEMU (tests/cross/hash_mcu.c).
+ * The case stream does not depend on which variants are compiled in, so a
+ * float-only target's float hash is comparable with the host's.  Bytes are
+ * hashed as they lie in memory: every target checked is little-endian. */
+#ifndef C2D_HASH_CASES_H
+#define C2D_HASH_CASES_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define C2D_HV_DEFAULT_COUNT 100000ul
+
+enum { C2D_HV_DOUBLE, C2D_HV_FLOAT, C2D_HV_FIXED, C2D_HV_VARIANTS };
+
+typedef struct c2d_hv_hash {
+    uint64_t inputs;                    /* the generated cases themselves */
+    uint64_t variant[C2D_HV_VARIANTS];  /* each variant's outputs and statuses */
+    int present[C2D_HV_VARIANTS];       /* compiled in (C2D_NO_* not defined) */
+} c2d_hv_hash;
+
+/* The variants' names as printed: "double", "float", "Q16.16". */
+extern const char *const c2d_hv_name[C2D_HV_VARIANTS];
+
+/* Runs `count` cases.  sink, if not NULL, receives every run of bytes
+ * hashed (to locate a difference between two targets with cmp -l). */
+void c2d_hv_run(unsigned long count, c2d_hv_hash *h, void (*sink)(const void *p, size_t n));
+
+/* One hash over the variants compiled in (FNV-1a of their hashes). */
+uint64_t c2d_hv_combined(const c2d_hv_hash *h);
+
+/* 16 lower-case hex digits and a terminating NUL into out[17]. */
+void c2d_hv_hex(uint64_t v, char out[17]);
+
+#endif

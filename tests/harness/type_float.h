@@ -1,0 +1,36 @@
+/* type_float.h - the float variant's names for the test templates
+ * (soa_template.h, tests/vectors/check_template.h, tests/fuzz/fuzz_template.h),
+ * as lib/float.c names its type for lib/real_*.h.  Included once, first, by
+ * each float translation unit of the tests (soa_float.c, check_float.c,
+ * fuzz_float.c); macros that name what a program does not link are never
+ * expanded there. */
+#include "harness.h"
+
+typedef float c2d_num;
+typedef c2d_bodyf c2d_num_body;
+typedef c2d_vec2f c2d_num_vec;
+typedef c2d_pairsf c2d_num_pairs;
+typedef c2d_soaf c2d_num_soa;
+
+#define C2D_T_NAME "float"
+#define C2D_T_PREC 24      /* significand bits and smallest normal exponent: the ulp */
+#define C2D_T_EMIN (-126)
+#define C2D_T_FABS fabsf
+#define C2D_T_PUT c2d_put_float
+/* Equal first: also accepts two equal infinities. */
+#define C2D_T_WITHIN(got, want, tol) ((got) == (want) || C2D_ABS((got) - (want)) <= (tol))
+
+#define C2D_T_COLLIDE c2d_collidef
+#define C2D_T_COLLIDE_NORMAL c2d_collide_normalf
+#define C2D_T_TIME_OF_IMPACT c2d_time_of_impactf
+#define C2D_T_BATCH c2d_collide_batchf
+
+/* The shared vector table (tests/vectors/vectors.h). */
+#define C2D_T_VECTOR c2d_vector_f
+#define C2D_T_VECTORS c2d_vectors_f
+#define C2D_T_VECTOR_COUNT c2d_vector_count_f
+
+/* The fuzz harness's decoders (tests/fuzz/fuzz.h). */
+#define C2D_T_READ c2d_fuzz_read_float
+#define C2D_T_READ_MASS c2d_fuzz_read_massf
+#define C2D_T_READ_RESTITUTION c2d_fuzz_read_restitutionf

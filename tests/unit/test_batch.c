@@ -1,0 +1,134 @@
+/* c2d_collide_batch(f): bit-identical to the scalar call, statuses
+ * included, for mixed inputs (valid, grazing, extreme, invalid) and any
+ * count, including counts that are not a multiple of the kernel's block. */
+#include "check.h"
+
+#define N 1003 /* not a multiple of 8 */
+
+/* The batch's arrays (tests/harness: c2d_soa over one block). */
+static double block[C2D_SOA_FIELDS * N];
+static c2d_status status[N];
+
+/* N mixed cases into the batch's arrays; cs keeps them for the scalar calls. */
+static c2d_soa fill(ref_case *cs, uint64_t seed)
+{
+    c2d_soa s = c2d_soa_in(block, N, status);
+    c2d_rng r;
+    int i;
+    r.s = seed;
+    for (i = 0; i < N; i++) {
+        ref_case *c = &cs[i];
+        c2d_body a, b;
+        uint64_t k = c2d_rng_next(&r) % 10;
+        if (k < 6) {
+            gen_plain(&r, c);
+        } else {
+            gen_extreme(&r, c, 53, -1022, 1023);
+        }
+        if (k == 9) c->va[0] = NAN;
+        if (k == 8) c->ma = -1;
+        case_to_bodies(c, &a, &b);
+        c2d_soa_put(&s, (size_t)i, &a, &b);
+    }
+    return s;
+}
+
+/* Every lane had the scalar call's status and bits, and the count was right. */
+static void assert_lanes_agree(const c2d_batch_check *check, size_t done)
+{
+    if (check->differing != 0) print_error("batch lane %zu differs from the scalar call\n", check->first);
+    assert_int_equal(check->differing, 0);
+    assert_int_equal(done, check->resolved);
+}
+
+static void check_restitution(double e, uint64_t seed)
+{
+    static ref_case cs[N];
+    const c2d_soa s = fill(cs, seed);
+    const c2d_pairs p = c2d_soa_pairs(&s);
+    c2d_batch_check check = {0, 0, 0};
+    size_t done, i;
+    done = c2d_collide_batch(&p, N, e, s.status);
+    for (i = 0; i < N; i++) {
+        c2d_body a, b;
+        c2d_status want;
+        case_to_bodies(&cs[i], &a, &b);
+        want = c2d_collide(&a, &b, e);
+        /* untouched on refusal is included: a and b keep their inputs */
+        c2d_batch_check_lane(&check, &s, i, want, &a, &b);
+    }
+    assert_lanes_agree(&check, done);
+}
+
+static void test_batch_is_bit_identical_to_scalar_calls(void **state)
+{
+    (void)state;
+    check_restitution(1.0, 401);
+    check_restitution(0.95, 402);
+    check_restitution(0.0, 403);
+}
+
+static void test_batch_with_invalid_restitution_refuses_every_pair(void **state)
+{
+    static ref_case cs[N];
+    static double before[C2D_SOA_FIELDS * N];
+    const c2d_soa s = fill(cs, 404);
+    const c2d_pairs p = c2d_soa_pairs(&s);
+    int i;
+    (void)state;
+    memcpy(before, block, sizeof block);
+    assert_int_equal(c2d_collide_batch(&p, N, 1.5, s.status), 0);
+    for (i = 0; i < N; i++) assert_status(s.status[i], C2D_INVALID);
+    assert_memory_equal(block, before, sizeof block);
+    assert_int_equal(c2d_collide_batch(NULL, N, 1.0, s.status), 0);
+}
+
+static void test_batch_without_status_array_and_tiny_counts(void **state)
+{
+    static ref_case cs[N];
+    const c2d_soa s = fill(cs, 405);
+    const c2d_pairs p = c2d_soa_pairs(&s);
+    size_t n;
+    (void)state;
+    for (n = 0; n < 20; n++) (void)c2d_collide_batch(&p, n, 1.0, NULL);
+    assert_int_equal(c2d_collide_batch(&p, 0, 1.0, NULL), 0);
+}
+
+static void test_float_batch_is_bit_identical_to_scalar_calls(void **state)
+{
+    static float blockf[C2D_SOA_FIELDS * N];
+    static ref_case cs[N];
+    const c2d_soaf s = c2d_soa_inf(blockf, N, status);
+    const c2d_pairsf p = c2d_soa_pairsf(&s);
+    c2d_batch_check check = {0, 0, 0};
+    c2d_rng r = {406};
+    size_t done, i;
+    (void)state;
+    for (i = 0; i < N; i++) {
+        ref_case *c = &cs[i];
+        c2d_bodyf a, b;
+        if (c2d_rng_next(&r) % 4) gen_plain(&r, c); else gen_extreme(&r, c, 24, -126, 127);
+        case_to_bodiesf(c, &a, &b);
+        c2d_soa_putf(&s, i, &a, &b);
+    }
+    done = c2d_collide_batchf(&p, N, 0.9f, s.status);
+    for (i = 0; i < N; i++) {
+        c2d_bodyf a, b;
+        c2d_status want;
+        case_to_bodiesf(&cs[i], &a, &b);
+        want = c2d_collidef(&a, &b, 0.9f);
+        c2d_batch_check_lanef(&check, &s, i, want, &a, &b);
+    }
+    assert_lanes_agree(&check, done);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_batch_is_bit_identical_to_scalar_calls),
+        cmocka_unit_test(test_batch_with_invalid_restitution_refuses_every_pair),
+        cmocka_unit_test(test_batch_without_status_array_and_tiny_counts),
+        cmocka_unit_test(test_float_batch_is_bit_identical_to_scalar_calls),
+    };
+    return cmocka_run_group_tests_name("batch", tests, NULL, NULL);
+}

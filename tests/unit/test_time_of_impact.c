@@ -1,0 +1,330 @@
+/* c2d_time_of_impact(f): closed cases, then random cases against a 256-bit
+ * MPFR referee, unit-scale and scaled over the whole range.  Bound: 4 units
+ * of (ulp(t) + ulp(|d|) / closing speed), the documented accuracy. */
+#include "check.h"
+
+#define CASES 30000
+#define BOUND_UNITS 4.0
+
+static c2d_body body(double px, double py, double vx, double vy)
+{
+    c2d_body b;
+    b.pos.x = px, b.pos.y = py, b.vel.x = vx, b.vel.y = vy, b.mass = 1;
+    return b;
+}
+
+static void test_head_on_time_is_gap_over_closing_speed(void **state)
+{
+    c2d_body a = body(0, 0, 1, 0), b = body(10, 0, -1, 0);
+    double t = -1;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_OK);
+    assert_close(t, 4, 0);
+}
+
+static void test_miss_receding_and_no_motion_are_separating(void **state)
+{
+    c2d_body a = body(0, 0, 1, 0), b = body(10, 5, 0, 0), still = body(10, 0, 1, 0);
+    double t = 123;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_SEPARATING);
+    b = body(10, 0, 2, 0);
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_SEPARATING);
+    assert_status(c2d_time_of_impact(&a, &still, 2, &t), C2D_SEPARATING);
+    assert_close(t, 123, 0); /* untouched */
+}
+
+static void test_overlapping_pair_impacts_now_only_when_approaching(void **state)
+{
+    c2d_body a = body(0, 0, 1, 0), b = body(1, 0, 0, 0);
+    double t = 5;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_OK);
+    assert_close(t, 0, 0);
+    a.vel.x = -1;
+    assert_status(c2d_time_of_impact(&a, &b, 2, &t), C2D_SEPARATING);
+}
+
+static void test_bad_arguments_are_invalid(void **state)
+{
+    c2d_body a = body(0, 0, 1, 0), b = body(10, 0, 0, 0);
+    double t = 7;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, -1, &t), C2D_INVALID);
+    assert_status(c2d_time_of_impact(&a, &b, NAN, &t), C2D_INVALID);
+    assert_status(c2d_time_of_impact(&a, &b, INFINITY, &t), C2D_INVALID);
+    assert_status(c2d_time_of_impact(&a, &b, 1, NULL), C2D_INVALID);
+    a.vel.y = NAN;
+    assert_status(c2d_time_of_impact(&a, &b, 1, &t), C2D_INVALID);
+    assert_close(t, 7, 0);
+}
+
+/* Disks 1e6 radii apart: the textbook b^2 - ac cancels to nothing here. */
+static void test_far_apart_small_disks_keep_full_accuracy(void **state)
+{
+    ref_case c = {{0, 0}, {1e6, 0.75}, {1, 0}, {0, 0}, 1, 1, {0, 0}, 0, 1};
+    c2d_body a = body(0, 0, 1, 0), b = body(1e6, 0.75, 0, 0);
+    double t, want, unit;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 1, &t), C2D_OK);
+    assert_status(ref_time_of_impact(&c, 1, &want, &unit, 53, -1022), C2D_OK);
+    assert_close(t, want, BOUND_UNITS * unit);
+}
+
+static void test_time_overflowing_double_is_range(void **state)
+{
+    c2d_body a = body(-1e300, 0, 1e-300, 0), b = body(1e300, 0, 0, 0);
+    double t = 1;
+    (void)state;
+    assert_status(c2d_time_of_impact(&a, &b, 1, &t), C2D_RANGE);
+    assert_close(t, 1, 0);
+}
+
+/* The audit's cases (issue 10): magnitudes that differ by more than the
+ * exponent range used to underflow together after the scaling. */
+static double bits_d(uint64_t u)
+{
+    double d;
+    memcpy(&d, &u, sizeof d);
+    return d;
+}
+
+static float bits_f(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+static void test_float_miss_beyond_the_exponent_range_is_separating(void **state)
+{
+    c2d_bodyf a = {{0, 0}, {0, 0}, 1}, b = {{0, 0}, {0, 0}, 1};
+    float t = 5;
+    (void)state;
+    a.vel.x = bits_f(0x3f800000u);
+    b.pos.x = bits_f(0x71800000u);
+    b.pos.y = bits_f(0x21800000u);
+    assert_status(c2d_time_of_impactf(&a, &b, bits_f(0x1c800000u), &t), C2D_SEPARATING);
+    assert_close(t, 5, 0);
+}
+
+static void test_double_miss_beyond_the_exponent_range_is_separating(void **state)
+{
+    c2d_body a = body(0, 0, 0, 0), b = body(0, 0, 0, 0);
+    double t = 5;
+    (void)state;
+    a.vel.x = bits_d(0x3ff0000000000000ull);
+    b.pos.x = bits_d(0x7e70000000000000ull);
+    b.pos.y = bits_d(0x39b0000000000000ull);
+    assert_status(c2d_time_of_impact(&a, &b, bits_d(0x3910000000000000ull), &t), C2D_SEPARATING);
+    assert_close(t, 5, 0);
+}
+
+static void test_overlapping_approach_decided_by_a_tiny_component_is_a_hit_now(void **state)
+{
+    c2d_body a = body(0, 0, 0, 0), b = body(0, 0, 0, 0);
+    double t = 5;
+    (void)state;
+    a.vel.x = bits_d(0x5f30000000000000ull);
+    b.pos.x = bits_d(0x1a70000000000000ull);
+    b.pos.y = bits_d(0x5f30000000000000ull);
+    assert_status(c2d_time_of_impact(&a, &b, bits_d(0x5f40000000000000ull), &t), C2D_OK);
+    assert_close(t, 0, 0);
+}
+
+/* Rows of balls on parallel lines exactly R apart touch with no approach
+ * speed: a graze, SEPARATING (as c2d_collide says), at every scale; a hair
+ * closer is a hit, a hair further a miss. */
+static void test_exact_grazes_are_separating_and_near_grazes_exact(void **state)
+{
+    int k;
+    (void)state;
+    for (k = -1000; k <= 1000; k += 50) {
+        double s = ldexp(1.0, k), t = -1;
+        c2d_body a = body(0, 0, 1, 0), b = body(10 * s, 2 * s, 0, 0);
+        assert_status(c2d_time_of_impact(&a, &b, 2 * s, &t), C2D_SEPARATING);
+        assert_status(c2d_time_of_impact(&a, &b, nextafter(2 * s, INFINITY), &t), C2D_OK);
+        assert_status(c2d_time_of_impact(&a, &b, nextafter(2 * s, 0), &t), C2D_SEPARATING);
+    }
+    for (k = -120; k <= 120; k += 10) {
+        float s = ldexpf(1.0f, k), t = -1;
+        c2d_bodyf a = {{0, 0}, {1, 0}, 1}, b = {{0, 0}, {0, 0}, 1};
+        b.pos.x = 10 * s, b.pos.y = 2 * s;
+        assert_status(c2d_time_of_impactf(&a, &b, 2 * s, &t), C2D_SEPARATING);
+        assert_status(c2d_time_of_impactf(&a, &b, nextafterf(2 * s, INFINITY), &t), C2D_OK);
+        assert_status(c2d_time_of_impactf(&a, &b, nextafterf(2 * s, 0), &t), C2D_SEPARATING);
+    }
+}
+
+/* |d| = R exactly (a 3-4-5 triangle): touching now, a hit only when approaching. */
+static void test_exactly_touching_pairs_hit_now_only_when_approaching(void **state)
+{
+    int k;
+    (void)state;
+    for (k = -1000; k <= 1000; k += 100) {
+        double s = ldexp(1.0, k), t = -1;
+        c2d_body a = body(0, 0, 1, 0), b = body(3 * s, 4 * s, 0, 0);
+        assert_status(c2d_time_of_impact(&a, &b, 5 * s, &t), C2D_OK);
+        assert_close(t, 0, 0);
+        a.vel.x = -1;
+        assert_status(c2d_time_of_impact(&a, &b, 5 * s, &t), C2D_SEPARATING);
+        a.vel.x = 0, a.vel.y = 0, b.vel.x = 4, b.vel.y = -3; /* sliding along the contact */
+        assert_status(c2d_time_of_impact(&a, &b, 5 * s, &t), C2D_SEPARATING);
+    }
+}
+
+static void gen_toi(c2d_rng *r, ref_case *c, double *radius, int scale_pos, int scale_vel)
+{
+    double ang = c2d_rng_range(r, 0, 6.283185307179586), dist = exp(c2d_rng_range(r, 0, log(1e6)));
+    double aim = c2d_rng_range(r, -1.5, 1.5), speed = c2d_rng_range(r, 0.1, 10);
+    c->pa[0] = c2d_rng_range(r, -10, 10);
+    c->pa[1] = c2d_rng_range(r, -10, 10);
+    c->pb[0] = c->pa[0] + dist * cos(ang);
+    c->pb[1] = c->pa[1] + dist * sin(ang);
+    /* relative velocity pointed roughly at a, so many hit, some miss */
+    c->va[0] = c2d_rng_range(r, -1, 1), c->va[1] = c2d_rng_range(r, -1, 1);
+    c->vb[0] = c->va[0] - speed * cos(ang + aim * 0.01 * (c2d_rng_next(r) % 4 == 0 ? 100 : 1));
+    c->vb[1] = c->va[1] - speed * sin(ang + aim * 0.01 * (c2d_rng_next(r) % 4 == 0 ? 100 : 1));
+    *radius = c2d_rng_range(r, 0.1, 3) * (c2d_rng_next(r) % 3 == 0 ? dist * 0.5 : 1);
+    c->pa[0] = ldexp(c->pa[0], scale_pos), c->pa[1] = ldexp(c->pa[1], scale_pos);
+    c->pb[0] = ldexp(c->pb[0], scale_pos), c->pb[1] = ldexp(c->pb[1], scale_pos);
+    *radius = ldexp(*radius, scale_pos);
+    c->va[0] = ldexp(c->va[0], scale_vel), c->va[1] = ldexp(c->va[1], scale_vel);
+    c->vb[0] = ldexp(c->vb[0], scale_vel), c->vb[1] = ldexp(c->vb[1], scale_vel);
+    /* Not used by the time of impact; set so that every field is defined. */
+    c->ma = c->mb = 1, c->n[0] = c->n[1] = 0, c->has_normal = 0, c->e = 0;
+}
+
+/* Every component with its own exponent anywhere in the format's range
+ * (subnormals included): magnitudes that differ by more than the exponent
+ * range, the audit's failure kind.  Approaching more often than not. */
+static void gen_toi_ratios(c2d_rng *r, ref_case *c, double *radius, int prec, int emin, int emax)
+{
+    int i, sub = emin - prec + 1;
+    for (i = 0; i < 2; i++) {
+        c->pa[i] = c2d_rng_next(r) % 4 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
+        c->pb[i] = gen_magnitude(r, sub, emax - 2, prec);
+        c->va[i] = c2d_rng_next(r) % 4 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
+        c->vb[i] = c2d_rng_next(r) % 3 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
+    }
+    *radius = fabs(gen_magnitude(r, sub, emax - 2, prec));
+    if (c2d_rng_next(r) % 4 != 0 &&
+        (c->pb[0] - c->pa[0]) * (c->vb[0] - c->va[0]) + (c->pb[1] - c->pa[1]) * (c->vb[1] - c->va[1]) > 0)
+        for (i = 0; i < 2; i++) c->va[i] = -c->va[i], c->vb[i] = -c->vb[i];
+    c->ma = c->mb = 1, c->n[0] = c->n[1] = 0, c->has_normal = 0, c->e = 0;
+}
+
+/* extreme: 0 unit scale, 1 scaled over the range, 2 magnitude ratios */
+static void run_random(int is_float, int extreme, uint64_t seed)
+{
+    c2d_rng r;
+    int i, hits = 0, prec = is_float ? 24 : 53, emin = is_float ? -126 : -1022, emax = is_float ? 100 : 1000;
+    double worst = 0;
+    r.s = seed;
+    for (i = 0; i < CASES; i++) {
+        ref_case c;
+        double radius, want = 0, unit = 0, t = -1, err;
+        c2d_status got, exp_st;
+        int sp = extreme == 1 ? (int)(c2d_rng_next(&r) % (uint64_t)(2 * emax)) - emax : 0;
+        int sv = extreme == 1 ? (int)(c2d_rng_next(&r) % (uint64_t)(2 * emax)) - emax : 0;
+        if (extreme == 2)
+            gen_toi_ratios(&r, &c, &radius, prec, emin, is_float ? 127 : 1023);
+        else
+            gen_toi(&r, &c, &radius, sp, sv);
+        if (is_float) {
+            c2d_bodyf a, b;
+            float tf = -1;
+            /* Rounded out of line: gcc 12.2's -O2 SLP vectoriser dropped the
+             * velocities' rounding when it was written inline here. */
+            case_to_float(&c);
+            radius = (float)radius;
+            case_to_bodiesf(&c, &a, &b);
+            got = c2d_time_of_impactf(&a, &b, (float)radius, &tf);
+            t = tf;
+        } else {
+            c2d_body a, b;
+            case_to_bodies(&c, &a, &b);
+            got = c2d_time_of_impact(&a, &b, radius, &t);
+        }
+        exp_st = ref_time_of_impact(&c, radius, &want, &unit, prec, emin);
+        if (exp_st == C2D_OK && want > (is_float ? FLT_MAX : DBL_MAX)) exp_st = C2D_RANGE;
+        if (got != exp_st) {
+            print_error("pa=(%a,%a) pb=(%a,%a) va=(%a,%a) vb=(%a,%a) R=%a\n", c.pa[0], c.pa[1], c.pb[0], c.pb[1],
+                        c.va[0], c.va[1], c.vb[0], c.vb[1], radius);
+            assert_status(got, exp_st);
+        }
+        if (got != C2D_OK) continue;
+        hits++;
+        err = fabs(t - want) / unit;
+        if (!(err <= BOUND_UNITS)) {
+            print_error("t=%a want %a err %.2f units: pa=(%a,%a) pb=(%a,%a) va=(%a,%a) vb=(%a,%a) R=%a\n", t, want,
+                        err, c.pa[0], c.pa[1], c.pb[0], c.pb[1], c.va[0], c.va[1], c.vb[0], c.vb[1], radius);
+            fail();
+        }
+        if (err > worst) worst = err;
+    }
+    assert_true(hits > (extreme == 2 ? CASES / 50 : CASES / 10));
+    print_message("%s %s: %d impacts, worst %.2f units of (ulp(t) + ulp(|d|)/closing speed)\n",
+                  is_float ? "float " : "double",
+                  extreme == 2 ? "magnitude ratios" : (extreme ? "scaled over the range" : "unit scale"), hits, worst);
+}
+
+static void test_double_time_of_impact_matches_referee(void **state)
+{
+    (void)state;
+    run_random(0, 0, 201);
+}
+
+static void test_double_time_of_impact_matches_referee_at_extreme_scales(void **state)
+{
+    (void)state;
+    run_random(0, 1, 202);
+}
+
+static void test_float_time_of_impact_matches_referee(void **state)
+{
+    (void)state;
+    run_random(1, 0, 203);
+}
+
+static void test_float_time_of_impact_matches_referee_at_extreme_scales(void **state)
+{
+    (void)state;
+    run_random(1, 1, 204);
+}
+
+static void test_double_statuses_exact_at_any_magnitude_ratio(void **state)
+{
+    (void)state;
+    run_random(0, 2, 205);
+}
+
+static void test_float_statuses_exact_at_any_magnitude_ratio(void **state)
+{
+    (void)state;
+    run_random(1, 2, 206);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_head_on_time_is_gap_over_closing_speed),
+        cmocka_unit_test(test_miss_receding_and_no_motion_are_separating),
+        cmocka_unit_test(test_overlapping_pair_impacts_now_only_when_approaching),
+        cmocka_unit_test(test_bad_arguments_are_invalid),
+        cmocka_unit_test(test_far_apart_small_disks_keep_full_accuracy),
+        cmocka_unit_test(test_time_overflowing_double_is_range),
+        cmocka_unit_test(test_double_time_of_impact_matches_referee),
+        cmocka_unit_test(test_double_time_of_impact_matches_referee_at_extreme_scales),
+        cmocka_unit_test(test_float_time_of_impact_matches_referee),
+        cmocka_unit_test(test_float_time_of_impact_matches_referee_at_extreme_scales),
+        cmocka_unit_test(test_float_miss_beyond_the_exponent_range_is_separating),
+        cmocka_unit_test(test_double_miss_beyond_the_exponent_range_is_separating),
+        cmocka_unit_test(test_overlapping_approach_decided_by_a_tiny_component_is_a_hit_now),
+        cmocka_unit_test(test_exact_grazes_are_separating_and_near_grazes_exact),
+        cmocka_unit_test(test_exactly_touching_pairs_hit_now_only_when_approaching),
+        cmocka_unit_test(test_double_statuses_exact_at_any_magnitude_ratio),
+        cmocka_unit_test(test_float_statuses_exact_at_any_magnitude_ratio),
+    };
+    return cmocka_run_group_tests_name("time_of_impact", tests, NULL, NULL);
+}

@@ -1,0 +1,47 @@
+/* The shared vector table (tests/vectors/vectors.c, also run on emulated
+ * MCUs), checked by the code the MCU harness runs (check_template.h): every
+ * entry's status, outputs within its tolerance, nothing written that may
+ * not be, and the batch lanes against the scalar call.  `make test` also
+ * regenerates the table from the exact referee and requires it unchanged. */
+#include "check.h"
+#include "check_vectors.h"
+
+/* Every entry of a table passes; failures were printed as they happened. */
+static void assert_table_passes(void (*check)(c2d_tally *), int count)
+{
+    c2d_tally tally = {0, 0};
+    check(&tally);
+    assert_int_equal(tally.failed, 0);
+    assert_int_equal(tally.passed, count);
+}
+
+static void test_double_vectors_pass(void **state)
+{
+    (void)state;
+    assert_true(c2d_vector_count_d > 30);
+    assert_table_passes(c2d_check_vectors_d, c2d_vector_count_d);
+}
+
+static void test_float_vectors_pass(void **state)
+{
+    (void)state;
+    assert_true(c2d_vector_count_f > 20);
+    assert_table_passes(c2d_check_vectors_f, c2d_vector_count_f);
+}
+
+static void test_fixed_vectors_pass(void **state)
+{
+    (void)state;
+    assert_true(c2d_vector_count_x > 20);
+    assert_table_passes(c2d_check_vectors_x, c2d_vector_count_x);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_double_vectors_pass),
+        cmocka_unit_test(test_float_vectors_pass),
+        cmocka_unit_test(test_fixed_vectors_pass),
+    };
+    return cmocka_run_group_tests_name("vectors", tests, NULL, NULL);
+}
