@@ -10,7 +10,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "toi_accel_scaffold.h"
+extern "C" {
+#include "collide2d.h"
+}
+
 
 namespace demo {
 

@@ -44,7 +44,10 @@
 #include <queue>
 
 #include "slow_contact.h"
-#include "toi_accel_scaffold.h"
+
+extern "C" {
+#include "collide2d.h"
+}
 
 namespace demo {
 
