@@ -11,7 +11,7 @@
 
 namespace demo {
 
-std::unique_ptr<Engine> make_box2d_engine(const std::vector<Ball> &balls, const Table &table, Restitution restitution);
+std::unique_ptr<Engine> make_box2d_engine(const std::vector<Ball> &balls, const Table &table, const Model &model);
 
 }  // namespace demo
 

@@ -1,7 +1,10 @@
-// checker.cpp - see checker.h.  A ball's path over a frame is straight
-// between its waypoints, so a pair's relative motion is straight on each
-// piece between the union of both balls' waypoint times; on each piece
-// c2d_time_of_impact tells whether the centres came within a diameter.
+// checker.cpp - see checker.h.  Between its waypoints a ball moves as the
+// engine says it does, p(t) = p0 + v (t - t0) + a (t - t0)^2 / 2 (Box2D's
+// balls, and any ball before its first waypoint, move straight between the
+// positions the frame starts and ends with), so a pair's relative motion is
+// quadratic on each piece between the union of both balls' waypoint times;
+// on each piece c2d_time_of_impact_accel tells whether the centres came
+// within a diameter.
 #include "checker.h"
 
 #include <algorithm>
@@ -11,42 +14,38 @@ extern "C" {
 #include "collide2d.h"
 }
 
+
 namespace demo {
 
 namespace {
 
-// A ball's path over the frame: straight pieces between its waypoints.
+// A ball's path over the frame.
 struct Path {
     const Ball *start, *end;
     const Waypoint *bends, *bends_end;
     double dt;
-    void at(double t, double &x, double &y) const {
-        double t0 = 0, x0 = start->x, y0 = start->y;
-        const Waypoint *w = bends;
-        while (w != bends_end && w->t <= t) {
-            t0 = w->t, x0 = w->x, y0 = w->y;
-            ++w;
+    // Position, velocity and acceleration at t, on the piece that starts at
+    // or before t.
+    void at(double t, c2d_body &b, c2d_vec2 &acc) const {
+        const Waypoint *w = nullptr;
+        for (const Waypoint *k = bends; k != bends_end && k->t <= t; ++k) w = k;
+        b.mass = kBallMass;
+        if (w) {
+            const double h = t - w->t;
+            b.pos = c2d_vec2{w->x + w->vx * h + 0.5 * w->ax * h * h, w->y + w->vy * h + 0.5 * w->ay * h * h};
+            b.vel = c2d_vec2{w->vx + w->ax * h, w->vy + w->ay * h};
+            acc = c2d_vec2{w->ax, w->ay};
+            return;
         }
-        const double t1 = w != bends_end ? w->t : dt;
-        const double x1 = w != bends_end ? w->x : end->x, y1 = w != bends_end ? w->y : end->y;
-        const double f = t1 > t0 ? (t - t0) / (t1 - t0) : 0.0;
-        x = x0 + (x1 - x0) * f;
-        y = y0 + (y1 - y0) * f;
+        // straight from the frame's start to the first waypoint, or its end
+        const double t1 = bends != bends_end ? bends->t : dt;
+        const double x1 = bends != bends_end ? bends->x : end->x, y1 = bends != bends_end ? bends->y : end->y;
+        const double f = t1 > 0 ? t / t1 : 0.0;
+        b.pos = c2d_vec2{start->x + (x1 - start->x) * f, start->y + (y1 - start->y) * f};
+        b.vel = t1 > 0 ? c2d_vec2{(x1 - start->x) / t1, (y1 - start->y) / t1} : c2d_vec2{0, 0};
+        acc = c2d_vec2{0, 0};
     }
 };
-
-void piece_body(const Path &p, double t0, double t1, c2d_body &b) {
-    double x1, y1;
-    p.at(t0, b.pos.x, b.pos.y);
-    // the position just before t1 (a bend at t1 starts the next piece)
-    const Waypoint *w = p.bends;
-    while (w != p.bends_end && w->t < t1) ++w;
-    if (w != p.bends_end && w->t == t1) x1 = w->x, y1 = w->y;
-    else p.at(t1, x1, y1);
-    b.vel.x = (x1 - b.pos.x) / (t1 - t0);
-    b.vel.y = (y1 - b.pos.y) / (t1 - t0);
-    b.mass = kBallMass;
-}
 
 bool entered(const Path &a, const Path &b) {
     std::vector<double> cuts = {0.0, a.dt};
@@ -57,26 +56,41 @@ bool entered(const Path &a, const Path &b) {
         const double t0 = cuts[k], t1 = cuts[k + 1];
         if (t1 <= t0) continue;
         c2d_body pa, pb;
-        piece_body(a, t0, t1, pa);
-        piece_body(b, t0, t1, pb);
+        c2d_vec2 aa, ab;
+        a.at(t0, pa, aa);
+        b.at(t0, pb, ab);
         double t;
-        // Positions carry rounding, and a piece can be 1e-17 s long, so its
-        // velocity is noise: count only a real entry, deeper than 1e-9 of a
-        // diameter (a pair that crosses goes a whole diameter deep).
-        if (c2d_time_of_impact(&pa, &pb, kBallDiameter * (1 - 1e-9), &t) == C2D_OK && t < t1 - t0) return true;
+        // Positions carry rounding: count only a real entry, deeper than
+        // 1e-9 of a diameter (a pair that crosses goes a whole diameter deep).
+        const double r = kBallDiameter * (1 - 1e-9);
+        const bool straight = aa.x == 0 && aa.y == 0 && ab.x == 0 && ab.y == 0;
+        if (straight ? c2d_time_of_impact(&pa, &pb, r, &t) == C2D_OK && t < t1 - t0
+                     : c2d_time_of_impact_accel(&pa, aa, &pb, ab, r, t1 - t0, &t) == C2D_OK)
+            return true;
     }
     return false;
 }
 
+// The deepest overlap of a ball with a cushion face, jaw facing or nose, as a
+// fraction of a diameter.
 double cushion_overlap(const Ball &b, const Table &table) {
     double worst = 0;
-    for (const Segment &s : table.cushions) {
+    auto face = [&](const Segment &s) {
         const double ex = s.bx - s.ax, ey = s.by - s.ay;
         const double along = (b.x - s.ax) * ex + (b.y - s.ay) * ey;
-        if (along < 0 || along > ex * ex + ey * ey) continue;
+        if (along < 0 || along > ex * ex + ey * ey) return;
         const double depth = kBallRadius - ((b.x - s.ax) * s.nx + (b.y - s.ay) * s.ny);
+        // a ball behind a face has gone through it: as deep as it is behind
         worst = std::max(worst, depth / kBallDiameter);
-    }
+    };
+    for (const Segment &s : table.cushions) face(s);
+    for (const Pocket &p : table.pockets)
+        for (const Jaw &j : p.jaws) {
+            face(j.facing);
+            const double dx = b.x - j.nose_x, dy = b.y - j.nose_y, touch = j.nose_r + kBallRadius;
+            if (dx * dx + dy * dy < touch * touch)
+                worst = std::max(worst, (touch - std::hypot(dx, dy)) / kBallDiameter);
+        }
     return worst;
 }
 
@@ -156,7 +170,7 @@ void Checker::count_escaped(const std::vector<Ball> &after, const Table &table, 
     escaped_.resize(after.size(), 0);
     for (size_t i = 0; i < after.size(); ++i) {
         const Ball &b = after[i];
-        const bool outside = b.x < 0 || b.x > table.length || b.y < 0 || b.y > table.width;
+        const bool outside = !on_table(table, b.x, b.y);
         if (b.active && outside && !escaped_[i]) {
             escaped_[i] = 1;
             ++stats.escaped;

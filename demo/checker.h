@@ -5,7 +5,8 @@
 //              other side without a contact the engine resolved;
 //   overlap    the deepest ball-ball or ball-cushion overlap at the frame's
 //              end, as a fraction of a diameter;
-//   escaped    balls that left the playing surface (each counted once).
+//   escaped    balls that left the playing surface and are not in a
+//              pocket's mouth (each counted once).
 #ifndef C2D_DEMO_CHECKER_H
 #define C2D_DEMO_CHECKER_H
 

@@ -3,16 +3,23 @@
 #                    print a summary, write $(B)/billiards.png
 #   make play        build and open the window
 #   make test-demo   the demo's tests (part of `make test`)
-#   make demo-plots  regenerate docs/billiards.png, docs/energy.png, docs/gas_histogram.png
-# Screenshots use demo/png.cpp (a stored-deflate PNG writer), so the demo
-# needs neither libpng nor zlib; only the tests' checker decodes with libpng,
-# an independent reader of what the writer produced.
+#   make demo-plots  regenerate docs/billiards.png, docs/energy.png, docs/gas_histogram.png,
+#                    docs/shot_path.png
+# Screenshots are compressed PNGs written with libpng (demo/png.cpp); the
+# tests' checker reads them back with libpng's reader.
 
 DEMO_DEPS := libbox2d-dev libsdl2-dev
 DEMO_TEST_DEPS := xvfb xauth libpng-dev
 DEMO_PLOT_DEPS := gnuplot-nox
-DEMO_SRC := demo/main.cpp demo/scene.cpp demo/exact_engine.cpp demo/box2d_engine.cpp demo/checker.cpp demo/sim.cpp demo/render.cpp demo/png.cpp
-DEMO_HDR := demo/scene.h demo/engine.h demo/exact_engine.h demo/box2d_engine.h demo/checker.h demo/sim.h demo/render.h demo/png.h
+# the simulation (no SDL): scene, table, ball motion, engines, checker, the
+# run and the shot seam; test_physics links these alone
+DEMO_SIM_SRC := demo/scene.cpp demo/table.cpp demo/motion.cpp demo/exact_engine.cpp demo/slow_contact.cpp demo/box2d_engine.cpp demo/checker.cpp demo/sim.cpp
+DEMO_SRC := demo/main.cpp demo/cli.cpp $(DEMO_SIM_SRC) demo/render.cpp demo/png.cpp
+DEMO_HDR := demo/cli.h demo/scene.h demo/table.h demo/motion.h demo/model.h demo/events.h demo/engine.h demo/exact_engine.h demo/slow_contact.h demo/box2d_engine.h demo/checker.h demo/sim.h demo/render.h demo/png.h
+# the window: software drawing, aiming aids, panel, sound (issue 11, part B)
+DEMO_SRC += demo/canvas.cpp demo/font.cpp demo/engine_view.cpp demo/draw_table.cpp demo/draw_balls.cpp demo/aim.cpp demo/hud.cpp demo/audio.cpp
+DEMO_HDR += demo/canvas.h demo/font.h demo/view.h demo/engine_view.h demo/draw_table.h demo/draw_balls.h demo/aim.h demo/hud.h demo/audio.h
+DEMO_DEPS += libpng-dev
 DEMO_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SRC))
 DEMO_BIN := $(B)/billiards
 DEMO_CXXFLAGS = $(CXXFLAGS) -std=c++17 -Wall -Wextra -ffp-contract=off -Iinclude $(SAN_FLAGS)
@@ -31,7 +38,7 @@ $(B)/demo/%.o: demo/%.cpp $(DEMO_HDR) $(LIB_HDR) | demo-deps
 	$(CXX) $(DEMO_CXXFLAGS) $$(sdl2-config --cflags) -c $< -o $@
 
 $(DEMO_BIN): $(DEMO_OBJ) $(STATIC)
-	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $(DEMO_OBJ) $(STATIC) -lbox2d $$(sdl2-config --libs) -lm
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $(DEMO_OBJ) $(STATIC) -lbox2d $$(sdl2-config --libs) -lpng -lm
 
 demo: $(DEMO_BIN)
 	$(DEMO_BIN) --headless --screenshot $(B)/billiards.png
@@ -44,7 +51,12 @@ $(B)/png_check: demo/png_check.cpp | demo-test-deps
 	@mkdir -p $(@D)
 	$(CXX) $(DEMO_CXXFLAGS) -o $@ $< -lpng
 
-test-demo: $(DEMO_BIN) $(B)/png_check | demo-test-deps
+# The pool model against the textbook laws, and 1,000 random shots
+$(B)/test_physics: demo/test_physics.cpp $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SIM_SRC)) $(STATIC) $(DEMO_HDR)
+	$(CXX) $(DEMO_CXXFLAGS) -o $@ $< $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SIM_SRC)) $(STATIC) -lbox2d -lm
+
+test-demo: $(DEMO_BIN) $(B)/png_check $(B)/test_physics | demo-test-deps
+	$(B)/test_physics
 	sh demo/test_demo.sh $(DEMO_BIN) $(B)/png_check
 
 demo-plots: $(DEMO_BIN)

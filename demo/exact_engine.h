@@ -1,5 +1,7 @@
-// exact_engine.h - the exact engine: impacts found in time order and
-// resolved with collide2d; Box2D's dynamic tree only proposes candidates.
+// exact_engine.h - the exact engine: every ball moves in closed form between
+// events (motion.h: quadratic in t), events are found and processed in time
+// order, impacts are resolved with collide2d; Box2D's dynamic tree only
+// proposes candidate pairs.
 #ifndef C2D_DEMO_EXACT_ENGINE_H
 #define C2D_DEMO_EXACT_ENGINE_H
 
@@ -10,7 +12,7 @@
 
 namespace demo {
 
-std::unique_ptr<Engine> make_exact_engine(const std::vector<Ball> &balls, const Table &table, Restitution restitution);
+std::unique_ptr<Engine> make_exact_engine(const std::vector<Ball> &balls, const Table &table, const Model &model);
 
 }  // namespace demo
 

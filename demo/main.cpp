@@ -1,5 +1,10 @@
-// main.cpp - command line of the billiards demo: options, headless run,
-// JSON / summary output, trace and screenshots.  See `billiards --help`.
+// main.cpp - the billiards demo's entry point: decides between the window
+// and a headless run (before SDL touches the video system), runs it, and
+// writes what was asked for (summary or JSON, events, trace, speeds,
+// screenshots).  Output files are opened before simulating, and any write
+// error is reported (exit 1).
+#include <unistd.h>
+
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -11,163 +16,125 @@
 #include <utility>
 #include <vector>
 
+#include "cli.h"
 #include "render.h"
 #include "sim.h"
 
 namespace {
 
+using demo::Options;
 using demo::Response;
 using demo::Scene;
 using demo::Shot;
 using demo::Simulation;
+using demo::UsageError;
 
-const char kUsage[] =
-    "usage: billiards [options]\n"
-    "  --scene break|elastic|gas   scene (default break)\n"
-    "  --response collide2d|box2d  who resolves collisions (default collide2d)\n"
-    "  --balls N                   gas: number of disks (default 1000)\n"
-    "  --headless                  no window (automatic without a display)\n"
-    "  --shot ANGLE_DEG,SPEED_MPS  cue shot, may repeat (default 0,12: the break)\n"
-    "  --seconds S                 simulated time (default: until rest; 60 for elastic/gas)\n"
-    "  --seed N                    rack order / gas start (default 1)\n"
-    "  --json                      one JSON object on stdout instead of the summary\n"
-    "  --screenshot FILE.png       final frame, rendered offscreen\n"
-    "  --screenshot-window FILE.png  final frame drawn in a real window and read back\n"
-    "  --trace FILE.csv            time, kinetic energy, momentum per frame\n"
-    "  --speeds FILE               final speeds, one per line (gas histogram)\n";
-
-struct Options {
-    demo::SimConfig config;
-    bool balls_given = false, headless = false, json = false;
-    std::vector<Shot> shots;
-    double seconds = -1;  // < 0: the scene's default
-    std::string screenshot, screenshot_window, trace, speeds;
-};
-
-struct UsageError {
-    std::string message;
-};
-
-[[noreturn]] void fail(const std::string &message) { throw UsageError{message}; }
-
-double parse_number(const std::string &flag, const std::string &text) {
-    errno = 0;
-    char *end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-        fail(flag + ": '" + text + "' is not a finite number");
-    return v;
-}
-
-unsigned long long parse_unsigned(const std::string &flag, const std::string &text) {
-    errno = 0;
-    char *end = nullptr;
-    const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-    if (text.empty() || text[0] == '-' || text[0] == '+' || *end != '\0' || errno == ERANGE)
-        fail(flag + ": '" + text + "' is not a non-negative integer");
-    return v;
-}
-
-Shot parse_shot(const std::string &text) {
-    const size_t comma = text.find(',');
-    if (comma == std::string::npos) fail("--shot: expected ANGLE_DEG,SPEED_MPS, got '" + text + "'");
-    const Shot s{parse_number("--shot angle", text.substr(0, comma)), parse_number("--shot speed", text.substr(comma + 1))};
-    if (!(s.speed > 0 && s.speed <= demo::kMaxShotSpeed))
-        fail("--shot: speed must be in (0, " + std::to_string(static_cast<int>(demo::kMaxShotSpeed)) + "] m/s");
-    return s;
-}
-
-void check_consistency(const Options &o) {
-    if (o.config.scene == Scene::Gas && !o.shots.empty()) fail("--shot does not apply to --scene gas");
-    if (o.config.scene != Scene::Gas && o.balls_given) fail("--balls only applies to --scene gas");
-}
-
-Options parse(int argc, char **argv) {
-    Options o;
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) fail(flag + " needs a value");
-            return argv[++i];
-        };
-        if (flag == "--help" || flag == "-h") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
-        } else if (flag == "--scene") {
-            const std::string v = value();
-            if (v == "break") o.config.set_scene(Scene::Break);
-            else if (v == "elastic") o.config.set_scene(Scene::Elastic);
-            else if (v == "gas") o.config.set_scene(Scene::Gas);
-            else fail("--scene: unknown scene '" + v + "' (break, elastic or gas)");
-        } else if (flag == "--response") {
-            const std::string v = value();
-            if (v == "collide2d") o.config.response = Response::Collide2d;
-            else if (v == "box2d") o.config.response = Response::Box2d;
-            else fail("--response: unknown response '" + v + "' (collide2d or box2d)");
-        } else if (flag == "--balls") {
-            const unsigned long long n = parse_unsigned(flag, value());
-            if (n < 1 || n > 200000) fail("--balls: must be between 1 and 200000");
-            o.config.gas_balls = static_cast<int>(n);
-            o.balls_given = true;
-        } else if (flag == "--seconds") {
-            o.seconds = parse_number(flag, value());
-            if (o.seconds < 0 || o.seconds > 86400) fail("--seconds: must be between 0 and 86400");
-        } else if (flag == "--seed") {
-            o.config.seed = parse_unsigned(flag, value());
-        } else if (flag == "--shot") {
-            o.shots.push_back(parse_shot(value()));
-        } else if (flag == "--headless") {
-            o.headless = true;
-        } else if (flag == "--json") {
-            o.json = true;
-        } else if (flag == "--screenshot") {
-            o.screenshot = value();
-        } else if (flag == "--screenshot-window") {
-            o.screenshot_window = value();
-        } else if (flag == "--trace") {
-            o.trace = value();
-        } else if (flag == "--speeds") {
-            o.speeds = value();
-        } else {
-            fail("unknown option '" + flag + "' (see --help)");
-        }
+// An output file, opened up front; every write error is kept and reported
+// when it is closed.
+class OutFile {
+public:
+    OutFile() = default;
+    explicit OutFile(const std::string &path, const char *mode = "w") : path_(path) {
+        if (path.empty()) return;
+        f_ = std::fopen(path.c_str(), mode);
+        if (!f_) throw UsageError{path + ": " + std::strerror(errno)};
     }
-    check_consistency(o);
-    return o;
-}
+    OutFile(const OutFile &) = delete;
+    OutFile &operator=(const OutFile &) = delete;
+    ~OutFile() {
+        if (f_) std::fclose(f_);
+    }
+    FILE *get() const { return f_; }
+    // Closes the file; false (with the reason in error) if anything failed.
+    bool close(std::string &error) {
+        if (!f_) return true;
+        const bool failed = std::ferror(f_) != 0;
+        const int saved = errno;
+        const bool closed = std::fclose(f_) == 0;
+        f_ = nullptr;
+        if (failed || !closed) {
+            error = path_ + ": " + std::strerror(failed ? (saved ? saved : EIO) : errno);
+            return false;
+        }
+        return true;
+    }
+
+private:
+    std::string path_;
+    FILE *f_ = nullptr;
+};
 
 struct Totals {
     double energy_start = 0, energy_end = 0, wall_seconds = 0;
     double momentum_start[2] = {0, 0}, momentum_end[2] = {0, 0};
 };
 
-class Trace {
+// --trace and --events, written as the frames go.
+class Recorder {
 public:
-    explicit Trace(const std::string &path) : f_(path.empty() ? nullptr : std::fopen(path.c_str(), "w")) {
-        if (!path.empty() && !f_) throw std::runtime_error(path + ": " + std::strerror(errno));
-        if (f_) std::fputs("time,kinetic_energy,momentum_x,momentum_y\n", f_);
+    explicit Recorder(const Options &o) : trace_(o.trace), events_(o.events) {
+        if (trace_.get()) std::fputs("time,kinetic_energy,momentum_x,momentum_y\n", trace_.get());
+        if (events_.get()) std::fputs("time,kind,ball,other,x,y,vx,vy,wx,wy,wz\n", events_.get());
     }
-    ~Trace() {
-        if (f_) std::fclose(f_);
+    void frame(const Simulation &sim) {
+        if (trace_.get()) {
+            double p[2];
+            sim.momentum(p);
+            std::fprintf(trace_.get(), "%.6f,%.17g,%.17g,%.17g\n", sim.stats().sim_seconds, sim.energy(), p[0], p[1]);
+        }
+        if (events_.get()) {
+            const std::vector<demo::Ball> &balls = sim.balls();
+            for (const demo::Event &e : sim.frame_events()) {
+                const int other = e.other < 0 ? -1 : balls[static_cast<size_t>(e.other)].number;
+                std::fprintf(events_.get(), "%.17g,%s,%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e.t,
+                             demo::event_name(e.kind), balls[static_cast<size_t>(e.ball)].number, other, e.x, e.y, e.vx,
+                             e.vy, e.wx, e.wy, e.wz);
+            }
+        }
     }
-    void row(const Simulation &sim) {
-        if (!f_) return;
-        double p[2];
-        sim.momentum(p);
-        std::fprintf(f_, "%.6f,%.17g,%.17g,%.17g\n", sim.stats().sim_seconds, sim.energy(), p[0], p[1]);
-    }
+    bool close(std::string &error) { return trace_.close(error) && events_.close(error); }
 
 private:
-    FILE *f_;
+    OutFile trace_, events_;
+};
+
+// Shows how far a long run has got, on a terminal only.
+class Progress {
+public:
+    explicit Progress(double seconds) : total_(seconds), on_(isatty(STDERR_FILENO) != 0), start_(Clock::now()), last_(start_) {}
+    void frame(const Simulation &sim) {
+        if (!on_ || (sim.stats().steps & 63) != 0) return;
+        const Clock::time_point now = Clock::now();
+        if (now - last_ < std::chrono::milliseconds(500) || now - start_ < std::chrono::seconds(1)) return;
+        last_ = now;
+        shown_ = true;
+        if (total_ > 0)
+            std::fprintf(stderr, "\rbilliards: simulated %.0f of %.0f s (%.0f%%)  ", sim.time(), total_,
+                         100 * sim.time() / total_);
+        else
+            std::fprintf(stderr, "\rbilliards: simulated %.0f s, not at rest yet  ", sim.time());
+    }
+    ~Progress() {
+        if (shown_) std::fprintf(stderr, "\r%60s\r", "");
+    }
+    Progress(const Progress &) = delete;
+    Progress &operator=(const Progress &) = delete;
+
+private:
+    using Clock = std::chrono::steady_clock;
+    double total_;
+    bool on_, shown_ = false;
+    Clock::time_point start_, last_;
 };
 
 // Shots are played one after another, each once the table is at rest; without
-// --seconds the run ends when the last shot has come to rest.
+// --seconds the run ends when the last shot has come to rest (or after an
+// hour of simulated time a shot: a safety net, reported).
 class Headless : public demo::Driver {
 public:
-    Headless(std::vector<Shot> shots, long frames, Trace &trace)
-        : shots_(std::move(shots)), frames_(frames), safety_frames_(3600L * 60L * static_cast<long>(shots_.size() + 1)),
-          trace_(trace) {}
+    Headless(std::vector<Shot> shots, long frames, Recorder &recorder, Progress &progress)
+        : shots_(std::move(shots)), frames_(frames),
+          safety_frames_(3600L * 60L * static_cast<long>(shots_.size() + 1)), recorder_(recorder), progress_(progress) {}
     // Takes the next shot, if any is left.
     bool shoot_next(Simulation &sim) {
         if (next_shot_ == shots_.size()) return false;
@@ -176,55 +143,85 @@ public:
     }
     bool next_frame(Simulation &sim) override {
         const long steps = sim.stats().steps;
-        return !(frames_ >= 0 && steps >= frames_) && steps < safety_frames_;
+        if (frames_ >= 0) return steps < frames_;
+        if (steps >= safety_frames_) {
+            gave_up_ = true;
+            return false;
+        }
+        return true;
     }
     bool before_step(Simulation &sim, bool was_at_rest) override {
         return !was_at_rest || shoot_next(sim) || frames_ >= 0;
     }
-    void after_step(const Simulation &sim) override { trace_.row(sim); }
+    void after_step(const Simulation &sim) override {
+        recorder_.frame(sim);
+        progress_.frame(sim);
+    }
+    double frame_seconds() const override { return 0; }
+    bool gave_up() const { return gave_up_; }
 
 private:
     std::vector<Shot> shots_;
     size_t next_shot_ = 0;
     long frames_;  // < 0: until the last shot has come to rest
     long safety_frames_;
-    Trace &trace_;
+    Recorder &recorder_;
+    Progress &progress_;
+    bool gave_up_ = false;
 };
-
-Totals run_headless(Simulation &sim, const Options &o) {
-    std::vector<Shot> shots = o.shots;
-    if (shots.empty() && o.config.scene != Scene::Gas) shots.push_back(Shot{0, 12});
-    double seconds = o.seconds;
-    if (seconds < 0 && sim.lossless()) seconds = 60;
-    const long frames = seconds < 0 ? -1 : static_cast<long>(std::ceil(seconds / demo::kFrameDt - 1e-9));
-    Trace trace(o.trace);
-    Headless headless(shots, frames, trace);
-    headless.shoot_next(sim);
-    Totals t;
-    t.energy_start = sim.energy();
-    sim.momentum(t.momentum_start);
-    trace.row(sim);
-    const auto start = std::chrono::steady_clock::now();
-    demo::run(sim, headless);
-    t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    t.energy_end = sim.energy();
-    sim.momentum(t.momentum_end);
-    return t;
-}
 
 const char *scene_name(Scene s) { return s == Scene::Break ? "break" : s == Scene::Elastic ? "elastic" : "gas"; }
 const char *response_name(Response r) { return r == Response::Box2d ? "box2d" : "collide2d"; }
 
+void print_model(const Simulation &sim) {
+    const demo::SimConfig &c = sim.config();
+    const demo::Model &m = c.model;
+    std::printf("\"model\":{\"friction\":%s,\"ball_radius\":%.17g,\"ball_mass\":%.17g,\"ball_inertia\":%.17g,"
+                "\"gravity\":%.17g,\"mu_slide\":%.17g,\"mu_roll\":%.17g,\"mu_spin\":%.17g,\"spin_deceleration\":%.17g,"
+                "\"ball_restitution\":%.17g,\"ball_friction\":%.17g,\"ball_tangential_restitution\":%.17g,"
+                "\"cushion_restitution\":%.17g,\"cushion_friction\":%.17g,\"cushion_tangential_restitution\":%.17g,"
+                "\"absorb_below\":%.17g,\"table_length\":%.17g,\"table_width\":%.17g",
+                m.friction ? "true" : "false", demo::kBallRadius, demo::kBallMass, demo::kBallInertia, m.cloth.gravity,
+                m.cloth.slide, m.cloth.roll, m.cloth.spin, m.cloth.spin_deceleration(), m.ball.restitution,
+                m.ball.friction, m.ball.tangential_restitution, m.cushion.restitution, m.cushion.friction,
+                m.cushion.tangential_restitution, m.absorb_below, sim.table().length, sim.table().width);
+    if (c.scene == Scene::Break) {
+        for (const auto &p : {std::make_pair("corner", c.table.corner), std::make_pair("side", c.table.side)})
+            std::printf(",\"%s_mouth\":%.17g,\"%s_facing_angle_deg\":%.17g,\"%s_nose_radius\":%.17g,\"%s_shelf\":%.17g,"
+                        "\"%s_hole_radius\":%.17g",
+                        p.first, p.second.mouth, p.first, p.second.facing_angle_deg, p.first, p.second.nose_radius,
+                        p.first, p.second.shelf, p.first, p.second.hole_radius);
+    }
+    std::printf("}");
+}
+
+void print_balls(const Simulation &sim) {
+    std::printf("\"balls\":[");
+    bool first = true;
+    for (const demo::Ball &b : sim.balls()) {
+        std::printf("%s{\"number\":%d,\"x\":%.17g,\"y\":%.17g,\"vx\":%.17g,\"vy\":%.17g,\"wx\":%.17g,\"wy\":%.17g,"
+                    "\"wz\":%.17g,\"state\":\"%s\",\"on_table\":%s}",
+                    first ? "" : ",", b.number, b.x, b.y, b.vx, b.vy, b.wx, b.wy, b.wz, demo::motion_name(b.motion),
+                    b.active ? "true" : "false");
+        first = false;
+    }
+    std::printf("]");
+}
+
 void print_json(const Simulation &sim, const Totals &t) {
     const demo::Stats &s = sim.stats();
     std::printf("{\"scene\":\"%s\",\"response\":\"%s\",\"steps\":%ld,\"sim_seconds\":%.17g,\"wall_seconds\":%.6f,"
-                "\"balls\":%d,\"ball_ball_collisions\":%ld,\"cushion_collisions\":%ld,\"pocketed\":%d,\"escaped\":%d,"
-                "\"tunnelled\":%ld,\"max_overlap\":%.17g,\"energy_start\":%.17g,\"energy_end\":%.17g,"
-                "\"momentum_start\":[%.17g,%.17g],\"momentum_end\":[%.17g,%.17g]}\n",
+                "\"ball_count\":%d,\"ball_ball_collisions\":%ld,\"cushion_collisions\":%ld,\"pocketed\":%d,"
+                "\"scratches\":%d,\"escaped\":%d,\"tunnelled\":%ld,\"max_overlap\":%.17g,\"energy_start\":%.17g,"
+                "\"energy_end\":%.17g,\"momentum_start\":[%.17g,%.17g],\"momentum_end\":[%.17g,%.17g],",
                 scene_name(sim.config().scene), response_name(sim.config().response), s.steps, s.sim_seconds,
-                t.wall_seconds, sim.balls_total(), s.ball_ball_collisions, s.cushion_collisions, s.pocketed, s.escaped,
-                s.tunnelled, s.max_overlap, t.energy_start, t.energy_end, t.momentum_start[0], t.momentum_start[1],
-                t.momentum_end[0], t.momentum_end[1]);
+                t.wall_seconds, sim.balls_total(), s.ball_ball_collisions, s.cushion_collisions, s.pocketed,
+                s.scratches, s.escaped, s.tunnelled, s.max_overlap, t.energy_start, t.energy_end, t.momentum_start[0],
+                t.momentum_start[1], t.momentum_end[0], t.momentum_end[1]);
+    print_model(sim);
+    std::printf(",");
+    print_balls(sim);
+    std::printf("}\n");
 }
 
 void print_summary(const Simulation &sim, const Totals &t) {
@@ -235,8 +232,9 @@ void print_summary(const Simulation &sim, const Totals &t) {
     std::printf("  simulated %.2f s in %ld frames, %.4f s wall: %.0fx real time, %.0f frames/s\n", s.sim_seconds,
                 s.steps, t.wall_seconds, s.sim_seconds / std::max(t.wall_seconds, 1e-9),
                 static_cast<double>(s.steps) / std::max(t.wall_seconds, 1e-9));
-    std::printf("  collisions: %ld ball-ball, %ld cushion; pocketed %d, on the table %d\n", s.ball_ball_collisions,
-                s.cushion_collisions, s.pocketed, sim.balls_total() - s.pocketed);
+    std::printf("  collisions: %ld ball-ball, %ld cushion; pocketed %d (+%d cue ball), on the table %d\n",
+                s.ball_ball_collisions, s.cushion_collisions, s.pocketed, s.scratches,
+                sim.balls_total() - s.pocketed - s.scratches);
     std::printf("  escaped %d, tunnelled pairs %ld, worst overlap %.3g%% of a diameter\n", s.escaped, s.tunnelled,
                 100 * s.max_overlap);
     std::printf("  kinetic energy %.6g J -> %.6g J (%+.3g relative)\n", t.energy_start, t.energy_end, drift);
@@ -244,18 +242,47 @@ void print_summary(const Simulation &sim, const Totals &t) {
                 t.momentum_end[0], t.momentum_end[1]);
 }
 
-bool write_speeds(const Simulation &sim, const std::string &path) {
-    FILE *f = std::fopen(path.c_str(), "w");
-    if (!f) return false;
+Totals run_headless(Simulation &sim, const Options &o, Recorder &recorder) {
+    std::vector<Shot> shots = o.shots;
+    if (shots.empty() && o.config.scene != Scene::Gas && o.config.placements.empty()) shots.push_back(Shot{0, 12});
+    double seconds = o.seconds;
+    if (seconds < 0 && sim.lossless()) seconds = 60;
+    const long frames = seconds < 0 ? -1 : static_cast<long>(std::ceil(seconds / demo::kFrameDt - 1e-9));
+    Progress progress(seconds);
+    Headless headless(shots, frames, recorder, progress);
+    headless.shoot_next(sim);
+    Totals t;
+    t.energy_start = sim.energy();
+    sim.momentum(t.momentum_start);
+    recorder.frame(sim);
+    const auto start = std::chrono::steady_clock::now();
+    demo::run(sim, headless);
+    t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    t.energy_end = sim.energy();
+    sim.momentum(t.momentum_end);
+    if (headless.gave_up()) std::fprintf(stderr, "billiards: warning: not at rest after an hour a shot; stopped there\n");
+    return t;
+}
+
+bool write_speeds(const Simulation &sim, const std::string &path, std::string &error) {
+    OutFile f(path);
     for (const demo::Ball &b : sim.balls())
-        if (b.active) std::fprintf(f, "%.17g\n", std::hypot(b.vx, b.vy));
-    return std::fclose(f) == 0;
+        if (b.active) std::fprintf(f.get(), "%.17g\n", std::hypot(b.vx, b.vy));
+    return f.close(error);
+}
+
+// Fails (exit 2) before simulating if an output file cannot be created.
+void check_writable(const std::string &path) {
+    if (path.empty()) return;
+    OutFile probe(path, "a");
+    std::string ignored;
+    probe.close(ignored);
 }
 
 int write_outputs(const Simulation &sim, const Options &o) {
     std::string error;
-    if (!o.speeds.empty() && !write_speeds(sim, o.speeds)) {
-        std::fprintf(stderr, "billiards: %s: %s\n", o.speeds.c_str(), std::strerror(errno));
+    if (!o.speeds.empty() && !write_speeds(sim, o.speeds, error)) {
+        std::fprintf(stderr, "billiards: %s\n", error.c_str());
         return 1;
     }
     if (!o.screenshot.empty() && !demo::screenshot_offscreen(sim, o.screenshot, error)) {
@@ -269,33 +296,64 @@ int write_outputs(const Simulation &sim, const Options &o) {
     return 0;
 }
 
-int run(const Options &o) {
-    if (!o.headless) {
-        std::string why;
-        if (demo::play_window(o.config, why) == demo::WindowResult::Ok) return 0;
-        std::fprintf(stderr, "billiards: %s; running headless\n", why.c_str());
+// Whether a window can be tried: an X or Wayland display is named.  Decided
+// before SDL initialises video, so SDL has no chance to complain first.
+bool display_named(std::string &why) {
+    const char *x = std::getenv("DISPLAY"), *wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((x && *x) || (wayland && *wayland)) {
+        // with X only, keep SDL from probing Wayland (which prints its own
+        // complaint when XDG_RUNTIME_DIR is unset)
+        if (!(wayland && *wayland)) setenv("SDL_VIDEODRIVER", "x11", 0);
+        return true;
     }
+    why = "no display (neither DISPLAY nor WAYLAND_DISPLAY is set)";
+    return false;
+}
+
+std::string joined(const std::vector<std::string> &flags) {
+    std::string s;
+    for (const std::string &f : flags) s += (s.empty() ? "" : ", ") + f;
+    return s;
+}
+
+int run(const Options &o) {
+    std::string why;
+    if (!o.headless && display_named(why)) {
+        if (!o.headless_only.empty())
+            throw UsageError{joined(o.headless_only) + ": only for a headless run (add --headless)"};
+        if (demo::play_window(o.config, why) == demo::WindowResult::Ok) return 0;
+    }
+    if (!o.headless) std::fprintf(stderr, "billiards: %s; running headless\n", why.c_str());
+    for (const std::string *path : {&o.screenshot, &o.screenshot_window, &o.speeds}) check_writable(*path);
+    Recorder recorder(o);
     Simulation sim(o.config);
-    const Totals t = run_headless(sim, o);
+    const Totals t = run_headless(sim, o, recorder);
     if (sim.stats().event_cap_frames > 0)
         std::fprintf(stderr, "billiards: warning: event budget ran out in %ld frames\n", sim.stats().event_cap_frames);
     if (o.json) print_json(sim, t);
     else print_summary(sim, t);
-    return write_outputs(sim, o);
+    std::string error;
+    if (!recorder.close(error)) {
+        std::fprintf(stderr, "billiards: %s\n", error.c_str());
+        return 1;
+    }
+    const int status = write_outputs(sim, o);
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fprintf(stderr, "billiards: standard output: %s\n", std::strerror(errno ? errno : EIO));
+        return 1;
+    }
+    return status;
 }
 
 }  // namespace
 
 int main(int argc, char **argv) {
-    Options o;
     try {
-        o = parse(argc, argv);
+        const Options o = demo::parse(argc, argv);
+        return run(o);
     } catch (const UsageError &e) {
         std::fprintf(stderr, "billiards: %s\n", e.message.c_str());
         return 2;
-    }
-    try {
-        return run(o);
     } catch (const std::exception &e) {
         std::fprintf(stderr, "billiards: %s\n", e.what());
         return 1;

@@ -1,6 +1,6 @@
-// png.h - minimal PNG writer (8-bit RGB, uncompressed "stored" deflate).
-// The screenshots are small and rare; a 60-line writer keeps the demo free
-// of libpng/zlib, one dependency fewer on a fresh machine.
+// png.h - compressed PNG screenshots (8-bit RGB) through libpng's simplified
+// API: deflate with adaptive row filters, so a table picture of mostly
+// smooth colour takes tens of kilobytes, not megabytes.
 #ifndef C2D_DEMO_PNG_H
 #define C2D_DEMO_PNG_H
 
@@ -11,7 +11,8 @@
 namespace demo {
 
 // rgb: width * height * 3 bytes, rows top to bottom.  Returns false and sets
-// error if the file cannot be written.
+// error if the image cannot be encoded or the file cannot be written
+// completely (a full disk included).
 bool write_png(const std::string &path, int width, int height, const std::vector<uint8_t> &rgb, std::string &error);
 
 }  // namespace demo

@@ -1,183 +1,156 @@
-// render.cpp - see render.h.
+// render.cpp - see render.h.  A frame: the cached table (redrawn only when
+// the window's size changes), the balls, the aiming aids, the panel, then
+// the help box or a banner.  The window's game is a Driver of the shared
+// main loop (sim.h run), which paces it at 1/60 s of wall time per frame.
 #include "render.h"
 
 #include <SDL.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
+#include "aim.h"
+#include "audio.h"
+#include "canvas.h"
+#include "draw_balls.h"
+#include "draw_table.h"
+#include "engine_view.h"
+#include "hud.h"
 #include "png.h"
+#include "view.h"
 
 namespace demo {
 
 namespace {
 
-constexpr int kLogicalWidth = 1200;
-constexpr double kMaxPlaySpeed = 12.0;       // m/s, a hard break
-constexpr double kPowerPerPixel = 0.04;      // m/s per logical pixel dragged
+constexpr double kMaxPlaySpeed = 12.0;  // m/s at full power, a hard break
+constexpr double kFullPull = 0.35;      // m of mouse drag (on the table's scale) for full power
+constexpr int kDefaultWidth = 1200;     // offscreen pictures, and windows when the display is unknown
 
-struct Rgb { uint8_t r, g, b; };
-
-// World (metres, y up) to logical pixels (y down), rails included.
-struct View {
-    double scale, left, top;
-    int width, height;
-    explicit View(const Table &t) {
-        const double w = t.length + 2 * t.rail, h = t.width + 2 * t.rail;
-        width = kLogicalWidth;
-        height = static_cast<int>(std::lround(kLogicalWidth * h / w));
-        scale = width / w;
-        left = -t.rail;
-        top = t.width + t.rail;
-    }
-    float px(double x) const { return static_cast<float>((x - left) * scale); }
-    float py(double y) const { return static_cast<float>((top - y) * scale); }
-    double wx(double sx) const { return sx / scale + left; }
-    double wy(double sy) const { return top - sy / scale; }
+const char *const kHelp[] = {
+    "Mouse             aim (the ghost ball shows the first contact)",
+    "Shift + mouse     fine aim;   , and .  turn the aim a little",
+    "Left drag         pull the cue back (power); release to shoot",
+    "Right button      cancel the stroke",
+    "Arrow keys        tip offset: up follow, down draw, sides english",
+    "Click the ball    set the tip offset; C centre; wheel follow/draw",
+    "M mute   H help   F12 screenshot   R rack again   Esc quit",
 };
 
-void set_colour(SDL_Renderer *r, Rgb c) { SDL_SetRenderDrawColor(r, c.r, c.g, c.b, 255); }
+bool pool(const Simulation &sim) { return sim.config().scene != Scene::Gas; }
 
-void fill_disk(SDL_Renderer *r, float cx, float cy, float radius) {
-    const int rows = static_cast<int>(std::ceil(radius));
-    for (int dy = -rows; dy <= rows; ++dy) {
-        const float y = static_cast<float>(dy);
-        const float half = std::sqrt(std::max(0.0f, radius * radius - y * y));
-        if (half > 0) SDL_RenderDrawLineF(r, cx - half, cy + y, cx + half, cy + y);
-    }
+Screen layout_for(const Simulation &sim, int width, int height) {
+    const TableShape t = table_shape(sim.table());
+    return Screen(width, height, t.length, t.width, t.rail, pool(sim));
 }
 
-// Horizontal band through the middle of a disk: the stripe of balls 9-15.
-void fill_band(SDL_Renderer *r, float cx, float cy, float radius) {
-    const int rows = static_cast<int>(radius * 0.55f);
-    for (int dy = -rows; dy <= rows; ++dy) {
-        const float y = static_cast<float>(dy);
-        const float half = std::sqrt(std::max(0.0f, radius * radius - y * y));
-        SDL_RenderDrawLineF(r, cx - half, cy + y, cx + half, cy + y);
-    }
+// The canvas size that fits the table (and panel) into max_w x max_h.
+void fit_size(const Simulation &sim, int max_w, int max_h, int &width, int &height) {
+    const TableShape t = table_shape(sim.table());
+    Screen::fit(t.length, t.width, t.rail, pool(sim), max_w, max_h, width, height);
 }
 
-Rgb ball_colour(int number) {
-    static const Rgb colours[8] = {{250, 250, 240}, {245, 200, 20}, {20, 60, 200}, {220, 30, 30},
-                                   {90, 30, 140},   {250, 120, 20}, {20, 130, 60}, {130, 30, 30}};
-    if (number == 8) return {15, 15, 15};
-    const int k = number > 8 ? number - 8 : number; // stripes 9-15 share 1-7's colours
-    return k >= 0 && k < 8 ? colours[k] : colours[0];
-}
-
-Rgb speed_colour(double speed, double scale) {
-    const double f = std::min(1.0, speed / scale);
-    return {static_cast<uint8_t>(60 + 195 * f), static_cast<uint8_t>(120 + 60 * (1 - f)), static_cast<uint8_t>(255 * (1 - f))};
-}
-
-// 3x5 bitmap glyphs for the few characters the heads-up display uses.
-const uint8_t *glyph(char c) {
-    static const struct { char c; uint8_t rows[5]; } font[] = {
-        {'0', {7, 5, 5, 5, 7}}, {'1', {2, 6, 2, 2, 7}}, {'2', {7, 1, 7, 4, 7}}, {'3', {7, 1, 7, 1, 7}},
-        {'4', {5, 5, 7, 1, 1}}, {'5', {7, 4, 7, 1, 7}}, {'6', {7, 4, 7, 5, 7}}, {'7', {7, 1, 2, 2, 2}},
-        {'8', {7, 5, 7, 5, 7}}, {'9', {7, 5, 7, 1, 7}}, {'S', {7, 4, 7, 1, 7}}, {'H', {5, 5, 7, 5, 5}},
-        {'O', {7, 5, 5, 5, 7}}, {'T', {7, 2, 2, 2, 2}}, {'B', {6, 5, 6, 5, 6}}, {'A', {2, 5, 7, 5, 5}},
-        {'L', {4, 4, 4, 4, 7}}, {'C', {7, 4, 4, 4, 7}}, {'E', {7, 4, 6, 4, 7}}, {'R', {6, 5, 6, 5, 5}},
-        {'D', {6, 5, 5, 5, 6}}, {'I', {7, 2, 2, 2, 7}}, {'N', {5, 7, 7, 5, 5}}, {'K', {5, 5, 6, 5, 5}},
-        {'Y', {5, 5, 2, 2, 2}}, {'P', {6, 5, 6, 4, 4}}, {'-', {0, 0, 7, 0, 0}}, {'/', {1, 1, 2, 4, 4}},
-    };
-    for (const auto &g : font)
-        if (g.c == c) return g.rows;
-    return nullptr;
-}
-
-void draw_text(SDL_Renderer *r, const std::string &text, int x, int y, int pixel) {
-    for (char c : text) {
-        const uint8_t *rows = glyph(c);
-        for (int row = 0; rows && row < 5; ++row)
-            for (int col = 0; col < 3; ++col)
-                if (rows[row] & (4 >> col)) {
-                    SDL_Rect dot = {x + col * pixel, y + row * pixel, pixel, pixel};
-                    SDL_RenderFillRect(r, &dot);
-                }
-        x += 4 * pixel;
-    }
-}
-
-void draw_table(SDL_Renderer *r, const Table &t, const View &v, bool felt) {
-    set_colour(r, felt ? Rgb{105, 62, 30} : Rgb{70, 70, 80});
-    SDL_RenderClear(r);
-    set_colour(r, felt ? Rgb{25, 115, 60} : Rgb{15, 15, 25});
-    SDL_FRect surface = {v.px(0), v.py(t.width), static_cast<float>(t.length * v.scale), static_cast<float>(t.width * v.scale)};
-    SDL_RenderFillRectF(r, &surface);
-    set_colour(r, {5, 5, 5});
-    for (const Pocket &p : t.pockets) fill_disk(r, v.px(p.x), v.py(p.y), static_cast<float>(p.draw_radius * v.scale));
-}
-
-void draw_balls(SDL_Renderer *r, const Simulation &sim, const View &v) {
-    const float radius = std::max(1.0f, static_cast<float>(kBallRadius * v.scale));
-    const bool gas = sim.config().scene == Scene::Gas;
-    double mean_speed = 0;
-    if (gas) mean_speed = std::sqrt(2 * sim.energy() / (kBallMass * std::max(1, sim.balls_total())));
-    for (const Ball &b : sim.balls()) {
-        if (!b.active) continue;
-        const float x = v.px(b.x), y = v.py(b.y);
-        if (gas) {
-            set_colour(r, speed_colour(std::hypot(b.vx, b.vy), 2 * mean_speed));
-            fill_disk(r, x, y, radius);
-            continue;
+// The table and the panel's fixed parts, drawn once per canvas size.
+class Backdrop {
+public:
+    const Canvas &get(const Simulation &sim, const TableShape &shape, const Screen &layout) {
+        if (canvas_.width() != layout.width || canvas_.height() != layout.height) {
+            canvas_ = Canvas(layout.width, layout.height);
+            draw_table(canvas_, shape, layout, pool(sim) ? TableStyle::Pool : TableStyle::Box);
+            draw_panel_base(canvas_, layout);
         }
-        const bool stripe = b.number > 8;
-        set_colour(r, stripe ? ball_colour(0) : ball_colour(b.number));
-        fill_disk(r, x, y, radius);
-        if (stripe) {
-            set_colour(r, ball_colour(b.number));
-            fill_band(r, x, y, radius);
-        }
+        return canvas_;
     }
-}
 
-struct Aim {
-    bool visible = false;
-    double angle = 0, speed = 0;
+private:
+    Canvas canvas_;
 };
 
-struct Hud {
-    bool show = false;
-    int shots = 0;
-    Aim aim;
+// A ball that has just fallen, shown sinking into its hole for a moment.
+struct Drop {
+    int number;
+    double x, y, hole_x, hole_y;
+    Mat3 pose;
+    double age;  // s
+};
+constexpr double kDropSeconds = 0.2;
+
+struct Overlay {
+    std::vector<Drop> drops;
+    bool aiming = false;
+    AimState aim;
+    PanelState panel;
+    bool help = false;
+    std::string banner;
 };
 
-void draw_frame(SDL_Renderer *r, const Simulation &sim, const Hud &hud) {
-    const View v(sim.table());
-    draw_table(r, sim.table(), v, sim.config().scene != Scene::Gas);
-    draw_balls(r, sim, v);
-    if (hud.aim.visible && sim.cue_on_table()) {
-        const Ball &cue = sim.balls()[0];
-        const double reach = 0.15 + hud.aim.speed * 0.08;
-        set_colour(r, {240, 240, 200});
-        SDL_RenderDrawLineF(r, v.px(cue.x), v.py(cue.y), v.px(cue.x + reach * std::cos(hud.aim.angle)),
-                            v.py(cue.y + reach * std::sin(hud.aim.angle)));
+void draw_frame(Canvas &frame, const Canvas &backdrop, const Screen &layout, const Simulation &sim, const TableShape &shape,
+                const BallPoses &poses, const Overlay &overlay) {
+    frame.pixels() = backdrop.pixels();
+    if (!pool(sim)) {
+        const double mean = std::sqrt(2 * sim.energy() / (kBallMass * std::max(1, sim.balls_total())));
+        draw_gas(frame, layout.view, sim.balls(), mean);
+        char text[128];
+        std::snprintf(text, sizeof text, "%d disks   t = %.1f s   tunnelled %ld", sim.balls_total(), sim.stats().sim_seconds,
+                      sim.stats().tunnelled);
+        draw_corner_text(frame, layout, text);
+        return;
     }
-    if (!hud.show) return;
-    const int left = sim.object_balls_left();
-    set_colour(r, {250, 250, 250});
-    const int pixel = std::max(2, v.height / 120);
-    draw_text(r, "SHOTS " + std::to_string(hud.shots), pixel * 3, pixel * 2, pixel);
-    draw_text(r, "BALLS " + std::to_string(left), v.width - pixel * 40, pixel * 2, pixel);
-    if (left == 0) draw_text(r, "CLEARED IN " + std::to_string(hud.shots) + " SHOTS - R", v.width / 3, v.height / 2, pixel * 2);
+    for (const Drop &d : overlay.drops)
+        draw_falling(frame, layout.view, d.x, d.y, d.hole_x, d.hole_y, d.number, d.pose, d.age / kDropSeconds);
+    draw_balls(frame, layout.view, sim.balls(), poses);
+    if (overlay.aiming) draw_aim(frame, layout.view, shape, sim.balls(), overlay.aim);
+    draw_panel(frame, layout, overlay.panel);
+    if (overlay.help) draw_help(frame, layout, "collide2d billiards - keys", std::vector<std::string>(std::begin(kHelp), std::end(kHelp)));
+    else if (!overlay.banner.empty()) draw_banner(frame, layout, overlay.banner);
 }
 
-bool read_surface_rgb(SDL_Surface *s, std::vector<uint8_t> &rgb) {
-    if (SDL_LockSurface(s) != 0) return false;
-    rgb.resize(static_cast<size_t>(s->w) * static_cast<size_t>(s->h) * 3);
-    size_t k = 0;
-    for (int y = 0; y < s->h; ++y) {
-        const uint32_t *row = reinterpret_cast<const uint32_t *>(static_cast<const uint8_t *>(s->pixels) + static_cast<ptrdiff_t>(y) * s->pitch);
-        for (int x = 0; x < s->w; ++x) SDL_GetRGB(row[x], s->format, &rgb[k], &rgb[k + 1], &rgb[k + 2]), k += 3;
-    }
-    SDL_UnlockSurface(s);
-    return true;
+std::vector<int> pocketed_numbers(const Simulation &sim) {
+    std::vector<int> numbers;
+    for (const Ball &b : sim.balls())
+        if (!b.active && b.number != 0) numbers.push_back(b.number);
+    return numbers;
 }
 
+// A picture without a player: the balls at rest poses, the run's figures.
+Overlay still_overlay(const Simulation &sim) {
+    Overlay o;
+    const Stats &s = sim.stats();
+    char line[160];
+    std::snprintf(line, sizeof line, "%.1f s simulated   %ld ball-ball and %ld cushion contacts", s.sim_seconds,
+                  s.ball_ball_collisions, s.cushion_collisions);
+    o.panel.lines.emplace_back(line);
+    std::snprintf(line, sizeof line, "%d balls on the table   tunnelled %ld", sim.object_balls_left(), s.tunnelled);
+    o.panel.lines.emplace_back(line);
+    o.panel.pocketed = pocketed_numbers(sim);
+    o.panel.max_speed = kMaxPlaySpeed;
+    return o;
+}
+
+void draw_still(Canvas &frame, const Simulation &sim, const Screen &layout) {
+    const TableShape shape = table_shape(sim.table());
+    BallPoses poses;
+    poses.reset(sim.balls());
+    Backdrop backdrop;
+    draw_frame(frame, backdrop.get(sim, shape, layout), layout, sim, shape, poses, still_overlay(sim));
+}
+
+// Without DISPLAY or WAYLAND_DISPLAY SDL is not asked at all (it would print
+// its own complaints about XDG_RUNTIME_DIR before ours), unless the user
+// chose a video driver.
 bool have_display(std::string &reason) {
+    const auto set = [](const char *name) {
+        const char *v = std::getenv(name);
+        return v && *v;
+    };
+    if (!set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("SDL_VIDEODRIVER")) {
+        reason = "no display (neither DISPLAY nor WAYLAND_DISPLAY is set)";
+        return false;
+    }
     if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
         reason = std::string("no display: ") + SDL_GetError();
         return false;
@@ -194,19 +167,44 @@ bool have_display(std::string &reason) {
 struct Window {
     SDL_Window *window = nullptr;
     SDL_Renderer *renderer = nullptr;
+    SDL_Texture *texture = nullptr;
+    int texture_w = 0, texture_h = 0;
+    Window() = default;
+    Window(const Window &) = delete;
+    Window &operator=(const Window &) = delete;
     ~Window() {
+        if (texture) SDL_DestroyTexture(texture);
         if (renderer) SDL_DestroyRenderer(renderer);
         if (window) SDL_DestroyWindow(window);
         SDL_Quit();  // also closes SDL's D-Bus connection
     }
+    void output_size(int &w, int &h) const {
+        if (SDL_GetRendererOutputSize(renderer, &w, &h) != 0 || w <= 0 || h <= 0) w = texture_w, h = texture_h;
+    }
+    // Shows a frame the size of the renderer's output.
+    bool show(const Canvas &frame) {
+        if (!texture || texture_w != frame.width() || texture_h != frame.height()) {
+            if (texture) SDL_DestroyTexture(texture);
+            texture = SDL_CreateTexture(renderer, SDL_PIXELFORMAT_ARGB8888, SDL_TEXTUREACCESS_STREAMING, frame.width(), frame.height());
+            texture_w = frame.width();
+            texture_h = frame.height();
+        }
+        if (!texture || SDL_UpdateTexture(texture, nullptr, frame.pixels().data(), frame.width() * 4) != 0) return false;
+        SDL_RenderClear(renderer);
+        return SDL_RenderCopy(renderer, texture, nullptr, nullptr) == 0;
+    }
 };
 
-// Resizable window whose renderer keeps the table's aspect (letterboxed).
+// A window that fits the display's usable area (less room for its frame),
+// resizable; the frame keeps the table's aspect with black bars.
 WindowResult open_window(const Simulation &sim, Window &w, std::string &error) {
     if (!have_display(error)) return WindowResult::Unavailable;
-    const View v(sim.table());
-    w.window = SDL_CreateWindow("collide2d billiards", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, v.width, v.height,
-                                SDL_WINDOW_RESIZABLE);
+    SDL_Rect usable{0, 0, kDefaultWidth, kDefaultWidth};
+    if (SDL_GetDisplayUsableBounds(0, &usable) != 0 || usable.w <= 0 || usable.h <= 0) usable = {0, 0, kDefaultWidth, 900};
+    int width = 0, height = 0;
+    fit_size(sim, std::min(kDefaultWidth * 2, usable.w * 92 / 100), usable.h * 88 / 100, width, height);
+    w.window = SDL_CreateWindow("collide2d billiards", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height,
+                                SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
     if (!w.window) {
         error = std::string("cannot create window: ") + SDL_GetError();
         return WindowResult::Unavailable;
@@ -217,27 +215,20 @@ WindowResult open_window(const Simulation &sim, Window &w, std::string &error) {
         error = std::string("cannot create renderer: ") + SDL_GetError();
         return WindowResult::Unavailable;
     }
-    SDL_RenderSetLogicalSize(w.renderer, v.width, v.height);
+    w.texture_w = width;
+    w.texture_h = height;
+    SDL_SetRenderDrawColor(w.renderer, 0, 0, 0, 255);
     return WindowResult::Ok;
 }
 
 }  // namespace
 
 bool screenshot_offscreen(const Simulation &sim, const std::string &path, std::string &error) {
-    const View v(sim.table());
-    SDL_Surface *surface = SDL_CreateRGBSurfaceWithFormat(0, v.width, v.height, 32, SDL_PIXELFORMAT_RGBA32);
-    SDL_Renderer *r = surface ? SDL_CreateSoftwareRenderer(surface) : nullptr;
-    std::vector<uint8_t> rgb;
-    bool ok = false;
-    if (r) {
-        draw_frame(r, sim, Hud{});
-        SDL_RenderPresent(r);
-        ok = read_surface_rgb(surface, rgb);
-    }
-    if (!ok) error = std::string("offscreen rendering failed: ") + SDL_GetError();
-    if (r) SDL_DestroyRenderer(r);
-    if (surface) SDL_FreeSurface(surface);
-    return ok && write_png(path, v.width, v.height, rgb, error);
+    int width = 0, height = 0;
+    fit_size(sim, kDefaultWidth, kDefaultWidth, width, height);
+    Canvas frame(width, height);
+    draw_still(frame, sim, layout_for(sim, width, height));
+    return write_png(path, width, height, frame.rgb(), error);
 }
 
 WindowResult screenshot_window(const Simulation &sim, const std::string &path, std::string &error) {
@@ -247,9 +238,14 @@ WindowResult screenshot_window(const Simulation &sim, const std::string &path, s
     SDL_Event e;
     while (SDL_PollEvent(&e)) {
     }
-    draw_frame(w.renderer, sim, Hud{});
     int width = 0, height = 0;
-    SDL_GetRendererOutputSize(w.renderer, &width, &height);
+    w.output_size(width, height);
+    Canvas frame(width, height);
+    draw_still(frame, sim, layout_for(sim, width, height));
+    if (!w.show(frame)) {
+        error = std::string("cannot draw in the window: ") + SDL_GetError();
+        return WindowResult::Failed;
+    }
     std::vector<uint8_t> rgb(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
     // read back what this window's renderer drew, before it is presented
     if (SDL_RenderReadPixels(w.renderer, nullptr, SDL_PIXELFORMAT_RGB24, rgb.data(), width * 3) != 0) {
@@ -262,99 +258,255 @@ WindowResult screenshot_window(const Simulation &sim, const std::string &path, s
 
 namespace {
 
-// The player's side of the main loop: aim with the mouse, shoot on release;
-// each frame is drawn and held until its time comes (real time).
+// The player's side of the main loop.  Each frame: events (aim, stroke,
+// spin, keys), the simulation's step, sounds for its contacts, the balls'
+// orientations, the picture, then a wait for the frame's deadline.
 class Game : public Driver {
 public:
-    Game(const SimConfig &config, SDL_Renderer *renderer)
-        : config_(config), renderer_(renderer), next_tick_(SDL_GetTicks64()) {
-        hud_.show = config.scene != Scene::Gas;
-    }
+    Game(const SimConfig &config, Window &window, Audio &audio)
+        : config_(config), window_(window), audio_(audio), frequency_(static_cast<double>(SDL_GetPerformanceFrequency())),
+          deadline_(static_cast<double>(SDL_GetPerformanceCounter()) / frequency_) {}
+    void start(const Simulation &sim);
     bool next_frame(Simulation &sim) override;
-    bool before_step(Simulation &sim, bool) override {
-        update_aim(sim);
-        return true;
-    }
+    bool before_step(Simulation &sim, bool was_at_rest) override;
     void after_step(const Simulation &sim) override;
 
 private:
-    void update_aim(const Simulation &sim);
+    bool can_shoot(const Simulation &sim) const {
+        return pool(sim) && sim.at_rest() && sim.cue_on_table() && sim.object_balls_left() > 0;
+    }
     bool handle_event(Simulation &sim, const SDL_Event &e);
+    void handle_key(Simulation &sim, const SDL_Keysym &key);
+    void aim_at_mouse(const Simulation &sim);
+    void shoot(Simulation &sim);
+    void sound_and_drops(const Simulation &sim);
+    Overlay overlay(const Simulation &sim) const;
+    void screenshot(const Canvas &frame);
 
     const SimConfig config_;
-    SDL_Renderer *renderer_;
-    uint64_t next_tick_;  // ms, when the next frame is due
-    Hud hud_;
-    bool dragging_ = false;
-    double press_x_ = 0, press_y_ = 0;  // logical pixels
-    double mouse_x_ = 0, mouse_y_ = 0;
+    Window &window_;
+    Audio &audio_;
+    const double frequency_;
+    double deadline_;  // s, when the frame being drawn is due
+    Screen layout_{kDefaultWidth, kDefaultWidth, 1, 1, 0, false};
+    TableShape shape_{};
+    Backdrop backdrop_;
+    Canvas frame_;
+    BallPoses poses_;
+    std::vector<Drop> drops_;
+    AimState aim_;
+    bool dragging_ = false, dialing_ = false, help_ = true;
+    bool follow_mouse_ = true, was_ready_ = false;
+    double press_x_ = 0, press_y_ = 0, mouse_x_ = 0, mouse_y_ = 0;  // canvas pixels
+    int shots_ = 0, screenshots_ = 0, skipped_ = 0;
+    double last_speed_ = 0;
 };
 
-void Game::update_aim(const Simulation &sim) {
-    const View v(sim.table());
-    const bool can_shoot = sim.at_rest() && sim.cue_on_table() && sim.object_balls_left() > 0;
-    hud_.aim.visible = can_shoot;
-    if (!can_shoot) return;
-    const Ball &cue = sim.balls()[0];
-    if (!dragging_) hud_.aim.angle = std::atan2(v.wy(mouse_y_) - cue.y, v.wx(mouse_x_) - cue.x);
-    const double dragged = dragging_ ? std::hypot(mouse_x_ - press_x_, mouse_y_ - press_y_) : 0.0;
-    hud_.aim.speed = std::min(kMaxPlaySpeed, dragged * kPowerPerPixel);
-}
-
-// Returns false when the player quits.
-bool Game::handle_event(Simulation &sim, const SDL_Event &e) {
-    switch (e.type) {
-    case SDL_QUIT: return false;
-    case SDL_KEYDOWN:
-        if (e.key.keysym.sym == SDLK_ESCAPE) return false;
-        if (e.key.keysym.sym == SDLK_r) {
-            sim = Simulation(config_);
-            hud_.shots = 0;
-            dragging_ = false;
-        }
-        break;
-    case SDL_MOUSEMOTION:
-        mouse_x_ = e.motion.x;
-        mouse_y_ = e.motion.y;
-        break;
-    case SDL_MOUSEBUTTONDOWN:
-        if (e.button.button == SDL_BUTTON_LEFT && hud_.aim.visible) {
-            dragging_ = true;
-            press_x_ = mouse_x_ = e.button.x;
-            press_y_ = mouse_y_ = e.button.y;
-        } else if (e.button.button == SDL_BUTTON_RIGHT) {
-            dragging_ = false;
-        }
-        break;
-    case SDL_MOUSEBUTTONUP:
-        if (e.button.button == SDL_BUTTON_LEFT && dragging_) {
-            dragging_ = false;
-            if (hud_.aim.speed > 0) {
-                sim.shoot(Shot{hud_.aim.angle * 180.0 / M_PI, hud_.aim.speed});
-                ++hud_.shots;
-            }
-        }
-        break;
-    default: break;
-    }
-    return true;
+void Game::start(const Simulation &sim) {
+    shape_ = table_shape(sim.table());
+    poses_.reset(sim.balls());
+    drops_.clear();
+    shots_ = 0;
+    dragging_ = dialing_ = false;
+    aim_.power = 0;
 }
 
 bool Game::next_frame(Simulation &sim) {
+    int width = 0, height = 0;
+    window_.output_size(width, height);
+    if (width != layout_.width || height != layout_.height) layout_ = layout_for(sim, width, height);
     SDL_Event e;
     while (SDL_PollEvent(&e))
         if (!handle_event(sim, e)) return false;
     return true;
 }
 
+// The aim follows the mouse when it moves (and when the table comes to
+// rest), so the fine-aim keys and Shift + mouse keep what they set.
+bool Game::before_step(Simulation &sim, bool) {
+    const bool ready = can_shoot(sim);
+    if (ready && !dragging_ && !dialing_ && (follow_mouse_ || !was_ready_)) aim_at_mouse(sim);
+    follow_mouse_ = false;
+    was_ready_ = ready;
+    return true;
+}
+
+void Game::aim_at_mouse(const Simulation &sim) {
+    if (layout_.panel.contains(static_cast<float>(mouse_x_), static_cast<float>(mouse_y_))) return;
+    const Ball &cue = sim.balls()[0];
+    const double dx = layout_.view.wx(mouse_x_) - cue.x, dy = layout_.view.wy(mouse_y_) - cue.y;
+    if (std::hypot(dx, dy) > kBallRadius) aim_.angle = std::atan2(dy, dx);
+}
+
+void Game::shoot(Simulation &sim) {
+    const double speed = aim_.power * kMaxPlaySpeed;
+    aim_.power = 0;
+    if (speed < 0.02 || !can_shoot(sim)) return;
+    sim.shoot(Shot{aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback});
+    ++shots_;
+    last_speed_ = speed;
+    help_ = false;
+}
+
+bool Game::handle_event(Simulation &sim, const SDL_Event &e) {
+    int win_w = 1, win_h = 1;
+    SDL_GetWindowSize(window_.window, &win_w, &win_h);
+    const double sx = static_cast<double>(layout_.width) / std::max(1, win_w);  // high-DPI: window to canvas pixels
+    const double sy = static_cast<double>(layout_.height) / std::max(1, win_h);
+    switch (e.type) {
+    case SDL_QUIT: return false;
+    case SDL_KEYDOWN:
+        if (e.key.keysym.sym == SDLK_ESCAPE) return false;
+        handle_key(sim, e.key.keysym);
+        break;
+    case SDL_MOUSEMOTION:
+        if ((SDL_GetModState() & KMOD_SHIFT) && !dragging_ && !dialing_ && can_shoot(sim)) {
+            aim_.angle -= e.motion.xrel * 0.0006;  // fine aim: a tenth of the mouse's turn, roughly
+        } else {
+            mouse_x_ = e.motion.x * sx;
+            mouse_y_ = e.motion.y * sy;
+            follow_mouse_ = true;
+        }
+        if (dragging_) aim_.power = std::min(1.0, std::hypot(mouse_x_ - press_x_, mouse_y_ - press_y_) / layout_.view.scale / kFullPull);
+        if (dialing_) dial_offset(spin_dial(layout_), static_cast<float>(mouse_x_), static_cast<float>(mouse_y_), aim_.side, aim_.topback);
+        break;
+    case SDL_MOUSEBUTTONDOWN:
+        mouse_x_ = e.button.x * sx;
+        mouse_y_ = e.button.y * sy;
+        if (e.button.button == SDL_BUTTON_LEFT) {
+            if (dial_offset(spin_dial(layout_), static_cast<float>(mouse_x_), static_cast<float>(mouse_y_), aim_.side, aim_.topback)) {
+                dialing_ = true;
+            } else if (can_shoot(sim) && !layout_.panel.contains(static_cast<float>(mouse_x_), static_cast<float>(mouse_y_))) {
+                dragging_ = true;
+                press_x_ = mouse_x_;
+                press_y_ = mouse_y_;
+                aim_.power = 0;
+            }
+        } else if (e.button.button == SDL_BUTTON_RIGHT) {
+            dragging_ = false;
+            aim_.power = 0;
+        }
+        break;
+    case SDL_MOUSEBUTTONUP:
+        if (e.button.button == SDL_BUTTON_LEFT) {
+            dialing_ = false;
+            if (dragging_) {
+                dragging_ = false;
+                shoot(sim);
+            }
+        }
+        break;
+    case SDL_MOUSEWHEEL:
+        aim_.topback += 0.05 * e.wheel.y;
+        clamp_offset(aim_.side, aim_.topback);
+        break;
+    default: break;
+    }
+    return true;
+}
+
+void Game::handle_key(Simulation &sim, const SDL_Keysym &key) {
+    const double step = 0.05;
+    switch (key.sym) {
+    case SDLK_r:
+        sim = Simulation(config_);
+        start(sim);
+        if (!pool(sim)) sim.shoot(Shot{0, kMaxPlaySpeed});
+        break;
+    case SDLK_h:
+    case SDLK_F1: help_ = !help_; break;
+    case SDLK_m: audio_.toggle_mute(); break;
+    case SDLK_F12:
+    case SDLK_p: screenshot(frame_); break;
+    case SDLK_UP: aim_.topback += step; break;
+    case SDLK_DOWN: aim_.topback -= step; break;
+    case SDLK_LEFT: aim_.side -= step; break;
+    case SDLK_RIGHT: aim_.side += step; break;
+    case SDLK_c: aim_.side = aim_.topback = 0; break;
+    case SDLK_COMMA: aim_.angle += (key.mod & KMOD_SHIFT ? 1.0 : 0.1) * M_PI / 180; break;
+    case SDLK_PERIOD: aim_.angle -= (key.mod & KMOD_SHIFT ? 1.0 : 0.1) * M_PI / 180; break;
+    default: break;
+    }
+    clamp_offset(aim_.side, aim_.topback);
+}
+
+void Game::sound_and_drops(const Simulation &sim) {
+    for (Drop &d : drops_) d.age += kFrameDt;
+    drops_.erase(std::remove_if(drops_.begin(), drops_.end(), [](const Drop &d) { return d.age > kDropSeconds; }), drops_.end());
+    const double length = sim.table().length;
+    for (const Contact &c : frame_contacts(sim)) {
+        const double pan = 2 * c.x / length - 1;
+        switch (c.kind) {
+        case ContactKind::BallBall: audio_.play(Sound::Click, c.impulse, pan); break;
+        case ContactKind::Cushion: audio_.play(Sound::Cushion, c.impulse, pan); break;
+        case ContactKind::Strike: audio_.play(Sound::Strike, c.impulse, pan); break;
+        case ContactKind::Pocket: {
+            audio_.play(Sound::Pocket, c.impulse, pan);
+            const size_t i = static_cast<size_t>(c.ball), k = static_cast<size_t>(c.pocket);
+            if (i < sim.balls().size() && k < sim.table().pockets.size())
+                drops_.push_back({sim.balls()[i].number, c.x, c.y, sim.table().pockets[k].x, sim.table().pockets[k].y,
+                                  poses_.pose(i), 0.0});
+            break;
+        }
+        }
+    }
+}
+
+Overlay Game::overlay(const Simulation &sim) const {
+    Overlay o;
+    o.drops = drops_;
+    o.aiming = can_shoot(sim);
+    o.aim = aim_;
+    o.help = help_;
+    const int left = sim.object_balls_left();
+    char line[160];
+    std::snprintf(line, sizeof line, "Practice: clear the table   Shots %d   Balls left %d", shots_, left);
+    o.panel.lines.emplace_back(line);
+    if (last_speed_ > 0) {
+        std::snprintf(line, sizeof line, "Last shot %.1f m/s", last_speed_);
+        o.panel.lines.emplace_back(line);
+    }
+    std::string keys = "H help   R rack   M ";
+    keys += !audio_.available() ? "(no sound)" : audio_.muted() ? "unmute" : "mute";
+    o.panel.lines.push_back(keys);
+    o.panel.pocketed = pocketed_numbers(sim);
+    o.panel.power = aim_.power;
+    o.panel.max_speed = kMaxPlaySpeed;
+    o.panel.side = aim_.side;
+    o.panel.topback = aim_.topback;
+    if (left == 0 && sim.at_rest())
+        o.banner = "Table cleared in " + std::to_string(shots_) + (shots_ == 1 ? " shot" : " shots") + ". Press R to rack again.";
+    return o;
+}
+
+void Game::screenshot(const Canvas &frame) {
+    if (frame.width() <= 1) return;
+    char path[64];
+    std::snprintf(path, sizeof path, "billiards-%03d.png", ++screenshots_);
+    std::string error;
+    if (write_png(path, frame.width(), frame.height(), frame.rgb(), error)) std::printf("billiards: saved %s\n", path);
+    else std::fprintf(stderr, "billiards: screenshot: %s\n", error.c_str());
+    std::fflush(stdout);
+}
+
 void Game::after_step(const Simulation &sim) {
-    draw_frame(renderer_, sim, hud_);
-    SDL_RenderPresent(renderer_);
-    // keep real time even without vsync
-    next_tick_ += 1000 / 60;
-    const uint64_t now = SDL_GetTicks64();
-    if (next_tick_ > now) SDL_Delay(static_cast<uint32_t>(next_tick_ - now));
-    else next_tick_ = now;
+    if (pool(sim)) {
+        sound_and_drops(sim);
+        poses_.advance(sim.balls(), kFrameDt);
+    }
+    // run() holds each frame to 1/60 s of wall time; a machine too slow to
+    // draw every frame skips drawing (up to 3 frames in 4), not time
+    deadline_ += kFrameDt;
+    const double now = static_cast<double>(SDL_GetPerformanceCounter()) / frequency_;
+    if (now - deadline_ > 0.25) deadline_ = now;  // a pause: as run() does, count afresh
+    if (now > deadline_ + 0.5 * kFrameDt && skipped_ < 3) {
+        ++skipped_;
+        return;
+    }
+    skipped_ = 0;
+    if (frame_.width() != layout_.width || frame_.height() != layout_.height) frame_ = Canvas(layout_.width, layout_.height);
+    draw_frame(frame_, backdrop_.get(sim, shape_, layout_), layout_, sim, shape_, poses_, overlay(sim));
+    if (window_.show(frame_)) SDL_RenderPresent(window_.renderer);
 }
 
 }  // namespace
@@ -364,8 +516,11 @@ WindowResult play_window(const SimConfig &config, std::string &error) {
     Window w;
     const WindowResult opened = open_window(sim, w, error);
     if (opened != WindowResult::Ok) return opened;
-    if (config.scene != Scene::Break) sim.shoot(Shot{0, kMaxPlaySpeed});
-    Game game(config, w.renderer);
+    Audio audio(pool(sim));  // the gas would be a roar: silent
+    if (pool(sim) && !audio.available()) std::fprintf(stderr, "billiards: no sound (%s)\n", audio.problem().c_str());
+    Game game(config, w, audio);
+    game.start(sim);
+    if (!pool(sim)) sim.shoot(Shot{0, kMaxPlaySpeed});
     run(sim, game);
     return WindowResult::Ok;
 }

@@ -11,56 +11,7 @@ namespace demo {
 
 namespace {
 
-constexpr double kTableLength = 2.54;
-constexpr double kTableWidth = 1.27;
-constexpr double kCornerMouth = 0.08;   // cushion nose to the corner, along each rail
-constexpr double kSideMouth = 0.065;    // half-width of a side pocket opening
 constexpr double kGasAreaFraction = 0.1;
-
-// Seeded, platform-independent generator (splitmix64), so scenes and runs are
-// identical on every machine.
-class Rng {
-public:
-    explicit Rng(uint64_t seed) : state_(seed) {}
-    uint64_t next() {
-        uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
-
-private:
-    uint64_t state_;
-};
-
-Segment make_segment(double ax, double ay, double bx, double by, double nx, double ny) {
-    return Segment{ax, ay, bx, by, nx, ny};
-}
-
-void add_rectangle_cushions(Table &t) {
-    const double L = t.length, W = t.width;
-    t.cushions.push_back(make_segment(0, 0, L, 0, 0, 1));
-    t.cushions.push_back(make_segment(0, W, L, W, 0, -1));
-    t.cushions.push_back(make_segment(0, 0, 0, W, 1, 0));
-    t.cushions.push_back(make_segment(L, 0, L, W, -1, 0));
-}
-
-void add_pocketed_cushions(Table &t) {
-    const double L = t.length, W = t.width, m = kCornerMouth, g = kSideMouth;
-    for (double y : {0.0, W}) {
-        const double ny = y == 0.0 ? 1.0 : -1.0;
-        t.cushions.push_back(make_segment(m, y, L / 2 - g, y, 0, ny));
-        t.cushions.push_back(make_segment(L / 2 + g, y, L - m, y, 0, ny));
-    }
-    t.cushions.push_back(make_segment(0, m, 0, W - m, 1, 0));
-    t.cushions.push_back(make_segment(L, m, L, W - m, -1, 0));
-    // A capture radius of at least the mouth width means a ball crossing a
-    // rail line through an opening is already inside the pocket's circle.
-    for (double x : {0.0, L})
-        for (double y : {0.0, W}) t.pockets.push_back(Pocket{x, y, m, 0.062});
-    for (double y : {0.0, W}) t.pockets.push_back(Pocket{L / 2, y, g, 0.066});
-}
 
 Ball make_ball(double x, double y, int number) { return Ball{x, y, 0, 0, number, true}; }
 
@@ -89,9 +40,7 @@ void rack(std::vector<Ball> &balls, const Table &t, uint64_t seed) {
     }
 }
 
-void gas(std::vector<Ball> &balls, Table &t, int count, uint64_t seed) {
-    const double side = std::sqrt(count * M_PI * kBallRadius * kBallRadius / kGasAreaFraction);
-    t.length = t.width = side;
+void gas(std::vector<Ball> &balls, double side, int count, uint64_t seed) {
     const int per_row = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
     const double cell = side / per_row;
     const double jitter = cell / 2 - kBallRadius * 1.01;
@@ -113,28 +62,52 @@ void gas(std::vector<Ball> &balls, Table &t, int count, uint64_t seed) {
     for (Ball &b : balls) {
         b.vx -= mean_vx;
         b.vy -= mean_vy;
+        b.motion = classify(b);
     }
 }
 
 }  // namespace
 
-Layout set_up(Scene scene, int gas_balls, uint64_t seed) {
-    Layout s;
-    Table &t = s.table;
-    t.length = kTableLength;
-    t.width = kTableWidth;
-    t.rail = 0.1;
+Setup set_up(Scene scene, const TableSpec &spec, int gas_balls, uint64_t seed, const std::vector<Placement> &placements) {
+    Setup s;
     if (scene == Scene::Gas) {
-        gas(s.balls, t, gas_balls, seed);
-        t.rail = std::max(0.05, t.length / 40);
-        add_rectangle_cushions(t);
-    } else {
-        s.balls.push_back(make_ball(head_spot_x(t), centre_line_y(t), 0));
-        rack(s.balls, t, seed);
-        if (scene == Scene::Break) add_pocketed_cushions(t);
-        else add_rectangle_cushions(t);
+        const double side = std::sqrt(gas_balls * M_PI * kBallRadius * kBallRadius / kGasAreaFraction);
+        s.table = closed_box(side, side, std::max(0.05, side / 40));
+        gas(s.balls, side, gas_balls, seed);
+        return s;
     }
+    s.table = scene_table(scene, spec);
+    if (!placements.empty()) {
+        for (const Placement &p : placements) s.balls.push_back(make_ball(p.x, p.y, p.number));
+        return s;
+    }
+    s.balls.push_back(make_ball(head_spot_x(s.table), centre_line_y(s.table), 0));
+    rack(s.balls, s.table, seed);
     return s;
+}
+
+Table scene_table(Scene scene, const TableSpec &spec) {
+    return scene == Scene::Break ? pool_table(spec) : closed_box(spec.length, spec.width, spec.rail);
+}
+
+std::string placement_error(const Table &table, const std::vector<Placement> &placements) {
+    for (size_t i = 0; i < placements.size(); ++i) {
+        const Placement &p = placements[i];
+        const std::string name = "ball " + std::to_string(p.number);
+        if (p.number < 0 || p.number > 15) return name + ": numbers run from 0 (the cue ball) to 15";
+        if (!(p.x >= kBallRadius && p.x <= table.length - kBallRadius && p.y >= kBallRadius &&
+              p.y <= table.width - kBallRadius))
+            return name + " is not on the table: its centre must be in [R, " + std::to_string(table.length) +
+                   " - R] x [R, " + std::to_string(table.width) + " - R], R = " + std::to_string(kBallRadius) + " m";
+        for (size_t j = 0; j < i; ++j) {
+            const Placement &q = placements[j];
+            if (q.number == p.number) return name + " is placed twice";
+            // touching within rounding (a rack typed in) is fine
+            if (std::hypot(p.x - q.x, p.y - q.y) < kBallDiameter * (1 - 1e-9))
+                return name + " overlaps ball " + std::to_string(q.number);
+        }
+    }
+    return "";
 }
 
 Point free_head_spot(const Table &table, const std::vector<Ball> &balls) {

@@ -1,55 +1,73 @@
-// scene.h - what is on the table at the start of a run: the table's
-// geometry (cushions, pockets) and the balls of each scene.  SI units
+// scene.h - what is on the table at the start of a run.  SI units
 // throughout (m, m/s, kg); x runs along the table, y across it.
-//   break    a pool table (2.54 m x 1.27 m, six pockets), the cue ball on the
-//            head spot and 15 balls racked in a triangle on the foot spot
-//   elastic  the same table and rack without pockets
+//   break    a pool table (table.h: 2.54 m x 1.27 m, six pockets with jaws),
+//            the cue ball on the head spot and 15 balls racked in a
+//            triangle on the foot spot
+//   elastic  the same table's rectangle and rack, without pockets
 //   gas      a square box of disks on a jittered grid, 10% of its area
 //            covered, with uniformly random velocity components (far from
 //            equilibrium) and zero total momentum
+// --place puts chosen balls anywhere on the break or elastic table instead
+// of the rack (only the placed balls are on the table).
 #ifndef C2D_DEMO_SCENE_H
 #define C2D_DEMO_SCENE_H
 
 #include <cstdint>
+#include <string>
 #include <vector>
+
+#include "motion.h"
+#include "table.h"
 
 namespace demo {
 
 enum class Scene { Break, Elastic, Gas };
 
-constexpr double kBallDiameter = 0.05715;
-constexpr double kBallRadius = kBallDiameter / 2;
-constexpr double kBallMass = 0.17;
-
-struct Ball {
-    double x, y, vx, vy;
-    int number;  // 0 = cue ball, 1..15 object balls; gas: index
-    bool active;
+// A ball put on the table by hand: number 0 (cue ball) to 15, centre (x, y).
+struct Placement {
+    int number;
+    double x, y;
 };
 
-struct Segment { double ax, ay, bx, by, nx, ny; };  // cushion face, n points into the table
-struct Pocket { double x, y, capture_radius, draw_radius; };
-
-struct Table {
-    double length, width;   // playing surface [0,length] x [0,width]
-    double rail;            // drawn rail width
-    std::vector<Segment> cushions;
-    std::vector<Pocket> pockets;
-};
-
-struct Layout {
+struct Setup {
     Table table;
     std::vector<Ball> balls;  // break and elastic: the cue ball first
 };
 
-// The seed shuffles the rack (break, elastic) or places the gas.
-Layout set_up(Scene scene, int gas_balls, uint64_t seed);
+// The seed shuffles the rack (break, elastic) or places the gas.  With
+// placements (break, elastic) only those balls are on the table, in the
+// order given.
+Setup set_up(Scene scene, const TableSpec &spec, int gas_balls, uint64_t seed,
+             const std::vector<Placement> &placements = {});
 
-struct Point { double x, y; };
+// The table of the break (pockets) or elastic (a closed box) scene.
+Table scene_table(Scene scene, const TableSpec &spec);
+
+// Why placements cannot go on the table (a number outside 0..15 or given
+// twice, a ball not wholly on the playing surface, two balls overlapping),
+// or "" if they can.
+std::string placement_error(const Table &table, const std::vector<Placement> &placements);
 
 // Where a pocketed cue ball goes back: the head spot, or the nearest spot
 // towards the head rail that no ball covers.
 Point free_head_spot(const Table &table, const std::vector<Ball> &balls);
+
+// Seeded, platform-independent generator (splitmix64), so scenes and runs
+// are identical on every machine.
+class Rng {
+public:
+    explicit Rng(uint64_t seed) : state_(seed) {}
+    uint64_t next() {
+        uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    }
+    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
+
+private:
+    uint64_t state_;
+};
 
 }  // namespace demo
 

@@ -1,7 +1,9 @@
 // sim.cpp - see sim.h.
 #include "sim.h"
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "box2d_engine.h"
 #include "exact_engine.h"
@@ -10,19 +12,33 @@ namespace demo {
 
 namespace {
 
-// Below it a ball stops rather than crawl; and a last frame's slowing can
-// never reverse a ball.
-constexpr double kStopSpeed = 0.01;  // m/s
+std::unique_ptr<Engine> make_engine(const SimConfig &config, const std::vector<Ball> &balls, const Table &table) {
+    if (config.response == Response::Box2d) return make_box2d_engine(balls, table, config.model);
+    return make_exact_engine(balls, table, config.model);
+}
+
+// The cue ball's index, or -1.
+int cue_index(const std::vector<Ball> &balls) {
+    for (size_t i = 0; i < balls.size(); ++i)
+        if (balls[i].number == 0) return static_cast<int>(i);
+    return -1;
+}
+
+// The strike, and its event.
+Event strike_cue(Engine &engine, int cue, const Shot &shot) {
+    const Ball b = strike(engine.balls()[static_cast<size_t>(cue)], shot.angle_deg * (M_PI / 180.0), shot.speed,
+                          shot.side, shot.topback);
+    engine.set_motion(cue, b);
+    return Event{engine.now(), EventKind::Strike, cue, -1, -1, b.x, b.y, b.vx, b.vy, b.wx, b.wy, b.wz,
+                 kBallMass * shot.speed};
+}
 
 }  // namespace
 
 Simulation::Simulation(const SimConfig &config) : config_(config) {
-    const Layout start = set_up(config.scene, config.gas_balls, config.seed);
+    const Setup start = set_up(config.scene, config.table, config.gas_balls, config.seed, config.placements);
     table_ = start.table;
-    if (config.response == Response::Box2d)
-        engine_ = make_box2d_engine(start.balls, table_, config.losses.restitution);
-    else
-        engine_ = make_exact_engine(start.balls, table_, config.losses.restitution);
+    engine_ = make_engine(config, start.balls, table_);
 }
 
 Simulation::~Simulation() = default;
@@ -31,19 +47,21 @@ Simulation &Simulation::operator=(Simulation &&) noexcept = default;
 
 const std::vector<Ball> &Simulation::balls() const { return engine_->balls(); }
 
+double Simulation::time() const { return engine_->now(); }
+
 bool Simulation::cue_on_table() const {
-    return config_.scene != Scene::Gas && balls()[0].active;
+    const int cue = cue_index(balls());
+    return config_.scene != Scene::Gas && cue >= 0 && balls()[static_cast<size_t>(cue)].active;
 }
 
 void Simulation::shoot(const Shot &shot) {
     if (!cue_on_table()) return;
-    const double a = shot.angle_deg * (M_PI / 180.0);
-    engine_->set_velocity(0, shot.speed * std::cos(a), shot.speed * std::sin(a));
+    strikes_.push_back(strike_cue(*engine_, cue_index(balls()), shot));
 }
 
 bool Simulation::at_rest() const {
     for (const Ball &b : balls())
-        if (b.active && (b.vx != 0 || b.vy != 0)) return false;
+        if (b.active && (b.vx != 0 || b.vy != 0 || b.wx != 0 || b.wy != 0 || b.wz != 0)) return false;
     return true;
 }
 
@@ -54,14 +72,14 @@ int Simulation::object_balls_left() const {
 }
 
 void Simulation::respot_cue() {
-    if (config_.scene == Scene::Gas || balls()[0].active) return;
-    engine_->place_ball(0, free_head_spot(table_, balls()));
+    const int cue = cue_index(balls());
+    if (config_.scene == Scene::Gas || cue < 0 || balls()[static_cast<size_t>(cue)].active) return;
+    engine_->place_ball(cue, free_head_spot(table_, balls()));
 }
 
 double Simulation::energy() const {
     double e = 0;
-    for (const Ball &b : balls())
-        if (b.active) e += 0.5 * kBallMass * (b.vx * b.vx + b.vy * b.vy);
+    for (const Ball &b : balls()) e += demo::energy(b);
     return e;
 }
 
@@ -74,38 +92,68 @@ void Simulation::momentum(double out[2]) const {
         }
 }
 
-// Rolling resistance changes velocities only between frames, so the motion
-// inside a frame stays straight and its impacts exact.
-void Simulation::apply_rolling_resistance() {
-    const double slowing = config_.losses.rolling_deceleration * kFrameDt;
-    for (size_t i = 0; i < balls().size(); ++i) {
-        const Ball &b = balls()[i];
-        const double speed = std::hypot(b.vx, b.vy);
-        if (!b.active || speed == 0) continue;
-        const double slower = speed - slowing;
-        const double scale = slower < kStopSpeed ? 0.0 : slower / speed;
-        engine_->set_velocity(static_cast<int>(i), b.vx * scale, b.vy * scale);
-    }
-}
-
 void Simulation::step() {
     const std::vector<Ball> before = balls();
     frame_log_.contacts.clear();
     frame_log_.waypoints.clear();
+    frame_log_.events.clear();
     engine_->step(kFrameDt, stats_, frame_log_);
     checker_.check_frame(before, balls(), frame_log_, table_, kFrameDt, stats_);
-    if (config_.losses.rolling_deceleration > 0) apply_rolling_resistance();
+    frame_events_.swap(strikes_);
+    strikes_.clear();
+    frame_events_.insert(frame_events_.end(), frame_log_.events.begin(), frame_log_.events.end());
     ++stats_.steps;
     stats_.sim_seconds = static_cast<double>(stats_.steps) * kFrameDt;
 }
 
+namespace {
+
+ShotOutcome play(const SimConfig &config, const std::vector<Ball> &balls, const Shot *shot) {
+    const Table table = scene_table(config.scene, config.table);
+    std::unique_ptr<Engine> engine = make_engine(config, balls, table);
+    ShotOutcome out{};
+    FrameLog log;
+    const int cue = cue_index(balls);
+    if (shot && cue >= 0 && balls[static_cast<size_t>(cue)].active) out.events.push_back(strike_cue(*engine, cue, *shot));
+    const double start = engine->now();
+    out.settled = engine->settle(3600, out.stats, log);
+    out.events.insert(out.events.end(), log.events.begin(), log.events.end());
+    out.balls = engine->balls();
+    out.seconds = engine->now() - start;
+    return out;
+}
+
+}  // namespace
+
+ShotOutcome simulate_shot(const SimConfig &config, const std::vector<Ball> &balls, const Shot &shot) {
+    return play(config, balls, &shot);
+}
+
+ShotOutcome simulate_to_rest(const SimConfig &config, const std::vector<Ball> &balls) {
+    return play(config, balls, nullptr);
+}
+
 void run(Simulation &sim, Driver &driver) {
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point origin = Clock::now();
+    long paced = 0;
     while (driver.next_frame(sim)) {
         const bool at_rest = sim.at_rest();
         if (at_rest) sim.respot_cue();
         if (!driver.before_step(sim, at_rest)) return;
         sim.step();
         driver.after_step(sim);
+        const double pace = driver.frame_seconds();
+        if (pace <= 0) continue;
+        const Clock::time_point due = origin + std::chrono::duration_cast<Clock::duration>(
+                                                   std::chrono::duration<double>(pace * static_cast<double>(++paced)));
+        const Clock::time_point now = Clock::now();
+        if (now < due) {
+            std::this_thread::sleep_until(due);
+        } else if (now - due > std::chrono::milliseconds(250)) {
+            origin = now;
+            paced = 0;
+        }
     }
 }
 

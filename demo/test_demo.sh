@@ -83,6 +83,73 @@ bad --shot abc,5
 bad --seed -1
 bad --seed 1.5
 bad stray-argument
+bad --shot 0,2,0.1
+bad --shot 0,2,0.4,0.4
+bad --shot 0,2,0.5,x
+bad --place 1,2
+bad --place 16,1,0.6
+bad --place 0,3,0.6
+bad --place 0,0.01,0.6
+bad --place 0,1,0.6 --place 1,1.02,0.6
+bad --place 0,1,0.6 --place 0,1.5,0.6
+bad --place 1,1,0.6 --shot 0,2
+bad --scene gas --place 0,1,1
+bad --trace ""
+bad --events ""
+bad --events /nonexistent-dir/events.csv
+bad --screenshot /nonexistent-dir/shot.png
+
+# --- write errors: exit 1 and a message
+"$BIN" --headless --events /dev/full > /dev/null 2> "$TMP/err"
+[ $? = 1 ] && [ -s "$TMP/err" ]; check "a full disk for --events: exit 1 and a message" $?
+"$BIN" --headless --json > /dev/full 2> "$TMP/err"
+[ $? = 1 ] && [ -s "$TMP/err" ]; check "a full disk for stdout: exit 1 and a message" $?
+
+# --- headless-only options are refused in a window, before any SDL output
+DISPLAY=:7777 "$BIN" --json --seconds 1 > "$TMP/out" 2> "$TMP/err"
+status=$?
+[ "$status" = 2 ] && grep -q -- "--json" "$TMP/err" && grep -q -- "--headless" "$TMP/err" && [ ! -s "$TMP/out" ]
+check "window mode refuses --json and --seconds with a message" $?
+env -u DISPLAY -u WAYLAND_DISPLAY -u XDG_RUNTIME_DIR "$BIN" --seconds 1 > /dev/null 2> "$TMP/err"
+head -1 "$TMP/err" | grep -q '^billiards: no display' && ! grep -q XDG_RUNTIME_DIR "$TMP/err"
+check "no display: our message first, none from SDL" $?
+
+# --- --seconds is honoured up to the 86400 the help allows (no hidden cap)
+"$BIN" --headless --place 0,1,0.6 --seconds 7300 --json > "$TMP/long.json"
+[ "$(json_get "$TMP/long.json" steps)" = 438000 ]; check "--seconds 7300 runs 438000 frames" $?
+
+# --- --place, --shot with spin, --events, the JSON model and final state
+"$BIN" --headless --place 0,0.1,0.635 --shot 0,0.5 --events "$TMP/slide.csv" --json > "$TMP/slide.json"
+head -1 "$TMP/slide.csv" | grep -q '^time,kind,ball,other,x,y,vx,vy,wx,wy,wz$' &&
+    sed -n 2p "$TMP/slide.csv" | grep -q '^0,strike,0,-1,' &&
+    awk -F, 'NR > 1 { if ($1 < t) bad = 1; t = $1; if ($2 !~ /^(ball_ball|cushion|jaw|pocket|strike|slide_to_roll|roll_to_spin|stop)$/) bad = 1 }
+             END { exit bad }' "$TMP/slide.csv"
+check "--events: header, strike first, known kinds in time order" $?
+mu=$(json_get "$TMP/slide.json" mu_slide)
+g=$(json_get "$TMP/slide.json" gravity)
+awk -F, -v mu="$mu" -v g="$g" '$2 == "slide_to_roll" {
+        d = $5 - 0.1; want = 12 * 0.25 / (49 * mu * g)
+        printf "    centre ball at 0.5 m/s: slid %.9f m (12 v^2 / 49 mu_s g = %.9f), then %.9f m/s (5v/7 = %.9f)\n", d, want, $7, 2.5 / 7
+        ok = (d - want < 1e-9 && want - d < 1e-9 && $7 - 2.5 / 7 < 1e-12 && 2.5 / 7 - $7 < 1e-12) }
+    END { exit !ok }' "$TMP/slide.csv"
+check "--events: the slide ends after 12 v^2 / (49 mu_s g) at 5/7 of v" $?
+for key in model mu_slide mu_roll mu_spin ball_restitution ball_friction cushion_restitution cushion_friction \
+           corner_mouth side_mouth scratches ball_count; do
+    grep -q "\"$key\":" "$TMP/slide.json" || { echo "    missing key $key"; key=missing; break; }
+done
+[ "$key" != missing ] && [ "$(json_get "$TMP/slide.json" ball_count)" = 1 ] &&
+    grep -q '"balls":\[{"number":0,"x":[^,]*,"y":0.63500000000000001,"vx":0,"vy":0,"wx":0,"wy":0,"wz":0,"state":"stationary","on_table":true}\]' "$TMP/slide.json"
+check "JSON: the model by name, and each ball's final state" $?
+"$BIN" --headless --place 0,0.5,0.5 --shot 225,1 --json > "$TMP/scratch.json"
+"$BIN" --headless --place 0,0.6,0.3 --place 1,0.4,0.2 --shot 206.565,2 --json > "$TMP/pot.json"
+[ "$(json_get "$TMP/scratch.json" scratches)" = 1 ] && [ "$(json_get "$TMP/scratch.json" pocketed)" = 0 ] &&
+    [ "$(json_get "$TMP/pot.json" scratches)" = 0 ] && [ "$(json_get "$TMP/pot.json" pocketed)" = 1 ] &&
+    grep -q '"number":1,[^}]*"state":"pocketed","on_table":false' "$TMP/pot.json"
+check "pocketed counts object balls, scratches the cue ball" $?
+"$BIN" --headless --place 0,0.8,0.4 --place 3,1.6,0.7 --shot 20,3,0.3,-0.2 --shot 180,2,-0.2,0.3 --json > "$TMP/run1.json"
+"$BIN" --headless --place 0,0.8,0.4 --place 3,1.6,0.7 --shot 20,3,0.3,-0.2 --shot 180,2,-0.2,0.3 --json > "$TMP/run2.json"
+[ "$(strip_wall "$TMP/run1.json")" = "$(strip_wall "$TMP/run2.json")" ] && [ "$(json_get "$TMP/run1.json" tunnelled)" = 0 ]
+check "deterministic with --place and spin shots" $?
 
 # --- gas: the speed distribution relaxes to 2-D Maxwell-Boltzmann (Rayleigh).
 # One-sample Kolmogorov-Smirnov distance against the Rayleigh CDF whose sigma^2
