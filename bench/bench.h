@@ -187,4 +187,22 @@ typedef struct rough_stats {
  * MPFR referee (referee/ref_rough.c). */
 void rough_evaluate(int which, int extreme, int n, unsigned long long seed, rough_stats *out);
 
+/* Results go here so no timed loop can be optimised away (timing.c). */
+extern volatile double bench_sink;
+
+/* ------------------------- time of impact under acceleration (toi_accel.c)
+ * The library (double, float) and the textbook quartic solvers
+ * (bench/quartic.c) on the unit test's families (referee/cases_toi_accel.c)
+ * against the exact referee (referee/ref_toi_accel.c). */
+enum { TA_LIB, TA_LIBF, TA_FERRARI, TA_STURM, TA_COUNT };
+enum { TA_BILLIARDS, TA_ALL, TA_SETS };       /* timed sets: the billiards family, every family */
+typedef struct toia_stats {
+    long n, band, wrong, band_wrong, beyond, evaluated, nan_inf;
+    double worst;        /* units (ulp(t) + ulp(|d|)/s) outside the band */
+    double ns[TA_SETS];  /* median ns per call over interleaved rounds */
+} toia_stats;
+#define TOIA_BEYOND_UNITS 4.0
+/* n cases per family; rounds of interleaved timing. */
+void toia_measure(int n_per_family, int rounds, toia_stats out[TA_COUNT]);
+
 #endif

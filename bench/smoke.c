@@ -10,6 +10,7 @@
 
 #include "approaches.h"
 #include "box2d_contender.h"
+#include "cases_toi_accel.h"
 #include "old.h"
 
 static c2d_tally tally;
@@ -254,6 +255,26 @@ static void check_toi(void)
             }
 }
 
+/* The accelerated time of impact's table: every contender runs on every
+ * family and is timed; the library keeps its contract (exact statuses
+ * outside the band, within 1 unit). */
+static void check_toi_accel(void)
+{
+    toia_stats st[TA_COUNT];
+    char what[200];
+    int k;
+    toia_measure(12, 3, st);
+    for (k = 0; k < TA_COUNT; k++) {
+        snprintf(what, sizeof what, "accel toi contender %d runs on %ld cases and is timed (%.1f / %.1f ns)", k, st[k].n,
+                 st[k].ns[TA_BILLIARDS], st[k].ns[TA_ALL]);
+        check(st[k].n == 12L * toia_n_families && st[k].ns[TA_BILLIARDS] > 0 && st[k].ns[TA_ALL] > 0, what);
+        if (k != TA_LIB && k != TA_LIBF) continue;
+        snprintf(what, sizeof what, "library accel toi (%s): %ld wrong statuses, worst %.3g units <= 1",
+                 k == TA_LIBF ? "float" : "double", st[k].wrong, st[k].worst);
+        check(st[k].wrong == 0 && st[k].nan_inf == 0 && !(st[k].worst > 1), what);
+    }
+}
+
 int bench_smoke(void)
 {
     check_referee();
@@ -263,6 +284,7 @@ int bench_smoke(void)
     check_ratios();
     check_rough();
     check_toi();
+    check_toi_accel();
     c2d_put_tally(NULL, &tally);
     return c2d_tally_status(&tally);
 }

@@ -21,6 +21,11 @@
 #define TOIA_EPS_G_FLOAT 0x1p-38
 #define TOIA_K_RES 0x1p12
 
+/* 1 when the two accelerations differ (the relative motion is curved). */
+int toia_accel_differs(const ref_toia_in *in);
+/* 1 when the case lies in the band above (for the working format). */
+int toia_in_band(const ref_toia_out *o, int is_float, const ref_toia_in *in);
+
 typedef void (*case_gen)(c2d_rng *r, int prec, ref_toia_in *in);
 
 typedef struct family {
