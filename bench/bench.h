@@ -9,7 +9,7 @@
 #include "cases.h"
 #include "harness.h"
 #include "referee.h"
-#include "ref_rough.h"
+#include "cases_rough.h"
 
 /* How a contender is called and which precision its answers have. */
 typedef enum bench_kind {
@@ -173,8 +173,6 @@ void toi_evaluate(int which, int is_float, int extreme, int n, unsigned long lon
 
 /* ------------------------------------------------------- rough disks
  * (rough.c) */
-void gen_rough(c2d_rng *r, ref_rough_case *c);
-void gen_rough_extreme(c2d_rng *r, ref_rough_case *c, int prec, int emin, int emax);
 
 enum { RK_LIB, RK_LIBF, RK_WALTON, RK_COUNT };
 typedef struct rough_stats {

@@ -107,20 +107,6 @@ static rset *rset_make(const ref_case *cd, const ref_case *cf, const double *rad
     return s;
 }
 
-static void disk_of(c2d_disk *d, const ref_disk *r)
-{
-    d->pos.x = r->pos[0], d->pos.y = r->pos[1], d->vel.x = r->vel[0], d->vel.y = r->vel[1];
-    d->spin = r->spin, d->mass = r->mass, d->radius = r->radius, d->inertia = r->inertia;
-}
-
-static void diskf_of(c2d_diskf *d, const ref_disk *r)
-{
-    d->pos.x = (float)r->pos[0], d->pos.y = (float)r->pos[1];
-    d->vel.x = (float)r->vel[0], d->vel.y = (float)r->vel[1];
-    d->spin = (float)r->spin, d->mass = (float)r->mass, d->radius = (float)r->radius;
-    d->inertia = (float)r->inertia;
-}
-
 /* A rough set: the disks, their surfaces, and the frictionless bodies of
  * the same pairs (normal = b.pos - a.pos for every call). */
 static rset *rset_rough(const ref_rough_case *rc, int n)
@@ -142,10 +128,9 @@ static rset *rset_rough(const ref_rough_case *rc, int n)
     ALLOC(s->dfa0, n), ALLOC(s->dfb0, n), ALLOC(s->dfa, n), ALLOC(s->dfb, n);
     ALLOC(s->surf, n), ALLOC(s->surff, n);
     for (i = 0; i < n; i++) {
-        disk_of(&s->da0[i], &rc[i].a), disk_of(&s->db0[i], &rc[i].b);
-        diskf_of(&s->dfa0[i], &rc[i].a), diskf_of(&s->dfb0[i], &rc[i].b);
-        s->surf[i].restitution = rc[i].e, s->surf[i].friction = rc[i].mu;
-        s->surf[i].tangential_restitution = rc[i].beta;
+        rough_disk_of(&s->da0[i], &rc[i].a), rough_disk_of(&s->db0[i], &rc[i].b);
+        rough_diskf_of(&s->dfa0[i], &rc[i].a), rough_diskf_of(&s->dfb0[i], &rc[i].b);
+        s->surf[i] = rough_surface_of(&rc[i]);
         s->surff[i].restitution = (float)rc[i].e, s->surff[i].friction = (float)rc[i].mu;
         s->surff[i].tangential_restitution = (float)rc[i].beta;
     }

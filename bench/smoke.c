@@ -217,11 +217,8 @@ static void check_rough(void)
         c2d_status s1, s2;
         double scale;
         gen_rough(&r, &c);
-        a.pos.x = c.a.pos[0], a.pos.y = c.a.pos[1], a.vel.x = c.a.vel[0], a.vel.y = c.a.vel[1];
-        a.spin = c.a.spin, a.mass = c.a.mass, a.radius = c.a.radius, a.inertia = c.a.inertia;
-        b.pos.x = c.b.pos[0], b.pos.y = c.b.pos[1], b.vel.x = c.b.vel[0], b.vel.y = c.b.vel[1];
-        b.spin = c.b.spin, b.mass = c.b.mass, b.radius = c.b.radius, b.inertia = c.b.inertia;
-        s.restitution = c.e, s.friction = c.mu, s.tangential_restitution = c.beta;
+        rough_disk_of(&a, &c.a), rough_disk_of(&b, &c.b);
+        s = rough_surface_of(&c);
         a2 = a, b2 = b;
         s1 = c2d_collide_rough(&a, &b, s);
         s2 = bench_walton(&a2, &b2, s);
