@@ -49,6 +49,14 @@ static void c2d_dx_set(c2d_dx *r, c2d_real h, c2d_real l, int e)
 
 static void c2d_dx_of(c2d_dx *r, c2d_real x) { c2d_dx_set(r, x, 0, 0); }
 
+/* *d = *s field by field (no memcpy call on small cores). */
+static void c2d_dx_copy(c2d_dx *d, const c2d_dx *s)
+{
+    d->h = s->h;
+    d->l = s->l;
+    d->e = s->e;
+}
+
 static void c2d_dx_negate(c2d_dx *a)
 {
     a->h = -a->h;
@@ -110,7 +118,7 @@ static void c2d_dx_sqrt(c2d_dx *r, const c2d_dx *a)
 {
     c2d_real h = a->h, l = a->l, s, err, p;
     int e = a->e;
-    if (h <= 0) {
+    if (!(h > 0)) { /* 0, or below: the square root of a rounded zero */
         c2d_dx_of(r, 0);
         return;
     }
