@@ -573,10 +573,10 @@ static void gen_toi_ordinary(c2d_rng *r, ref_case *c, double *rad)
 
 /* Extreme time-of-impact pairs (tests/unit/test_time_of_impact.c): half
  * scaled anywhere in the range, half with every component at its own
- * exponent (magnitudes that differ by more than the exponent range). */
+ * exponent (gen_toi_ratios). */
 static void gen_toi_extreme(c2d_rng *r, ref_case *c, double *rad, int prec, int emin, int emax)
 {
-    int i, sub = emin - prec + 1;
+    int i;
     if (c2d_rng_next(r) & 1) {
         const int sp = (int)(c2d_rng_next(r) % (uint64_t)(2 * emax)) - emax;
         const int sv = (int)(c2d_rng_next(r) % (uint64_t)(2 * emax)) - emax;
@@ -587,16 +587,7 @@ static void gen_toi_extreme(c2d_rng *r, ref_case *c, double *rad, int prec, int 
         }
         *rad = ldexp(*rad, sp);
     } else {
-        for (i = 0; i < 2; i++) {
-            c->pa[i] = c2d_rng_next(r) % 4 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
-            c->pb[i] = gen_magnitude(r, sub, emax - 2, prec);
-            c->va[i] = c2d_rng_next(r) % 4 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
-            c->vb[i] = c2d_rng_next(r) % 3 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
-        }
-        *rad = fabs(gen_magnitude(r, sub, emax - 2, prec));
-        if (c2d_rng_next(r) % 4 != 0 &&
-            (c->pb[0] - c->pa[0]) * (c->vb[0] - c->va[0]) + (c->pb[1] - c->pa[1]) * (c->vb[1] - c->va[1]) > 0)
-            for (i = 0; i < 2; i++) c->va[i] = -c->va[i], c->vb[i] = -c->vb[i];
+        gen_toi_ratios(r, c, rad, prec, emin, emax);
     }
     c->ma = c->mb = 1, c->n[0] = c->n[1] = 0, c->has_normal = 0, c->e = 1;
     if (prec < 53) {

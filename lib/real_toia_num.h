@@ -165,33 +165,17 @@ static c2d_real c2d_toia_t_value(const c2d_dx *t)
  * algorithms with an exponent; each within a few u^2). */
 static void c2d_toia_t_sum(c2d_dx *r, const c2d_dx *a, const c2d_dx *b)
 {
-    c2d_real ah = a->h, al = a->l, bh = b->h, bl = b->l, s, e1, t, e2;
-    int k = a->e - b->e, e = a->e;
+    const c2d_real pa[2] = {a->h, a->l}, pb[2] = {b->h, b->l};
+    const int k = a->e - b->e;
     if (b->h == 0) {
         c2d_dx_copy(r, a);
-        return;
-    }
-    if (a->h == 0 || k < -(2 * C2D_R_MANT + 8)) {
+    } else if (a->h == 0 || k < -(2 * C2D_R_MANT + 8)) {
         c2d_dx_copy(r, b);
-        return;
-    }
-    if (k > 2 * C2D_R_MANT + 8) {
+    } else if (k > 2 * C2D_R_MANT + 8) {
         c2d_dx_copy(r, a);
-        return;
-    }
-    if (k >= 0) {
-        bh = c2d_scale2(bh, -k);
-        bl = c2d_scale2(bl, -k);
     } else {
-        ah = c2d_scale2(ah, k);
-        al = c2d_scale2(al, k);
-        e = b->e;
+        c2d_dx_sum_aligned(r, pa, a->e, pb, b->e);
     }
-    s = c2d_two_sum(ah, bh, &e1);
-    t = c2d_two_sum(al, bl, &e2);
-    e1 += t;
-    s = c2d_two_sum(s, e1, &e1);
-    c2d_dx_set(r, s, e1 + e2, e);
 }
 
 /* Geometric or arithmetic midpoint of a < b (both >= 0), for bisection:
