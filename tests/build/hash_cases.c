@@ -562,6 +562,7 @@ static void run_models_float(const hv_model_scene *s)
 
 void c2d_hv_run_models(unsigned long count, c2d_hv_models_hash *h, void (*bytes)(const void *p, size_t n))
 {
+    static hv_model_scene s; /* static: off a microcontroller's small stack */
     unsigned long done;
     int m;
     rng.s = 0x6A09E667F3BCC909ull; /* not the variants' seed: its own stream */
@@ -575,7 +576,6 @@ void c2d_hv_run_models(unsigned long count, c2d_hv_models_hash *h, void (*bytes)
     h->present[C2D_HV_ROUGH_FLOAT] = h->present[C2D_HV_ACCEL_FLOAT] = 1;
 #endif
     for (done = 0; done < count; done++) {
-        static hv_model_scene s;
         make_rough(&s);
         make_accel(&s);
         fnv(&h->inputs, &s, sizeof s);

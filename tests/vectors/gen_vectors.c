@@ -368,7 +368,7 @@ static double body_ulp(const ref_disk *d, mpfr_srcptr vx, mpfr_srcptr vy, mpfr_s
 {
     mpfr_t s, x;
     long ex = 0;
-    mpfr_inits2(4400, s, x, (mpfr_ptr)0);
+    mpfr_inits2(4400, s, x, (mpfr_ptr)0); /* as referee/ref_rough.c: every product exact */
     mpfr_set_d(s, fmax(fabs(d->vel[0]), fabs(d->vel[1])), MPFR_RNDN);
     mpfr_set_d(x, d->spin, MPFR_RNDN), mpfr_mul_d(x, x, d->radius, MPFR_RNDN), mpfr_abs(x, x, MPFR_RNDN);
     mpfr_max(s, s, x, MPFR_RNDN);
