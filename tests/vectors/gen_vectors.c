@@ -388,14 +388,34 @@ static void disk_in(ref_disk *d, const double *x)
     d->spin = x[4], d->mass = x[5], d->radius = x[6], d->inertia = x[7];
 }
 
-static int emit_rough(FILE *o, const grcase *c, int variant)
+/* The outputs rounded to the variant and their tolerances (vectors.h). */
+static void rough_expected(const ref_rough_case *rc, const ref_rough_answer *ans, int variant, double out[6],
+                           double tol[6])
 {
     const int prec = variant == F ? 24 : 53, emin = variant == F ? -126 : -1022;
+    const ref_disk *d[2] = {&rc->a, &rc->b};
+    int i;
+    for (i = 0; i < 2; i++) {
+        const double u = 18 * body_ulp(d[i], ans->out[2 * i], ans->out[2 * i + 1], ans->out[4 + i], prec, emin);
+        out[2 * i] = mpfr_in(ans->out[2 * i], variant);
+        out[2 * i + 1] = mpfr_in(ans->out[2 * i + 1], variant);
+        out[4 + i] = mpfr_in(ans->out[4 + i], variant);
+        tol[2 * i] = tol_up(u + ref_ulp(fabs(out[2 * i]), prec, emin) / 2, variant);
+        tol[2 * i + 1] = tol_up(u + ref_ulp(fabs(out[2 * i + 1]), prec, emin) / 2, variant);
+        /* u / radius rounded up: one ulp above the nearest double */
+        tol[4 + i] = d[i]->radius == 0 ? 0
+                     : tol_up(nextafter(u / d[i]->radius, INFINITY) + ref_ulp(fabs(out[4 + i]), prec, emin) / 2,
+                              variant);
+    }
+}
+
+static int emit_rough(FILE *o, const grcase *c, int variant)
+{
     const double limit = variant == F ? FLT_MAX : DBL_MAX;
     ref_rough_case rc;
     ref_rough_answer ans;
     double out[6] = {c->a[2], c->a[3], c->b[2], c->b[3], c->a[4], c->b[4]}, tol[6] = {0, 0, 0, 0, 0, 0};
-    int status, i;
+    int status;
     if (!representable_all(c->name, c->a, 8, variant) || !representable_all(c->name, c->b, 8, variant) ||
         !representable_all(c->name, c->n, 2, variant) || !representable_all(c->name, c->s, 3, variant))
         return -1;
@@ -412,21 +432,7 @@ static int emit_rough(FILE *o, const grcase *c, int variant)
         return -1;
     }
     if (status == C2D_OK && ans.range_required) status = C2D_RANGE;
-    if (status == C2D_OK) {
-        const ref_disk *d[2] = {&rc.a, &rc.b};
-        for (i = 0; i < 2; i++) {
-            const double u = 18 * body_ulp(d[i], ans.out[2 * i], ans.out[2 * i + 1], ans.out[4 + i], prec, emin);
-            out[2 * i] = mpfr_in(ans.out[2 * i], variant);
-            out[2 * i + 1] = mpfr_in(ans.out[2 * i + 1], variant);
-            out[4 + i] = mpfr_in(ans.out[4 + i], variant);
-            tol[2 * i] = tol_up(u + ref_ulp(fabs(out[2 * i]), prec, emin) / 2, variant);
-            tol[2 * i + 1] = tol_up(u + ref_ulp(fabs(out[2 * i + 1]), prec, emin) / 2, variant);
-            /* u / radius rounded up: one ulp above the nearest double */
-            tol[4 + i] = d[i]->radius == 0 ? 0
-                         : tol_up(nextafter(u / d[i]->radius, INFINITY) + ref_ulp(fabs(out[4 + i]), prec, emin) / 2,
-                                  variant);
-        }
-    }
+    if (status == C2D_OK) rough_expected(&rc, &ans, variant, out, tol);
     ref_rough_clear(&ans);
     fprintf(o, "    {\"%s\", %d, ", c->name, c->normal_given);
     print_arr(o, c->a, 8, variant), fputs(", ", o), print_arr(o, c->b, 8, variant), fputs(", ", o);
