@@ -30,6 +30,19 @@ typedef c2d_soa c2d_num_soa;
 #define C2D_T_VECTORS c2d_vectors_d
 #define C2D_T_VECTOR_COUNT c2d_vector_count_d
 
+/* The models (tests/vectors/check_models.h and its tables). */
+#define C2D_T_DISK c2d_disk
+#define C2D_T_SURFACE c2d_surface
+#define C2D_T_COLLIDE_ROUGH c2d_collide_rough
+#define C2D_T_COLLIDE_ROUGH_NORMAL c2d_collide_rough_normal
+#define C2D_T_TIME_OF_IMPACT_ACCEL c2d_time_of_impact_accel
+#define C2D_T_ROUGH_VECTOR c2d_rough_vector_d
+#define C2D_T_ROUGH_VECTORS c2d_rough_vectors_d
+#define C2D_T_ROUGH_VECTOR_COUNT c2d_rough_vector_count_d
+#define C2D_T_ACCEL_VECTOR c2d_accel_vector_d
+#define C2D_T_ACCEL_VECTORS c2d_accel_vectors_d
+#define C2D_T_ACCEL_VECTOR_COUNT c2d_accel_vector_count_d
+
 /* The fuzz harness's decoders (tests/fuzz/fuzz.h). */
 #define C2D_T_READ c2d_fuzz_read_double
 #define C2D_T_READ_MASS c2d_fuzz_read_mass
