@@ -36,7 +36,8 @@ Event strike_cue(Engine &engine, int cue, const Shot &shot) {
 }  // namespace
 
 Simulation::Simulation(const SimConfig &config) : config_(config) {
-    const Setup start = set_up(config.scene, config.table, config.gas_balls, config.seed, config.placements);
+    const int count = config.scene == Scene::Cradle ? config.cradle_balls : config.gas_balls;
+    const Setup start = set_up(config.scene, config.table, count, config.seed, config.placements);
     table_ = start.table;
     engine_ = make_engine(config, start.balls, table_);
 }
