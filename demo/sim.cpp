@@ -14,7 +14,9 @@ namespace {
 
 std::unique_ptr<Engine> make_engine(const SimConfig &config, const std::vector<Ball> &balls, const Table &table) {
     if (config.response == Response::Box2d) return make_box2d_engine(balls, table, config.model);
-    return make_exact_engine(balls, table, config.model);
+    // the gas's many even balls: a uniform grid finds candidates faster than
+    // Box2D's tree (broadphase.h); the pool scenes keep the tree
+    return make_exact_engine(balls, table, config.model, config.scene == Scene::Gas);
 }
 
 // The cue ball's index, or -1.
