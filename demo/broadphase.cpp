@@ -69,7 +69,7 @@ private:
         return Range{index(b.lowerBound.x, x0_, nx_), index(b.lowerBound.y, y0_, ny_), index(b.upperBound.x, x0_, nx_),
                      index(b.upperBound.y, y0_, ny_)};
     }
-    std::vector<int32> &cell(int x, int y) { return cells_[static_cast<size_t>(y * nx_ + x)]; }
+    std::vector<int32> &cell(int x, int y) { return cells_[static_cast<size_t>(y) * static_cast<size_t>(nx_) + static_cast<size_t>(x)]; }
     void list(int32 proxy, const Range &r);
     void unlist(int32 proxy, const Range &r);
 

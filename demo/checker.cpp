@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 extern "C" {
 #include "collide2d.h"
@@ -96,12 +97,21 @@ double cushion_overlap(const Ball &b, const Table &table) {
 
 }  // namespace
 
+// The waypoints sorted by ball, then time, as a stable sort would: counted
+// out by ball (stable, linear), then each ball's few sorted by time if they
+// are not already (an engine logs them in time order).
 void Checker::index_waypoints(const FrameLog &log, size_t n) {
-    points_ = log.waypoints;
-    std::stable_sort(points_.begin(), points_.end());
     first_.assign(n + 1, 0);
-    for (const Waypoint &w : points_) ++first_[static_cast<size_t>(w.ball) + 1];
+    for (const Waypoint &w : log.waypoints) ++first_[static_cast<size_t>(w.ball) + 1];
     for (size_t i = 0; i < n; ++i) first_[i + 1] += first_[i];
+    points_.resize(log.waypoints.size());
+    fill_.assign(first_.begin(), first_.end() - 1);
+    for (const Waypoint &w : log.waypoints) points_[fill_[static_cast<size_t>(w.ball)]++] = w;
+    for (size_t i = 0; i < n; ++i) {
+        const auto begin = points_.begin() + static_cast<std::ptrdiff_t>(first_[i]);
+        const auto end = points_.begin() + static_cast<std::ptrdiff_t>(first_[i + 1]);
+        if (!std::is_sorted(begin, end)) std::stable_sort(begin, end);
+    }
 }
 
 void Checker::bound_paths(const std::vector<Ball> &before, const std::vector<Ball> &after) {
@@ -124,7 +134,11 @@ void Checker::bound_paths(const std::vector<Ball> &before, const std::vector<Bal
 
 // Candidate pairs come from a uniform grid, not from Box2D, so the check
 // shares nothing with the engines.  Cells are at least as wide as the
-// largest path box: boxes that overlap sit in neighbouring cells.
+// largest path box: boxes that overlap sit in the same or neighbouring
+// cells, so each ball looks at its own cell's later balls and at all balls
+// of the four neighbours that follow its cell (east, and the three above):
+// every neighbouring pair of cells once.  A pair is visited lower index
+// first.
 template <typename Visit>
 void Checker::for_each_close_pair(Visit visit) {
     const size_t n = box_.size();
@@ -138,7 +152,7 @@ void Checker::for_each_close_pair(Visit visit) {
     if (!(x0 <= x1)) return;
     cell = std::max(cell, std::max(x1 - x0, y1 - y0) / 2048);  // bounded grid, whatever the spread
     const size_t nx = static_cast<size_t>((x1 - x0) / cell) + 1, ny = static_cast<size_t>((y1 - y0) / cell) + 1;
-    cell_of_.assign(n, 0);
+    cell_of_.resize(n);
     cell_start_.assign(nx * ny + 1, 0);
     auto cell_x = [&](const Box &b) { return std::min(nx - 1, static_cast<size_t>((0.5 * (b.x0 + b.x1) - x0) / cell)); };
     auto cell_y = [&](const Box &b) { return std::min(ny - 1, static_cast<size_t>((0.5 * (b.y0 + b.y1) - y0) / cell)); };
@@ -149,20 +163,26 @@ void Checker::for_each_close_pair(Visit visit) {
     }
     for (size_t k = 0; k < nx * ny; ++k) cell_start_[k + 1] += cell_start_[k];
     by_cell_.assign(cell_start_[nx * ny], 0);
-    std::vector<size_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+    fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
     for (size_t i = 0; i < n; ++i)
-        if (live_[i]) by_cell_[fill[cell_of_[i]]++] = i;
+        if (live_[i]) by_cell_[fill_[cell_of_[i]]++] = i;
+    // own cell, east, north-west, north, north-east: (dx, dy)
+    static const int kForward[5][2] = {{0, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
     for (size_t i = 0; i < n; ++i) {
         if (!live_[i]) continue;
         const Box &bi = box_[i];
         const size_t cx = cell_of_[i] % nx, cy = cell_of_[i] / nx;
-        for (size_t gy = cy ? cy - 1 : 0; gy <= std::min(ny - 1, cy + 1); ++gy)
-            for (size_t gx = cx ? cx - 1 : 0; gx <= std::min(nx - 1, cx + 1); ++gx)
-                for (size_t k = cell_start_[gy * nx + gx]; k < cell_start_[gy * nx + gx + 1]; ++k) {
-                    const size_t j = by_cell_[k];
-                    const Box &bj = box_[j];
-                    if (j > i && bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) visit(i, j);
-                }
+        for (const int *d : kForward) {
+            if ((d[0] < 0 && cx == 0) || (d[0] > 0 && cx + 1 == nx) || (d[1] > 0 && cy + 1 == ny)) continue;
+            const size_t gx = d[0] < 0 ? cx - 1 : cx + static_cast<size_t>(d[0]);
+            const size_t c = (cy + static_cast<size_t>(d[1])) * nx + gx;
+            for (size_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+                const size_t j = by_cell_[k];
+                const Box &bj = box_[j];
+                if ((c != cell_of_[i] || j > i) && bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1)
+                    visit(std::min(i, j), std::max(i, j));
+            }
+        }
     }
 }
 

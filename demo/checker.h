@@ -35,7 +35,7 @@ private:
     std::vector<char> live_;           // on the table before and after the frame
     std::vector<Waypoint> points_;     // this frame's waypoints, sorted by ball then time
     std::vector<size_t> first_;        // points_[first_[i] .. first_[i+1]) belong to ball i
-    std::vector<size_t> cell_of_, cell_start_, by_cell_;
+    std::vector<size_t> cell_of_, cell_start_, by_cell_, fill_;
     std::vector<char> escaped_;
 };
 
