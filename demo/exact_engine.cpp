@@ -42,9 +42,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
 
 #include "broadphase.h"
+#include "event_queue.h"
 #include "slow_contact.h"
 
 extern "C" {
@@ -194,7 +194,7 @@ private:
     std::vector<int32> proxy_;
     std::vector<b2AABB> swept_;
     std::unique_ptr<Broadphase> broad_;
-    std::priority_queue<Pending, std::vector<Pending>, std::greater<Pending>> queue_;
+    EventQueue<Pending> queue_{kFrameDt / 4};  // buckets of a quarter frame
     double now_ = 0;
     bool record_paths_ = true;       // waypoints and contacts for the checker
     std::vector<uintptr_t> hits_;    // the tags a query found
@@ -406,7 +406,7 @@ void ExactEngine::remove(int i) {
 // Forgets every event and finds them all again: at the start, and after a
 // frame whose event budget ran out.
 void ExactEngine::restart() {
-    queue_ = {};
+    queue_.clear();
     for (size_t i = 0; i < balls_.size(); ++i) mark_changed(static_cast<int>(i));
     find_events_of_changed();
 }
@@ -748,9 +748,8 @@ bool ExactEngine::resolve(const Pending &e, Stats &stats, FrameLog &log) {
 // Processes the events up to t_limit; false if the budget ran out first.
 bool ExactEngine::process(double t_limit, long budget, Stats &stats, FrameLog &log) {
     long processed = 0;
-    while (!queue_.empty() && queue_.top().t <= t_limit) {
-        const Pending e = queue_.top();
-        queue_.pop();
+    Pending e;
+    while (queue_.pop_until(t_limit, e)) {
         if (e.gen_a != gen_[static_cast<size_t>(e.a)]) continue;
         if (e.kind == kBallProxy && e.gen_b != gen_[static_cast<size_t>(e.b)]) continue;
         if (++processed > budget) return false;
