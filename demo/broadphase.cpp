@@ -44,7 +44,8 @@ public:
     CellGrid(const b2AABB &region, float cell)
         : x0_(region.lowerBound.x), y0_(region.lowerBound.y), inv_cell_(1.0f / cell),
           nx_(columns(region.upperBound.x - region.lowerBound.x, cell)),
-          ny_(columns(region.upperBound.y - region.lowerBound.y, cell)), cells_(static_cast<size_t>(nx_ * ny_)) {}
+          ny_(columns(region.upperBound.y - region.lowerBound.y, cell)),
+          cells_(static_cast<size_t>(nx_) * static_cast<size_t>(ny_)) {}
     int32 add(const b2AABB &box, uintptr_t tag) override;
     void move(int32 proxy, const b2AABB &box) override;
     void remove(int32 proxy) override;
@@ -55,10 +56,12 @@ private:
         int x0, y0, x1, y1;
         bool operator==(const Range &o) const { return x0 == o.x0 && y0 == o.y0 && x1 == o.x1 && y1 == o.y1; }
     };
-    struct Proxy {
+    // A box as a cell lists it: everything a query needs, so a query reads
+    // only the cells' own memory.
+    struct Entry {
         b2AABB box;
         uintptr_t tag;
-        Range cells;
+        int x0, y0;  // its first column and row
     };
     static int columns(float extent, float cell) { return std::max(1, static_cast<int>(std::ceil(extent / cell))); }
     int index(float v, float origin, int n) const {
@@ -69,27 +72,34 @@ private:
         return Range{index(b.lowerBound.x, x0_, nx_), index(b.lowerBound.y, y0_, ny_), index(b.upperBound.x, x0_, nx_),
                      index(b.upperBound.y, y0_, ny_)};
     }
-    std::vector<int32> &cell(int x, int y) { return cells_[static_cast<size_t>(y) * static_cast<size_t>(nx_) + static_cast<size_t>(x)]; }
-    void list(int32 proxy, const Range &r);
-    void unlist(int32 proxy, const Range &r);
+    std::vector<Entry> &cell(int x, int y) {
+        return cells_[static_cast<size_t>(y) * static_cast<size_t>(nx_) + static_cast<size_t>(x)];
+    }
+    Entry *find(int x, int y, uintptr_t tag) {
+        std::vector<Entry> &c = cell(x, y);
+        return &*std::find_if(c.begin(), c.end(), [tag](const Entry &e) { return e.tag == tag; });
+    }
+    void list(const Entry &e, const Range &r);
+    void unlist(uintptr_t tag, const Range &r);
 
     float x0_, y0_, inv_cell_;
     int nx_, ny_;
-    std::vector<std::vector<int32>> cells_;
-    std::vector<Proxy> proxies_;
+    std::vector<std::vector<Entry>> cells_;
+    std::vector<uintptr_t> tag_;  // by proxy
+    std::vector<Range> range_;    // by proxy: the cells that list it
     std::vector<int32> free_;
 };
 
-void CellGrid::list(int32 proxy, const Range &r) {
+void CellGrid::list(const Entry &e, const Range &r) {
     for (int y = r.y0; y <= r.y1; ++y)
-        for (int x = r.x0; x <= r.x1; ++x) cell(x, y).push_back(proxy);
+        for (int x = r.x0; x <= r.x1; ++x) cell(x, y).push_back(e);
 }
 
-void CellGrid::unlist(int32 proxy, const Range &r) {
+void CellGrid::unlist(uintptr_t tag, const Range &r) {
     for (int y = r.y0; y <= r.y1; ++y)
         for (int x = r.x0; x <= r.x1; ++x) {
-            std::vector<int32> &c = cell(x, y);
-            *std::find(c.begin(), c.end(), proxy) = c.back();
+            std::vector<Entry> &c = cell(x, y);
+            *find(x, y, tag) = c.back();
             c.pop_back();
         }
 }
@@ -97,30 +107,36 @@ void CellGrid::unlist(int32 proxy, const Range &r) {
 int32 CellGrid::add(const b2AABB &box, uintptr_t tag) {
     int32 proxy;
     if (free_.empty()) {
-        proxy = static_cast<int32>(proxies_.size());
-        proxies_.push_back(Proxy{});
+        proxy = static_cast<int32>(tag_.size());
+        tag_.push_back(0);
+        range_.push_back(Range{});
     } else {
         proxy = free_.back();
         free_.pop_back();
     }
-    Proxy &p = proxies_[static_cast<size_t>(proxy)];
-    p = Proxy{box, tag, range_of(box)};
-    list(proxy, p.cells);
+    const size_t k = static_cast<size_t>(proxy);
+    tag_[k] = tag;
+    range_[k] = range_of(box);
+    list(Entry{box, tag, range_[k].x0, range_[k].y0}, range_[k]);
     return proxy;
 }
 
 void CellGrid::move(int32 proxy, const b2AABB &box) {
-    Proxy &p = proxies_[static_cast<size_t>(proxy)];
-    p.box = box;
+    const size_t k = static_cast<size_t>(proxy);
     const Range r = range_of(box);
-    if (r == p.cells) return;
-    unlist(proxy, p.cells);
-    p.cells = r;
-    list(proxy, r);
+    if (r == range_[k]) {
+        for (int y = r.y0; y <= r.y1; ++y)
+            for (int x = r.x0; x <= r.x1; ++x) find(x, y, tag_[k])->box = box;
+        return;
+    }
+    unlist(tag_[k], range_[k]);
+    range_[k] = r;
+    list(Entry{box, tag_[k], r.x0, r.y0}, r);
 }
 
 void CellGrid::remove(int32 proxy) {
-    unlist(proxy, proxies_[static_cast<size_t>(proxy)].cells);
+    const size_t k = static_cast<size_t>(proxy);
+    unlist(tag_[k], range_[k]);
     free_.push_back(proxy);
 }
 
@@ -128,10 +144,9 @@ void CellGrid::query(const b2AABB &box, std::vector<uintptr_t> &tags) {
     const Range q = range_of(box);
     for (int y = q.y0; y <= q.y1; ++y)
         for (int x = q.x0; x <= q.x1; ++x)
-            for (int32 proxy : cell(x, y)) {
-                const Proxy &p = proxies_[static_cast<size_t>(proxy)];
-                if (x != std::max(q.x0, p.cells.x0) || y != std::max(q.y0, p.cells.y0)) continue;  // reported elsewhere
-                if (b2TestOverlap(p.box, box)) tags.push_back(p.tag);
+            for (const Entry &e : cell(x, y)) {
+                if (x != std::max(q.x0, e.x0) || y != std::max(q.y0, e.y0)) continue;  // reported elsewhere
+                if (b2TestOverlap(e.box, box)) tags.push_back(e.tag);
             }
 }
 

@@ -123,7 +123,7 @@ void Checker::bound_paths(const std::vector<Ball> &before, const std::vector<Bal
         live_[i] = 1;
         Box &b = box_[i];
         b = {std::min(before[i].x, after[i].x), std::min(before[i].y, after[i].y), std::max(before[i].x, after[i].x),
-             std::max(before[i].y, after[i].y)};
+             std::max(before[i].y, after[i].y), after[i].x, after[i].y};
         for (size_t k = first_[i]; k < first_[i + 1]; ++k) {
             b.x0 = std::min(b.x0, points_[k].x), b.y0 = std::min(b.y0, points_[k].y);
             b.x1 = std::max(b.x1, points_[k].x), b.y1 = std::max(b.y1, points_[k].y);
@@ -137,7 +137,8 @@ void Checker::bound_paths(const std::vector<Ball> &before, const std::vector<Bal
 // largest path box: boxes that overlap sit in the same or neighbouring
 // cells, so each ball looks at its own cell's later balls and at all balls
 // of the four neighbours that follow its cell (east, and the three above):
-// every neighbouring pair of cells once.  A pair is visited lower index
+// every neighbouring pair of cells once.  The boxes are copied out in cell
+// order, so the scan reads memory in order.  A pair is visited lower index
 // first.
 template <typename Visit>
 void Checker::for_each_close_pair(Visit visit) {
@@ -163,27 +164,34 @@ void Checker::for_each_close_pair(Visit visit) {
     }
     for (size_t k = 0; k < nx * ny; ++k) cell_start_[k + 1] += cell_start_[k];
     by_cell_.assign(cell_start_[nx * ny], 0);
+    cell_box_.resize(cell_start_[nx * ny]);
     fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
     for (size_t i = 0; i < n; ++i)
-        if (live_[i]) by_cell_[fill_[cell_of_[i]]++] = i;
-    // own cell, east, north-west, north, north-east: (dx, dy)
-    static const int kForward[5][2] = {{0, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-    for (size_t i = 0; i < n; ++i) {
-        if (!live_[i]) continue;
-        const Box &bi = box_[i];
-        const size_t cx = cell_of_[i] % nx, cy = cell_of_[i] / nx;
-        for (const int *d : kForward) {
-            if ((d[0] < 0 && cx == 0) || (d[0] > 0 && cx + 1 == nx) || (d[1] > 0 && cy + 1 == ny)) continue;
-            const size_t gx = d[0] < 0 ? cx - 1 : cx + static_cast<size_t>(d[0]);
-            const size_t c = (cy + static_cast<size_t>(d[1])) * nx + gx;
-            for (size_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-                const size_t j = by_cell_[k];
-                const Box &bj = box_[j];
-                if ((c != cell_of_[i] || j > i) && bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1)
-                    visit(std::min(i, j), std::max(i, j));
+        if (live_[i]) {
+            by_cell_[fill_[cell_of_[i]]] = i;
+            cell_box_[fill_[cell_of_[i]]++] = box_[i];
+        }
+    // east, north-west, north, north-east: (dx, dy)
+    static const int kForward[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+    auto pair = [&](size_t a, size_t b) {
+        const Box &ba = cell_box_[a], &bb = cell_box_[b];
+        if (!(ba.x0 <= bb.x1 && bb.x0 <= ba.x1 && ba.y0 <= bb.y1 && bb.y0 <= ba.y1)) return;
+        if (by_cell_[a] < by_cell_[b]) visit(by_cell_[a], by_cell_[b], ba, bb);
+        else visit(by_cell_[b], by_cell_[a], bb, ba);
+    };
+    for (size_t cy = 0; cy < ny; ++cy)
+        for (size_t cx = 0; cx < nx; ++cx) {
+            const size_t own = cy * nx + cx;
+            for (size_t a = cell_start_[own]; a < cell_start_[own + 1]; ++a) {
+                for (size_t b = a + 1; b < cell_start_[own + 1]; ++b) pair(a, b);
+                for (const int *d : kForward) {
+                    if ((d[0] < 0 && cx == 0) || (d[0] > 0 && cx + 1 == nx) || (d[1] > 0 && cy + 1 == ny)) continue;
+                    const size_t gx = d[0] < 0 ? cx - 1 : cx + static_cast<size_t>(d[0]);
+                    const size_t c = (cy + static_cast<size_t>(d[1])) * nx + gx;
+                    for (size_t b = cell_start_[c]; b < cell_start_[c + 1]; ++b) pair(a, b);
+                }
             }
         }
-    }
 }
 
 void Checker::count_escaped(const std::vector<Ball> &after, const Table &table, Stats &stats) {
@@ -209,8 +217,8 @@ void Checker::check_frame(const std::vector<Ball> &before, const std::vector<Bal
     auto path = [&](size_t i) {
         return Path{&before[i], &after[i], points_.data() + first_[i], points_.data() + first_[i + 1], dt};
     };
-    for_each_close_pair([&](size_t i, size_t j) {
-        const double gap = std::hypot(after[j].x - after[i].x, after[j].y - after[i].y);
+    for_each_close_pair([&](size_t i, size_t j, const Box &bi, const Box &bj) {
+        const double gap = std::hypot(bj.x - bi.x, bj.y - bi.y);
         stats.max_overlap = std::max(stats.max_overlap, (kBallDiameter - gap) / kBallDiameter);
         // crossed: came into contact during the frame and is out the other side
         if (gap > kBallDiameter && entered(path(i), path(j)) &&
