@@ -1,10 +1,12 @@
-// broadphase.cpp - see broadphase.h.  The grid reports a box found in
-// several cells once: only in the first cell (lowest column, then lowest
-// row) that both it and the query cover, the cell at (max of the two first
-// columns, max of the two first rows); overlapping boxes share that cell,
-// since their column and row ranges intersect.  A cell's ranges come from
-// one monotone function of the coordinate (clamped to the grid), so two
-// boxes that overlap always have intersecting ranges.
+// broadphase.cpp - see broadphase.h.  The grid lists a box no wider or
+// taller than a cell in one cell, the one that holds its lower-left corner,
+// and the few larger boxes (the gas box's walls, a ball swept unusually far)
+// in one list of their own.  A query for box Q looks at the cells whose
+// corners can belong to a box that overlaps Q, [Q.lower - cell, Q.upper],
+// and at the large boxes: every candidate once.  A box's cell comes from
+// one monotone function of the coordinate (clamped to the grid), so a box
+// beyond the grid is still found.  Moving a box within its cell rewrites
+// it in place; a box that changes cells swaps out of the old one.
 #include "broadphase.h"
 
 #include <algorithm>
@@ -42,112 +44,105 @@ private:
 class CellGrid : public Broadphase {
 public:
     CellGrid(const b2AABB &region, float cell)
-        : x0_(region.lowerBound.x), y0_(region.lowerBound.y), inv_cell_(1.0f / cell),
+        : x0_(region.lowerBound.x), y0_(region.lowerBound.y), cell_(cell), inv_cell_(1.0f / cell),
           nx_(columns(region.upperBound.x - region.lowerBound.x, cell)),
           ny_(columns(region.upperBound.y - region.lowerBound.y, cell)),
-          cells_(static_cast<size_t>(nx_) * static_cast<size_t>(ny_)) {}
+          cells_(static_cast<size_t>(nx_) * static_cast<size_t>(ny_) + 1) {}
     int32 add(const b2AABB &box, uintptr_t tag) override;
     void move(int32 proxy, const b2AABB &box) override;
     void remove(int32 proxy) override;
     void query(const b2AABB &box, std::vector<uintptr_t> &tags) override;
 
 private:
-    struct Range {
-        int x0, y0, x1, y1;
-        bool operator==(const Range &o) const { return x0 == o.x0 && y0 == o.y0 && x1 == o.x1 && y1 == o.y1; }
-    };
-    // A box as a cell lists it: everything a query needs, so a query reads
-    // only the cells' own memory.
     struct Entry {
         b2AABB box;
         uintptr_t tag;
-        int x0, y0;  // its first column and row
+        int32 proxy;
+    };
+    struct Place {
+        size_t list, index;  // cells_[list][index]
     };
     static int columns(float extent, float cell) { return std::max(1, static_cast<int>(std::ceil(extent / cell))); }
     int index(float v, float origin, int n) const {
         const float k = std::floor((v - origin) * inv_cell_);
         return k < 0 ? 0 : k >= static_cast<float>(n - 1) ? n - 1 : static_cast<int>(k);
     }
-    Range range_of(const b2AABB &b) const {
-        return Range{index(b.lowerBound.x, x0_, nx_), index(b.lowerBound.y, y0_, ny_), index(b.upperBound.x, x0_, nx_),
-                     index(b.upperBound.y, y0_, ny_)};
+    size_t large() const { return cells_.size() - 1; }
+    // The list a box goes in: its lower corner's cell, or the large boxes'.
+    size_t list_of(const b2AABB &b) const {
+        if (b.upperBound.x - b.lowerBound.x > cell_ || b.upperBound.y - b.lowerBound.y > cell_) return large();
+        return static_cast<size_t>(index(b.lowerBound.y, y0_, ny_)) * static_cast<size_t>(nx_) +
+               static_cast<size_t>(index(b.lowerBound.x, x0_, nx_));
     }
-    std::vector<Entry> &cell(int x, int y) {
-        return cells_[static_cast<size_t>(y) * static_cast<size_t>(nx_) + static_cast<size_t>(x)];
+    void put(int32 proxy, const b2AABB &box, uintptr_t tag);
+    void take(int32 proxy);
+    void scan(const std::vector<Entry> &list, const b2AABB &box, std::vector<uintptr_t> &tags) const {
+        for (const Entry &e : list)
+            if (b2TestOverlap(e.box, box)) tags.push_back(e.tag);
     }
-    Entry *find(int x, int y, uintptr_t tag) {
-        std::vector<Entry> &c = cell(x, y);
-        return &*std::find_if(c.begin(), c.end(), [tag](const Entry &e) { return e.tag == tag; });
-    }
-    void list(const Entry &e, const Range &r);
-    void unlist(uintptr_t tag, const Range &r);
 
-    float x0_, y0_, inv_cell_;
+    float x0_, y0_, cell_, inv_cell_;
     int nx_, ny_;
-    std::vector<std::vector<Entry>> cells_;
-    std::vector<uintptr_t> tag_;  // by proxy
-    std::vector<Range> range_;    // by proxy: the cells that list it
+    std::vector<std::vector<Entry>> cells_;  // the cells, row by row, then the large boxes
+    std::vector<Place> place_;               // by proxy
     std::vector<int32> free_;
 };
 
-void CellGrid::list(const Entry &e, const Range &r) {
-    for (int y = r.y0; y <= r.y1; ++y)
-        for (int x = r.x0; x <= r.x1; ++x) cell(x, y).push_back(e);
+void CellGrid::put(int32 proxy, const b2AABB &box, uintptr_t tag) {
+    const size_t list = list_of(box);
+    place_[static_cast<size_t>(proxy)] = Place{list, cells_[list].size()};
+    cells_[list].push_back(Entry{box, tag, proxy});
 }
 
-void CellGrid::unlist(uintptr_t tag, const Range &r) {
-    for (int y = r.y0; y <= r.y1; ++y)
-        for (int x = r.x0; x <= r.x1; ++x) {
-            std::vector<Entry> &c = cell(x, y);
-            *find(x, y, tag) = c.back();
-            c.pop_back();
-        }
+// Out of its list: the list's last entry takes its place.
+void CellGrid::take(int32 proxy) {
+    const Place p = place_[static_cast<size_t>(proxy)];
+    std::vector<Entry> &list = cells_[p.list];
+    list[p.index] = list.back();
+    place_[static_cast<size_t>(list[p.index].proxy)].index = p.index;
+    list.pop_back();
 }
 
 int32 CellGrid::add(const b2AABB &box, uintptr_t tag) {
     int32 proxy;
     if (free_.empty()) {
-        proxy = static_cast<int32>(tag_.size());
-        tag_.push_back(0);
-        range_.push_back(Range{});
+        proxy = static_cast<int32>(place_.size());
+        place_.push_back(Place{});
     } else {
         proxy = free_.back();
         free_.pop_back();
     }
-    const size_t k = static_cast<size_t>(proxy);
-    tag_[k] = tag;
-    range_[k] = range_of(box);
-    list(Entry{box, tag, range_[k].x0, range_[k].y0}, range_[k]);
+    put(proxy, box, tag);
     return proxy;
 }
 
 void CellGrid::move(int32 proxy, const b2AABB &box) {
-    const size_t k = static_cast<size_t>(proxy);
-    const Range r = range_of(box);
-    if (r == range_[k]) {
-        for (int y = r.y0; y <= r.y1; ++y)
-            for (int x = r.x0; x <= r.x1; ++x) find(x, y, tag_[k])->box = box;
+    const Place p = place_[static_cast<size_t>(proxy)];
+    Entry &e = cells_[p.list][p.index];
+    if (list_of(box) == p.list) {
+        e.box = box;
         return;
     }
-    unlist(tag_[k], range_[k]);
-    range_[k] = r;
-    list(Entry{box, tag_[k], r.x0, r.y0}, r);
+    const uintptr_t tag = e.tag;
+    take(proxy);
+    put(proxy, box, tag);
 }
 
 void CellGrid::remove(int32 proxy) {
-    const size_t k = static_cast<size_t>(proxy);
-    unlist(tag_[k], range_[k]);
+    take(proxy);
     free_.push_back(proxy);
 }
 
+// A small box that overlaps the query has its lower corner at most one cell
+// width below and left of the query's lower corner, and not beyond its
+// upper corner: those cells hold every candidate, each once.
 void CellGrid::query(const b2AABB &box, std::vector<uintptr_t> &tags) {
-    const Range q = range_of(box);
-    for (int y = q.y0; y <= q.y1; ++y)
-        for (int x = q.x0; x <= q.x1; ++x)
-            for (const Entry &e : cell(x, y)) {
-                if (x != std::max(q.x0, e.x0) || y != std::max(q.y0, e.y0)) continue;  // reported elsewhere
-                if (b2TestOverlap(e.box, box)) tags.push_back(e.tag);
-            }
+    const int x0 = index(box.lowerBound.x - cell_, x0_, nx_), x1 = index(box.upperBound.x, x0_, nx_);
+    const int y0 = index(box.lowerBound.y - cell_, y0_, ny_), y1 = index(box.upperBound.y, y0_, ny_);
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x)
+            scan(cells_[static_cast<size_t>(y) * static_cast<size_t>(nx_) + static_cast<size_t>(x)], box, tags);
+    scan(cells_[large()], box, tags);
 }
 
 }  // namespace

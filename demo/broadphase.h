@@ -4,14 +4,15 @@
 //   dynamic tree  Box2D's b2DynamicTree: any sizes, any spread; the pool
 //                 scenes' broadphase;
 //   cell grid     a uniform grid of square cells over a fixed region, each
-//                 box listed in every cell it overlaps; a query visits the
-//                 cells its box overlaps.  For many boxes of about one size
+//                 box listed in the cell of its lower-left corner (larger
+//                 boxes than a cell in a list of their own); a query visits
+//                 the cells around its box.  For many boxes of about one size
 //                 spread evenly (the gas: disks' swept boxes, at most three
-//                 diameters across), with cells about that size a box sits
-//                 in 1-4 cells and a query reads a few dozen entries whatever
-//                 the count, where the tree descends some 2 log2 N levels of
-//                 nodes scattered in memory and re-inserts a moved box from
-//                 the root.
+//                 diameters across), with cells a little larger a query reads
+//                 a dozen or two entries whatever the count, and a move
+//                 rewrites one entry, where the tree descends some 2 log2 N
+//                 levels of nodes scattered in memory and re-inserts a moved
+//                 box from the root.
 // Both report exactly the boxes that overlap the query (touching counts, as
 // b2TestOverlap), each once, so the engine finds the same events with
 // either; only the order of the tags differs.

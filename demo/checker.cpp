@@ -48,8 +48,9 @@ struct Path {
     }
 };
 
-bool entered(const Path &a, const Path &b) {
-    std::vector<double> cuts = {0.0, a.dt};
+// cuts: scratch space, kept between calls.
+bool entered(const Path &a, const Path &b, std::vector<double> &cuts) {
+    cuts.assign({0.0, a.dt});
     for (const Waypoint *w = a.bends; w != a.bends_end; ++w) cuts.push_back(w->t);
     for (const Waypoint *w = b.bends; w != b.bends_end; ++w) cuts.push_back(w->t);
     std::sort(cuts.begin(), cuts.end());
@@ -221,7 +222,7 @@ void Checker::check_frame(const std::vector<Ball> &before, const std::vector<Bal
         const double gap = std::hypot(bj.x - bi.x, bj.y - bi.y);
         stats.max_overlap = std::max(stats.max_overlap, (kBallDiameter - gap) / kBallDiameter);
         // crossed: came into contact during the frame and is out the other side
-        if (gap > kBallDiameter && entered(path(i), path(j)) &&
+        if (gap > kBallDiameter && entered(path(i), path(j), cuts_) &&
             !std::binary_search(resolved.begin(), resolved.end(), pair_key(static_cast<int>(i), static_cast<int>(j))))
             ++stats.tunnelled;
     });

@@ -41,6 +41,7 @@ private:
     std::vector<size_t> first_;        // points_[first_[i] .. first_[i+1]) belong to ball i
     std::vector<size_t> cell_of_, cell_start_, by_cell_, fill_;
     std::vector<char> escaped_;
+    std::vector<double> cuts_;         // a pair's piece boundaries (scratch)
 };
 
 }  // namespace demo

@@ -206,13 +206,13 @@ private:
 // A proxy's tag: what it is and which.
 uintptr_t tag(int kind, int index) { return static_cast<uintptr_t>(index) * 4 + static_cast<uintptr_t>(kind); }
 
-// The grid's cells: four diameters, so a swept box (at most three diameters
-// across, sweep()) lies in at most four cells; its region is the table and
-// its rails, where every ball stays.
+// The grid's cells: three and a half diameters, a little more than a swept
+// box (two diameters of travel plus one, sweep()), so almost every box is
+// one cell's; its region is the table and its rails, where every ball stays.
 std::unique_ptr<Broadphase> broadphase_for(const Table &table, bool cell_grid) {
     if (!cell_grid) return make_dynamic_tree();
     return make_cell_grid(box_of(-table.rail, -table.rail, table.length + table.rail, table.width + table.rail),
-                          static_cast<float>(4 * kBallDiameter * kUnitsPerMetre));
+                          static_cast<float>(3.5 * kBallDiameter * kUnitsPerMetre));
 }
 
 ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, const Model &model, bool cell_grid)
