@@ -612,12 +612,16 @@ static void why(FILE *f, const results *res)
         const rstat *ax = r->ba[BA_COLLIDE][BS_AXIS_UNEQUAL], *pd = r->ba[BA_COLLIDE][BS_AXIS_PADDLE];
         const rstat *bw = r->ba[BA_BATCHF][BS_WALLS], *tx = r->ba_toi[0][1], *ne = r->ba[BA_NORMAL][BS_EXTREME];
         fprintf(f, "- Slower than before, axis-aligned impacts (now correctly rounded): a moving wall at e < 1 and "
-                   "unequal masses go through `c2d_round_quotient` (floating-point expansions: `c2d_acc_product`, "
-                   "`c2d_exact_sum`, `c2d_remainder`: 75-90%% of the instructions) on every call: %s and %s "
-                   "instructions against %s before. A filter in front (the quotient in double-double, accepted when "
-                   "it is clear of a rounding boundary; the exact remainder only near one) would keep nearly all "
-                   "of them at the ordinary cost. Swaps and walls at rest execute only 20-50 instructions more than "
-                   "before, on the out-of-line axis path with full validation, yet take 1.4-2.3x the time.\n",
+                   "unequal masses first run the filter of `lib/real_round.h` (the result in double length with a "
+                   "rigorous error bound, kept when clear of every rounding boundary; the exact quotient "
+                   "`c2d_round_quotient`, which alone made them 7922 and 28845 instructions per call, only near a boundary, on ties and "
+                   "outside the filter's exponent window): %s and %s instructions against %s before. Swaps and "
+                   "walls at rest execute only 20-50 instructions more than before, on the out-of-line axis path "
+                   "with full validation, yet take 1.4-2.3x the time. Callgrind's branch simulator charges them "
+                   "about two mispredicted branches per call (which axis, which way round: random in these sets), "
+                   "but branch-free forms measured no better on this machine: velocities indexed by the axis were "
+                   "slower (store forwarding), and a branch-free zero test in the front end gained 0.8 ns on swaps "
+                   "while adding 6-9 instructions to every ordinary call; left as they are.\n",
                 instr(ir_of(r, &pd[1], 1), b[0]), instr(ir_of(r, &ax[1], 1), b[1]), instr(ir_of(r, &ax[0], 1), b[2]));
         fprintf(f, "- `c2d_collide_normal(f)` on extreme inputs (%.2fx): about one given normal in eight there has a "
                    "zero component, and those now take the exact axis-aligned path (some 40%% of the instructions, "
