@@ -42,6 +42,13 @@ struct GameRecord {
 
 constexpr int kMaxGameShots = 400;
 
+// Who plays in the window: practice (clear the table alone) or 8-ball, and
+// for 8-ball which sides the computer plays.
+struct Players {
+    bool eight_ball = false;
+    bool computer[2] = {false, true};
+};
+
 // Two computer players, the rack shuffled by config.seed, execution errors
 // from seed.  Ends with a winner or after kMaxGameShots shots.
 GameRecord play_computer_game(const SimConfig &config, uint64_t seed);

@@ -20,9 +20,12 @@ constexpr double kWin = 1e6, kFoulScore = -1000, kUnsettled = -1e5;
 constexpr double kKeepTurn = 100, kPositionWeight = 50, kSafetyWeight = 20;
 constexpr double kAngleError = 0.25, kSpeedError = 0.04;  // degrees, fraction (uniform +-)
 constexpr double kBreakSpeed = 12;
-const double kPotSpeeds[] = {1.5, 2.5, 4.0};
+const double kPotSpeeds[] = {1.2, 2.0, 3.0, 4.5};
 const double kSafetySpeeds[] = {2.0, 4.0};
-const double kTips[] = {0.0, 0.35, -0.35};         // topback: centre, follow, draw
+struct Tip {
+    double side, topback;
+};
+const Tip kTips[] = {{0, 0}, {0, 0.35}, {0, -0.35}, {-0.3, 0}, {0.3, 0}};  // centre, follow, draw, left, right
 const double kPlaceDistances[] = {0.25, 0.45};     // ball in hand, behind the ghost ball
 
 // Where a ball aims to enter a pocket: a third of the way from the middle of
@@ -99,7 +102,7 @@ std::vector<Candidate> candidates_from_cue(const GameState &state, const Table &
     if (!cue || !cue->active) return out;
     for (const Line &l : potting_lines(state, table, balls, cue->x, cue->y, true))
         for (double v : kPotSpeeds)
-            for (double tip : kTips) out.push_back(Candidate{Shot{l.angle_deg, v, 0, tip}, false, {0, 0}});
+            for (const Tip &tip : kTips) out.push_back(Candidate{Shot{l.angle_deg, v, tip.side, tip.topback}, false, {0, 0}});
     for (const Ball &b : balls) {
         if (!b.active || !legal_target(state, b.number, balls)) continue;
         const double dx = b.x - cue->x, dy = b.y - cue->y, d = std::hypot(dx, dy);
@@ -125,7 +128,7 @@ std::vector<Candidate> candidates_in_hand(const GameState &state, const Table &t
                 continue;
             const double angle = std::atan2(l.uy, l.ux) * 180 / M_PI;
             for (double v : kPotSpeeds)
-                for (double tip : kTips) out.push_back(Candidate{Shot{angle, v, 0, tip}, true, c});
+                for (const Tip &tip : kTips) out.push_back(Candidate{Shot{angle, v, tip.side, tip.topback}, true, c});
         }
     return out;
 }

@@ -7,8 +7,9 @@
 //            ball is clear: the ghost-ball aim (the cue ball's centre at
 //            contact sits 2R behind the ball on the line from the pocket's
 //            mouth through the ball), if the cue ball's path to it is clear
-//            and the cut is under 75 degrees; at 3 speeds (1.5, 2.5, 4
-//            m/s) and 3 tips (centre, follow 0.35 R, draw 0.35 R)
+//            and the cut is under 75 degrees; at 4 speeds (1.2, 2, 3, 4.5
+//            m/s) and 5 tips (centre, follow 0.35 R, draw 0.35 R, left and
+//            right english 0.3 R)
 //   safeties straight at each legal ball's centre and at half-ball hits on
 //            either side, at 2 and 4 m/s (so a shot is found when no pot is)
 // Ball in hand: the cue ball is tried straight behind each potting line at

@@ -511,7 +511,7 @@ void Game::after_step(const Simulation &sim) {
 
 }  // namespace
 
-WindowResult play_window(const SimConfig &config, std::string &error) {
+WindowResult play_window(const SimConfig &config, const Players &players, std::string &error) {
     Simulation sim(config);
     Window w;
     const WindowResult opened = open_window(sim, w, error);
