@@ -55,4 +55,77 @@ GameRecord play_computer_game(const SimConfig &config, uint64_t seed) {
     return game;
 }
 
+Match::Match(const SimConfig &config, const Players &players)
+    : players_(players), config_(config), opponents_{Opponent(config, config.seed), Opponent(config, config.seed + 1)} {}
+
+void Match::reset() {
+    state_ = GameState{};
+    opponents_[0] = Opponent(config_, config_.seed + static_cast<uint64_t>(2 * ++plans_));
+    opponents_[1] = Opponent(config_, config_.seed + static_cast<uint64_t>(2 * plans_ + 1));
+    running_ = false;
+    last_.clear();
+}
+
+void Match::shot_started(const std::vector<Ball> &balls) {
+    before_ = balls;
+    events_.clear();
+    running_ = true;
+}
+
+void Match::add_events(const std::vector<Event> &events) {
+    if (running_) events_.insert(events_.end(), events.begin(), events.end());
+}
+
+bool Match::shot_ended(const Table &table, std::vector<Ball> &balls) {
+    if (!running_) return false;
+    running_ = false;
+    if (!eight_ball()) return false;
+    const int shooter = state_.turn;
+    const Verdict v = apply_shot(state_, shot_facts(events_, before_), before_);
+    last_ = name(shooter) + ": " + v.reason;
+    if (!v.respot_eight) return false;
+    respot_eight(table, balls);
+    last_ += "; the 8 is spotted again";
+    return true;
+}
+
+Plan Match::plan(const std::vector<Ball> &balls) {
+    const Plan p = opponents_[state_.turn].choose(state_, balls);
+    candidates_ += p.candidates;
+    think_seconds_ += p.think_seconds;
+    return p;
+}
+
+std::string Match::name(int player) const {
+    return "Player " + std::to_string(player + 1) + (computer(player) ? " (computer)" : "");
+}
+
+std::vector<std::string> Match::status(bool placing) const {
+    std::vector<std::string> lines;
+    std::string who = "8-ball   ";
+    for (int p = 0; p < 2; ++p) {
+        who += (p ? "   " : "") + name(p);
+        if (state_.group[p] != Group::Open) who += std::string(": ") + group_name(state_.group[p]);
+    }
+    if (state_.open() && !state_.breaking) who += "   (table open)";
+    lines.push_back(who);
+    if (running_) {
+        lines.push_back("> " + name(state_.turn) + (state_.breaking ? " breaks" : " shoots"));
+    } else if (!state_.over()) {
+        std::string turn = "> " + name(state_.turn) + (state_.breaking ? " to break" : " to shoot");
+        if (state_.ball_in_hand) turn += placing ? ", ball in hand: click to put the cue ball down" : ", ball in hand";
+        lines.push_back(turn);
+    }
+    if (!last_.empty()) lines.push_back(last_);
+    return lines;
+}
+
+std::string Match::result() const {
+    if (!state_.over()) return "";
+    const int w = state_.winner;
+    const std::string winner = players_.computer[0] != players_.computer[1] ? (computer(w) ? "The computer wins" : "You win")
+                                                                           : name(w) + " wins";
+    return winner + ": " + last_.substr(last_.find(": ") + 2) + ". Press R for a new game.";
+}
+
 }  // namespace demo
