@@ -190,10 +190,14 @@ Point eight_spot(const Table &table, const std::vector<Ball> &balls) {
             return b.active && b.number != kEight && std::hypot(b.x - x, b.y - y) < kBallDiameter * 1.001;
         });
     };
-    for (double x = foot; x <= table.length - kBallRadius; x += kBallRadius * 0.25)
-        if (free_at(x)) return {x, y};
-    for (double x = foot; x >= kBallRadius; x -= kBallRadius * 0.25)
-        if (free_at(x)) return {x, y};
+    // quarter-radius steps towards the foot rail, then towards the head rail
+    const double step = kBallRadius * 0.25;
+    const int towards_foot = static_cast<int>((table.length - kBallRadius - foot) / step);
+    const int towards_head = static_cast<int>((foot - kBallRadius) / step);
+    for (int k = 0; k <= towards_foot; ++k)
+        if (free_at(foot + k * step)) return {foot + k * step, y};
+    for (int k = 1; k <= towards_head; ++k)
+        if (free_at(foot - k * step)) return {foot - k * step, y};
     return {foot, y};
 }
 

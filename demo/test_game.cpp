@@ -225,13 +225,13 @@ void games(int count) {
         config.seed = static_cast<uint64_t>(seed);
         const GameRecord g = play_computer_game(config, config.seed);
         bool turns = true;
-        int fouls = 0;
+        int counted = 0;
         for (size_t i = 0; i + 1 < g.shots.size(); ++i) {
             const ShotRecord &r = g.shots[i];
             turns = turns && (g.shots[i + 1].player == (r.keeps_turn ? r.player : 1 - r.player));
             turns = turns && (g.shots[i + 1].placed == (r.foul != Foul::None));
         }
-        for (const ShotRecord &r : g.shots) fouls += r.foul != Foul::None;
+        for (const ShotRecord &r : g.shots) counted += r.foul != Foul::None;
         bool eight_down = false, winner_cleared = true;
         for (const Ball &b : g.balls) {
             if (b.number == 8) eight_down = !b.active;
@@ -244,7 +244,7 @@ void games(int count) {
         const std::string s = " (seed " + std::to_string(seed) + ")";
         check(g.winner == 0 || g.winner == 1, "the game ends with a winner" + s);
         check(eight_down && winner_cleared, "it ends on the 8, the winner's group cleared when won on the 8" + s);
-        check(turns && fouls == g.fouls, "the turn passes exactly when the rules say, ball in hand after each foul" + s);
+        check(turns && counted == g.fouls, "the turn passes exactly when the rules say, ball in hand after each foul" + s);
         if (seed == 1) {
             const GameRecord again = play_computer_game(config, config.seed);
             bool same = again.shots.size() == g.shots.size() && again.winner == g.winner;
@@ -259,7 +259,7 @@ void games(int count) {
 }  // namespace
 
 int main(int argc, char **argv) {
-    const int count = argc > 1 ? std::atoi(argv[1]) : 3;
+    const int count = argc > 1 ? static_cast<int>(std::strtol(argv[1], nullptr, 10)) : 3;
     fouls();
     groups();
     break_shot();
