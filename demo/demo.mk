@@ -3,7 +3,7 @@
 #                    print a summary, write $(B)/billiards.png
 #   make play        build and open the window
 #   make test-demo   the demo's tests (part of `make test`)
-#   make demo-plots  regenerate docs/billiards.png, docs/energy.png, docs/gas_histogram.png,
+#   make demo-plots  regenerate docs/energy.png, docs/gas_histogram.png,
 #                    docs/shot_path.png
 # Screenshots are compressed PNGs written with libpng (demo/png.cpp); the
 # tests' checker reads them back with libpng's reader.
