@@ -67,7 +67,7 @@ c2d_status c2d_collidef(c2d_bodyf *a, c2d_bodyf *b, float restitution)
 
 c2d_status c2d_collide_normalf(c2d_bodyf *a, c2d_bodyf *b, c2d_vec2f normal, float restitution)
 {
-    return c2d_real_collide_normal(a, b, &normal, restitution);
+    return c2d_collide_normal_front(a, b, normal.x, normal.y, restitution);
 }
 
 c2d_status c2d_time_of_impactf(const c2d_bodyf *a, const c2d_bodyf *b, float radius_sum, float *t)

@@ -262,34 +262,51 @@ C2D_COLD c2d_status c2d_collide_normal_fallback(c2d_real_body *a, c2d_real_body 
     return c2d_verdict_status(v);
 }
 
-/* c2d_collide_normal: positions are only validated. */
-static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *normal,
-                                                 c2d_real restitution)
+/* c2d_collide_normal: positions are only validated.  The normal comes as
+ * its two components, so the front end keeps it in registers whether or not
+ * the compiler inlines it: given as a pointer to the public function's
+ * by-value c2d_vec2, gcc 12 split the front end off (.part.0) and passed the
+ * normal through memory, stored as two 8-byte halves and reloaded as one
+ * 16-byte vector, which the store buffer cannot forward (some 10 cycles on
+ * the critical path).  Only the out-of-line tiers take it by address, each
+ * from a copy made on its own branch. */
+static inline c2d_status c2d_collide_normal_front(c2d_real_body *a, c2d_real_body *b, c2d_real nx, c2d_real ny,
+                                                  c2d_real restitution)
 {
     c2d_real out[4];
+    c2d_real_vec n;
     c2d_pair p;
     c2d_verdict v;
     if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y)) return C2D_INVALID;
-    c2d_pair_of(&p, a, b, normal->x, normal->y);
+    c2d_pair_of(&p, a, b, nx, ny);
     v = a == b ? C2D_VERDICT_GENERAL : c2d_quick(&p, 1 + restitution, out);
     if (v == C2D_VERDICT_OK) {
         c2d_store(a, b, out);
         return C2D_OK;
     }
     if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
+    n.x = nx;
+    n.y = ny;
     if (v == C2D_VERDICT_AXIS) {
-        const int on_y = normal->x == 0;
-        const c2d_real ni = on_y != 0 ? normal->y : normal->x;
-        return c2d_axis_impact(a, b, normal, on_y, ni > 0 ? 1 : (ni < 0 ? -1 : 0), restitution);
+        const int on_y = nx == 0;
+        const c2d_real ni = on_y != 0 ? ny : nx;
+        return c2d_axis_impact(a, b, &n, on_y, ni > 0 ? 1 : (ni < 0 ? -1 : 0), restitution);
     }
     if (v == C2D_VERDICT_ACCURATE) {
         c2d_real_vec zero;
         zero.x = 0;
         zero.y = 0;
-        return c2d_quick_cancelling(a, b, normal, &zero, restitution);
+        return c2d_quick_cancelling(a, b, &n, &zero, restitution);
     }
-    return c2d_collide_normal_fallback(a, b, normal, restitution);
+    return c2d_collide_normal_fallback(a, b, &n, restitution);
+}
+
+/* The same for a normal given by address (c2d_collide_rough_normal). */
+static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *normal,
+                                                 c2d_real restitution)
+{
+    return c2d_collide_normal_front(a, b, normal->x, normal->y, restitution);
 }
 
 #endif /* C2D_REAL_COLLIDE_H */
