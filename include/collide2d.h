@@ -358,10 +358,14 @@ static inline int c2d_inline_front(double nx, double ny, c2d_body *a, c2d_body *
 #endif
     const double hi = 1.6069380442589903e60, lo = 6.2230152778611417e-61; /* 2^200, 2^-200 */
     const double px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
-    const double d = px + py, k = (px < 0 ? -px : px) + (py < 0 ? -py : py), nn = nx * nx + ny * ny;
+    const double d = px + py, k = (px > -px ? px : -px) + (py > -py ? py : -py), nn = nx * nx + ny * ny;
     const double geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
-    if (nx == 0 || ny == 0 || !((k + nn) + (a->mass + b->mass) <= hi && (geometry < lighter ? geometry : lighter) >= lo))
-        return 0;
+    const double least = geometry < lighter ? geometry : lighter;
+    /* Each condition a 0/1 value joined with &: one branch on all of
+     * them, not a jump per condition on data the predictor cannot learn. */
+    const unsigned window = (unsigned)(nx != 0) & (unsigned)(ny != 0) &
+                            (unsigned)((k + nn) + (a->mass + b->mass) <= hi) & (unsigned)(least >= lo);
+    if (window == 0u) return 0;
     if (4 * d + k <= 0) {
         const double den = nn * (a->mass + b->mass);
         const double c = e1 * d / den;
@@ -418,10 +422,14 @@ static inline int c2d_inline_frontf(float nx, float ny, c2d_bodyf *a, c2d_bodyf 
 #endif
     const float hi = 1048576.0f, lo = 9.5367431640625e-07f; /* 2^20, 2^-20 */
     const float px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
-    const float d = px + py, k = (px < 0 ? -px : px) + (py < 0 ? -py : py), nn = nx * nx + ny * ny;
+    const float d = px + py, k = (px > -px ? px : -px) + (py > -py ? py : -py), nn = nx * nx + ny * ny;
     const float geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
-    if (nx == 0 || ny == 0 || !((k + nn) + (a->mass + b->mass) <= hi && (geometry < lighter ? geometry : lighter) >= lo))
-        return 0;
+    const float least = geometry < lighter ? geometry : lighter;
+    /* Each condition a 0/1 value joined with &: one branch on all of
+     * them, not a jump per condition on data the predictor cannot learn. */
+    const unsigned window = (unsigned)(nx != 0) & (unsigned)(ny != 0) &
+                            (unsigned)((k + nn) + (a->mass + b->mass) <= hi) & (unsigned)(least >= lo);
+    if (window == 0u) return 0;
     if (4 * d + k <= 0) {
         const float den = nn * (a->mass + b->mass);
         const float c = e1 * d / den;
