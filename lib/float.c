@@ -65,9 +65,12 @@ c2d_status c2d_collidef(c2d_bodyf *a, c2d_bodyf *b, float restitution)
     return c2d_real_collide(a, b, restitution);
 }
 
+/* The normal by address, unlike double.c: gcc inlines the whole front end
+ * here, and the 8-byte c2d_vec2f forwards from the store to its loads;
+ * given as two floats, gcc unpacks them through an integer register. */
 c2d_status c2d_collide_normalf(c2d_bodyf *a, c2d_bodyf *b, c2d_vec2f normal, float restitution)
 {
-    return c2d_collide_normal_front(a, b, normal.x, normal.y, restitution);
+    return c2d_real_collide_normal(a, b, &normal, restitution);
 }
 
 c2d_status c2d_time_of_impactf(const c2d_bodyf *a, const c2d_bodyf *b, float radius_sum, float *t)

@@ -173,18 +173,6 @@ __attribute__((target("arch=x86-64-v3"))) C2D_COLD c2d_status c2d_cancelling_fus
 }
 #endif
 
-/* Tier 2 for the front end: with FMA when the CPU has it (chosen at run
- * time under C2D_DISPATCH), Dekker's split otherwise; the same bits. */
-C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *nh,
-                                         const c2d_real_vec *nl, c2d_real restitution)
-{
-#ifdef C2D_R_FUSED
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
-        return c2d_cancelling_fused(a, b, nh, nl, restitution);
-#endif
-    return c2d_cancelling_as(a, b, nh, nl, restitution, 0);
-}
-
 /* What c2d_collide's front end could not decide: the fast path, then the
  * tier its verdict names.  Out of line, so the front end stays small. */
 C2D_COLD c2d_status c2d_collide_fallback(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
@@ -198,6 +186,34 @@ C2D_COLD c2d_status c2d_collide_fallback(c2d_real_body *a, c2d_real_body *b, c2d
     if (v == C2D_VERDICT_GENERAL) return c2d_collide_slow(a, b, restitution);
     if (v == C2D_VERDICT_OK) c2d_store(a, b, out);
     return c2d_verdict_status(v);
+}
+
+/* Tier 2 for the front end: with FMA when the CPU has it (chosen at run
+ * time under C2D_DISPATCH), Dekker's split otherwise; the same bits.  The
+ * normal is the given one (nl = 0), or with `given` NULL the exact position
+ * difference, formed here so that the front end need not keep the
+ * positions: where c2d_collide_slow would take another route (positions so
+ * large that the difference may overflow), the fallback takes the pair. */
+C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *given,
+                                         c2d_real restitution)
+{
+    c2d_real_vec nh, nl;
+    if (given != NULL) {
+        nh.x = given->x; /* field by field: a struct copy may become a memcpy call */
+        nh.y = given->y;
+        nl.x = 0;
+        nl.y = 0;
+    } else {
+        if (!(c2d_abs(a->pos.x) + c2d_abs(a->pos.y) + c2d_abs(b->pos.x) + c2d_abs(b->pos.y) <
+              c2d_pow2(C2D_R_EMAX - 2)))
+            return c2d_collide_fallback(a, b, restitution);
+        c2d_exact_normal(a, b, &nh, &nl);
+    }
+#ifdef C2D_R_FUSED
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+        return c2d_cancelling_fused(a, b, &nh, &nl, restitution);
+#endif
+    return c2d_cancelling_as(a, b, &nh, &nl, restitution, 0);
 }
 
 /* c2d_collide: the input-only front end (real_fast.h), else the fallback. */
@@ -219,14 +235,8 @@ static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2
         const c2d_real pa = on_y != 0 ? a->pos.y : a->pos.x, pb = on_y != 0 ? b->pos.y : b->pos.x;
         return c2d_axis_impact(a, b, NULL, on_y, pb > pa ? 1 : (pb < pa ? -1 : 0), restitution);
     }
-    /* A valid pair whose d cancels: where the fast path would send it, unless
-     * the positions are so large that c2d_collide_slow takes another route. */
-    if (v == C2D_VERDICT_ACCURATE && c2d_abs(a->pos.x) + c2d_abs(a->pos.y) + c2d_abs(b->pos.x) + c2d_abs(b->pos.y) <
-                                         c2d_pow2(C2D_R_EMAX - 2)) {
-        c2d_real_vec nh, nl;
-        c2d_exact_normal(a, b, &nh, &nl);
-        return c2d_quick_cancelling(a, b, &nh, &nl, restitution);
-    }
+    /* A valid pair whose d cancels: where the fast path would send it. */
+    if (v == C2D_VERDICT_ACCURATE) return c2d_quick_cancelling(a, b, NULL, restitution);
     return c2d_collide_fallback(a, b, restitution);
 }
 
@@ -293,12 +303,7 @@ static inline c2d_status c2d_collide_normal_front(c2d_real_body *a, c2d_real_bod
         const c2d_real ni = on_y != 0 ? ny : nx;
         return c2d_axis_impact(a, b, &n, on_y, ni > 0 ? 1 : (ni < 0 ? -1 : 0), restitution);
     }
-    if (v == C2D_VERDICT_ACCURATE) {
-        c2d_real_vec zero;
-        zero.x = 0;
-        zero.y = 0;
-        return c2d_quick_cancelling(a, b, &n, &zero, restitution);
-    }
+    if (v == C2D_VERDICT_ACCURATE) return c2d_quick_cancelling(a, b, &n, restitution);
     return c2d_collide_normal_fallback(a, b, &n, restitution);
 }
 
