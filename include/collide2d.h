@@ -358,7 +358,8 @@ static inline int c2d_inline_front(double nx, double ny, c2d_body *a, c2d_body *
 #endif
     const double hi = 1.6069380442589903e60, lo = 6.2230152778611417e-61; /* 2^200, 2^-200 */
     const double px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
-    const double d = px + py, k = (px > -px ? px : -px) + (py > -py ? py : -py), nn = nx * nx + ny * ny;
+    const double mpx = -px, mpy = -py; /* |p| as max(p, -p): maxsd, where p < 0 ? -p : p is a select */
+    const double d = px + py, k = (px > mpx ? px : mpx) + (py > mpy ? py : mpy), nn = nx * nx + ny * ny;
     const double geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
     const double least = geometry < lighter ? geometry : lighter;
     /* Each condition a 0/1 value joined with &: one branch on all of
@@ -422,7 +423,8 @@ static inline int c2d_inline_frontf(float nx, float ny, c2d_bodyf *a, c2d_bodyf 
 #endif
     const float hi = 1048576.0f, lo = 9.5367431640625e-07f; /* 2^20, 2^-20 */
     const float px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
-    const float d = px + py, k = (px > -px ? px : -px) + (py > -py ? py : -py), nn = nx * nx + ny * ny;
+    const float mpx = -px, mpy = -py; /* |p| as max(p, -p): maxsd, where p < 0 ? -p : p is a select */
+    const float d = px + py, k = (px > mpx ? px : mpx) + (py > mpy ? py : mpy), nn = nx * nx + ny * ny;
     const float geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
     const float least = geometry < lighter ? geometry : lighter;
     /* Each condition a 0/1 value joined with &: one branch on all of
