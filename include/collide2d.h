@@ -192,8 +192,8 @@ c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a, const c2d
  * Pair i is (pos_ax[i], pos_ay[i], vel_ax[i], vel_ay[i], mass_a[i]) against
  * the same fields of b.  Every pair is resolved exactly as c2d_collide would
  * (bit-identical results and statuses); pairs in the well-scaled common case
- * run through a branch-free kernel in blocks of 16 that -O2 vectorises, the
- * others take the scalar call.  Built by gcc for hosted x86-64, the kernel
+ * (walls included) run through a branch-free kernel in blocks of 16 that -O2
+ * vectorises, the others take the scalar call.  Built by gcc for hosted x86-64, the kernel
  * is chosen at load time for the CPU (SSE2, SSE4.2, AVX2 or AVX-512;
  * C2D_NO_DISPATCH turns this off); clang vectorises it at baseline.  Arrays
  * must not overlap.
@@ -331,10 +331,12 @@ c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed
  *   c2d_collidef_inline, c2d_collide_normalf_inline (float):
  * static inline front ends with the library's own input-only accept test,
  * which resolve the common case at the call site and call c2d_collide (or
- * its twin) for everything else.  Same statuses, same bits as the library
- * call (tests/unit/test_inline.c checks it), provided the compiler evaluates
- * them as written: no -ffast-math and no FMA contraction.  The header turns
- * them on (C2D_INLINE_AS_WRITTEN 1) only where it can tell: clang (the
+ * its twin) for everything else: some 0.4-0.5 kB of code per call site
+ * (gcc 12 -O2, x86-64; bench/callsite.c), against 5 bytes for the call.
+ * Same statuses, same bits as the library call (tests/unit/test_inline.c
+ * checks it), provided the compiler evaluates them as written: no
+ * -ffast-math and no FMA contraction.  The header turns them on
+ * (C2D_INLINE_AS_WRITTEN 1) only where it can tell: clang (the
  * functions switch contraction off themselves), gcc in strict ISO mode
  * (-std=c99, c11, c++11...: contraction off by default) or for a target
  * without FMA; elsewhere they are plain calls of the library functions.
