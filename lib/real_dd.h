@@ -95,11 +95,9 @@ static void c2d_dx_add(c2d_dx *r, const c2d_dx *a, const c2d_dx *b, int sign)
     const c2d_real pa[2] = {a->h, a->l};
     const c2d_real pb[2] = {sign < 0 ? -b->h : b->h, sign < 0 ? -b->l : b->l};
     const int k = a->e - b->e;
-    if (pb[0] == 0) {
-        c2d_dx_set(r, pa[0], pa[1], a->e);
-    } else if (pa[0] == 0 || k < -(2 * C2D_R_MANT + 6)) { /* a is below b's low part */
+    if (pb[0] != 0 && (pa[0] == 0 || k < -(2 * C2D_R_MANT + 6))) { /* a is zero or below b's low part */
         c2d_dx_set(r, pb[0], pb[1], b->e);
-    } else if (k > 2 * C2D_R_MANT + 6) { /* b is below a's low part */
+    } else if (pb[0] == 0 || k > 2 * C2D_R_MANT + 6) { /* b is zero or below a's low part */
         c2d_dx_set(r, pa[0], pa[1], a->e);
     } else {
         c2d_dx_sum_aligned(r, pa, a->e, pb, b->e);

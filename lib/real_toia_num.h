@@ -167,11 +167,9 @@ static void c2d_toia_t_sum(c2d_dx *r, const c2d_dx *a, const c2d_dx *b)
 {
     const c2d_real pa[2] = {a->h, a->l}, pb[2] = {b->h, b->l};
     const int k = a->e - b->e;
-    if (b->h == 0) {
-        c2d_dx_copy(r, a);
-    } else if (a->h == 0 || k < -(2 * C2D_R_MANT + 8)) {
+    if (b->h != 0 && (a->h == 0 || k < -(2 * C2D_R_MANT + 8))) {
         c2d_dx_copy(r, b);
-    } else if (k > 2 * C2D_R_MANT + 8) {
+    } else if (b->h == 0 || k > 2 * C2D_R_MANT + 8) {
         c2d_dx_copy(r, a);
     } else {
         c2d_dx_sum_aligned(r, pa, a->e, pb, b->e);
