@@ -11,10 +11,14 @@ typedef c2d_body c2d_num_body;
 typedef c2d_vec2 c2d_num_vec;
 typedef c2d_pairs c2d_num_pairs;
 typedef c2d_soa c2d_num_soa;
+typedef c2d_disk c2d_num_disk;
+typedef c2d_surface c2d_num_surface;
 
 #define C2D_T_NAME "double"
 #define C2D_T_PREC 53      /* significand bits and smallest normal exponent: the ulp */
 #define C2D_T_EMIN (-1022)
+#define C2D_T_IS_FLOAT 0
+#define C2D_T_LIMIT DBL_MAX /* largest finite value (float.h) */
 #define C2D_T_FABS fabs
 #define C2D_T_PUT c2d_put_double
 /* Equal first: also accepts two equal infinities. */
@@ -24,6 +28,9 @@ typedef c2d_soa c2d_num_soa;
 #define C2D_T_COLLIDE_NORMAL c2d_collide_normal
 #define C2D_T_TIME_OF_IMPACT c2d_time_of_impact
 #define C2D_T_BATCH c2d_collide_batch
+#define C2D_T_COLLIDE_ROUGH c2d_collide_rough
+#define C2D_T_COLLIDE_ROUGH_NORMAL c2d_collide_rough_normal
+#define C2D_T_TIME_OF_IMPACT_ACCEL c2d_time_of_impact_accel
 
 /* The shared vector table (tests/vectors/vectors.h). */
 #define C2D_T_VECTOR c2d_vector_d
@@ -34,3 +41,6 @@ typedef c2d_soa c2d_num_soa;
 #define C2D_T_READ c2d_fuzz_read_double
 #define C2D_T_READ_MASS c2d_fuzz_read_mass
 #define C2D_T_READ_RESTITUTION c2d_fuzz_read_restitution
+#define C2D_T_READ_FRICTION c2d_fuzz_read_friction
+#define C2D_T_READ_BETA c2d_fuzz_read_beta
+#define C2D_T_READ_HORIZON c2d_fuzz_read_horizon

@@ -11,10 +11,14 @@ typedef c2d_bodyf c2d_num_body;
 typedef c2d_vec2f c2d_num_vec;
 typedef c2d_pairsf c2d_num_pairs;
 typedef c2d_soaf c2d_num_soa;
+typedef c2d_diskf c2d_num_disk;
+typedef c2d_surfacef c2d_num_surface;
 
 #define C2D_T_NAME "float"
 #define C2D_T_PREC 24      /* significand bits and smallest normal exponent: the ulp */
 #define C2D_T_EMIN (-126)
+#define C2D_T_IS_FLOAT 1
+#define C2D_T_LIMIT FLT_MAX /* largest finite value (float.h) */
 #define C2D_T_FABS fabsf
 #define C2D_T_PUT c2d_put_float
 /* Equal first: also accepts two equal infinities. */
@@ -24,6 +28,9 @@ typedef c2d_soaf c2d_num_soa;
 #define C2D_T_COLLIDE_NORMAL c2d_collide_normalf
 #define C2D_T_TIME_OF_IMPACT c2d_time_of_impactf
 #define C2D_T_BATCH c2d_collide_batchf
+#define C2D_T_COLLIDE_ROUGH c2d_collide_roughf
+#define C2D_T_COLLIDE_ROUGH_NORMAL c2d_collide_rough_normalf
+#define C2D_T_TIME_OF_IMPACT_ACCEL c2d_time_of_impact_accelf
 
 /* The shared vector table (tests/vectors/vectors.h). */
 #define C2D_T_VECTOR c2d_vector_f
@@ -34,3 +41,6 @@ typedef c2d_soaf c2d_num_soa;
 #define C2D_T_READ c2d_fuzz_read_float
 #define C2D_T_READ_MASS c2d_fuzz_read_massf
 #define C2D_T_READ_RESTITUTION c2d_fuzz_read_restitutionf
+#define C2D_T_READ_FRICTION c2d_fuzz_read_frictionf
+#define C2D_T_READ_BETA c2d_fuzz_read_betaf
+#define C2D_T_READ_HORIZON c2d_fuzz_read_horizonf

@@ -20,15 +20,6 @@ typedef struct toia_tally {
     double worst;
 } toia_tally;
 
-static int acceleration_differs(const ref_toia_in *in) { return in->aa[0] != in->ab[0] || in->aa[1] != in->ab[1]; }
-
-static int in_band(const ref_toia_out *o, int is_float, const ref_toia_in *in)
-{
-    const double ef = is_float ? TOIA_EPS_F_FLOAT : TOIA_EPS_F_DOUBLE, eg = is_float ? TOIA_EPS_G_FLOAT : TOIA_EPS_G_DOUBLE;
-    if (o->tie_f <= ef || o->tie_g <= eg) return 1;
-    return acceleration_differs(in) && (o->tie_fs <= TOIA_K_RES || o->tie_gs <= TOIA_K_RES);
-}
-
 static void print_case(const char *why, const ref_toia_in *in, int got, double t, const ref_toia_out *o)
 {
     print_error("%s: got %d t=%a, exact %d t=%a\n  pa=(%a,%a) va=(%a,%a) aa=(%a,%a) pb=(%a,%a) vb=(%a,%a) ab=(%a,%a) "
@@ -68,7 +59,7 @@ static void check_case(ref_toia_in *in, int is_float, toia_tally *k, ref_toia_ou
     if (is_float) toia_case_to_float(in);
     got = call(in, is_float, 0, &t);
     ref_toia(in, is_float ? 24 : 53, is_float ? -126 : -1022, o);
-    band = in_band(o, is_float, in);
+    band = toia_in_band(o, is_float, in);
     k->n++;
     k->band += band;
     if (got != o->status) {
@@ -87,7 +78,7 @@ static void check_case(ref_toia_in *in, int is_float, toia_tally *k, ref_toia_ou
         assert_true(e <= BOUND_UNITS);
         if (e > k->worst) k->worst = e;
     }
-    if (!acceleration_differs(in) && isinf(in->h)) {
+    if (!toia_acceleration_differs(in) && isinf(in->h)) {
         k->linear++;
         if (call(in, is_float, 1, &tl) != got && !band) {
             k->linear_differ++;
