@@ -4,7 +4,8 @@
  * the type's header (tests/harness/type_*.h) and soa_template.h; the type
  * header names
  *   c2d_num, c2d_num_body, c2d_num_vec, c2d_num_pairs, c2d_num_soa
- *   C2D_T_PREC, C2D_T_EMIN                 the format, for the bounds
+ *   C2D_T_PREC, C2D_T_EMIN, C2D_T_LIMIT    the format, for the bounds and
+ *                                          the referee (referee.h)
  *   C2D_T_FABS                             |x| in the type
  *   C2D_T_READ, C2D_T_READ_MASS, C2D_T_READ_RESTITUTION   decoders (decode.c)
  *   C2D_T_COLLIDE, C2D_T_COLLIDE_NORMAL, C2D_T_TIME_OF_IMPACT, C2D_T_BATCH
