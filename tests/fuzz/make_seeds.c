@@ -299,6 +299,45 @@ static void scene_accel_bad(int entry, const char *name)
     }
 }
 
+/* Raw-mode fields: a double's or a float's bit pattern, little-endian. */
+static void raw64(uint64_t v)
+{
+    int k;
+    for (k = 0; k < 8; k++) byte((int)((v >> (8 * k)) & 0xFF));
+}
+static void raw32(uint32_t v)
+{
+    int k;
+    for (k = 0; k < 4; k++) byte((int)((v >> (8 * k)) & 0xFF));
+}
+
+/* Issue 10's statuses at extreme magnitude ratios (the miss distance, the
+ * radius and d.v underflowing or rounding together after the scaling):
+ * two misses that must be SEPARATING and an overlap that must be OK at 0. */
+static void scene_toi_ratios(void)
+{
+    static const uint64_t d[2][6] = {
+        /* a.vel.x, b.pos.x, b.pos.y, R: a.pos = b.vel = 0, masses 1 */
+        {0x3ff0000000000000u, 0x7e70000000000000u, 0x39b0000000000000u, 0x3910000000000000u, 0, 0},
+        {0x5f30000000000000u, 0x1a70000000000000u, 0x5f30000000000000u, 0x5f40000000000000u, 0, 0},
+    };
+    static const char *const dname[2] = {"time_of_impact-ratio-miss", "time_of_impact-ratio-overlap"};
+    const uint64_t one = 0x3ff0000000000000u;
+    int i;
+    for (i = 0; i < 2; i++) {
+        start(C2D_FUZZ_TOI, C2D_FUZZ_RAW);
+        raw64(0), raw64(0), raw64(d[i][0]), raw64(0), raw64(one); /* a */
+        raw64(d[i][1]), raw64(d[i][2]), raw64(0), raw64(0), raw64(one); /* b */
+        raw64(d[i][3]);
+        save(dname[i]);
+    }
+    start(C2D_FUZZ_TOIF, C2D_FUZZ_RAW);
+    raw32(0), raw32(0), raw32(0x3f800000u), raw32(0), raw32(0x3f800000u);
+    raw32(0x71800000u), raw32(0x21800000u), raw32(0), raw32(0), raw32(0x3f800000u);
+    raw32(0x1c800000u);
+    save("time_of_impactf-ratio-miss");
+}
+
 int main(int argc, char **argv)
 {
     static const char *names[] = {"collide", "collide_normal", "time_of_impact", "collidef", "collide_normalf",
@@ -315,6 +354,7 @@ int main(int argc, char **argv)
     }
     scene_batch(C2D_FUZZ_BATCH, "collide_batch");
     scene_batch(C2D_FUZZ_BATCHF, "collide_batchf");
+    scene_toi_ratios();
     scene_rough(C2D_FUZZ_ROUGH, "collide_rough");
     scene_rough(C2D_FUZZ_ROUGH_NORMAL, "collide_rough_normal");
     scene_rough(C2D_FUZZ_ROUGHF, "collide_roughf");
