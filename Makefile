@@ -125,7 +125,7 @@ TEST_BINS := $(patsubst %.c,$(B)/tests/%,$(notdir $(TEST_SRCS)))
 HARNESS_SRC := $(wildcard tests/harness/*.c)
 HARNESS_HDR := $(wildcard tests/harness/*.h)
 VECTORS_SRC := tests/vectors/vectors.c $(wildcard tests/vectors/check_*.c)
-TEST_SUPPORT := referee/referee.c referee/cases.c referee/ref_rough.c referee/ref_toi_accel.c referee/cases_toi_accel.c $(VECTORS_SRC) $(HARNESS_SRC)
+TEST_SUPPORT := referee/referee.c referee/cases.c referee/ref_rough.c referee/cases_rough.c referee/ref_toi_accel.c referee/cases_toi_accel.c $(VECTORS_SRC) $(HARNESS_SRC)
 TEST_SUPPORT_HDR := $(wildcard referee/*.h tests/unit/*.h tests/vectors/*.h) $(HARNESS_HDR)
 TEST_INC := -Ireferee -Itests/harness -Itests/unit -Itests/vectors
 
@@ -140,9 +140,10 @@ $(B)/tests/%: tests/vectors/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -Wno-conversion $(TEST_INC) -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
 
-$(B)/gen_vectors: tests/vectors/gen_vectors.c referee/referee.c referee/referee.h tests/vectors/vectors.h $(LIB_HDR)
+GEN_VECTORS_REF := referee/referee.c referee/ref_rough.c referee/ref_toi_accel.c
+$(B)/gen_vectors: tests/vectors/gen_vectors.c $(GEN_VECTORS_REF) $(wildcard referee/*.h) tests/vectors/vectors.h $(LIB_HDR)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -std=c99 -Iinclude -Ireferee -Itests/vectors -o $@ tests/vectors/gen_vectors.c referee/referee.c -lmpfr -lgmp -lm
+	$(CC) $(CFLAGS) -std=c99 -Iinclude -Ireferee -Itests/vectors -o $@ tests/vectors/gen_vectors.c $(GEN_VECTORS_REF) -lmpfr -lgmp -lm
 
 # Regenerate the shared vector table from the exact referee.
 vectors: check-deps-test $(B)/gen_vectors

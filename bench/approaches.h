@@ -61,4 +61,12 @@ c2d_status bench_toi_textbookf(const c2d_bodyf *a, const c2d_bodyf *b, float rad
  * checks, normal = b.pos - a.pos. */
 c2d_status bench_walton(c2d_disk *a, c2d_disk *b, c2d_surface s);
 
+/* The time of impact under constant acceleration the textbook ways
+ * (bench/quartic.c): the quartic in closed form (Ferrari) and by Sturm
+ * sequence and bisection; the interface of c2d_time_of_impact_accel. */
+c2d_status bench_toia_ferrari(const c2d_body *a, c2d_vec2 aa, const c2d_body *b, c2d_vec2 ab, double R, double H,
+                              double *t);
+c2d_status bench_toia_sturm(const c2d_body *a, c2d_vec2 aa, const c2d_body *b, c2d_vec2 ab, double R, double H,
+                            double *t);
+
 #endif

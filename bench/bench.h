@@ -9,7 +9,7 @@
 #include "cases.h"
 #include "harness.h"
 #include "referee.h"
-#include "ref_rough.h"
+#include "cases_rough.h"
 
 /* How a contender is called and which precision its answers have. */
 typedef enum bench_kind {
@@ -173,8 +173,6 @@ void toi_evaluate(int which, int is_float, int extreme, int n, unsigned long lon
 
 /* ------------------------------------------------------- rough disks
  * (rough.c) */
-void gen_rough(c2d_rng *r, ref_rough_case *c);
-void gen_rough_extreme(c2d_rng *r, ref_rough_case *c, int prec, int emin, int emax);
 
 enum { RK_LIB, RK_LIBF, RK_WALTON, RK_COUNT };
 typedef struct rough_stats {
@@ -186,5 +184,23 @@ typedef struct rough_stats {
 /* Contender `which` on n plain (extreme 0) or extreme cases against the
  * MPFR referee (referee/ref_rough.c). */
 void rough_evaluate(int which, int extreme, int n, unsigned long long seed, rough_stats *out);
+
+/* Results go here so no timed loop can be optimised away (timing.c). */
+extern volatile double bench_sink;
+
+/* ------------------------- time of impact under acceleration (toi_accel.c)
+ * The library (double, float) and the textbook quartic solvers
+ * (bench/quartic.c) on the unit test's families (referee/cases_toi_accel.c)
+ * against the exact referee (referee/ref_toi_accel.c). */
+enum { TA_LIB, TA_LIBF, TA_FERRARI, TA_STURM, TA_COUNT };
+enum { TA_BILLIARDS, TA_ALL, TA_SETS };       /* timed sets: the billiards family, every family */
+typedef struct toia_stats {
+    long n, band, wrong, band_wrong, beyond, evaluated, nan_inf;
+    double worst;        /* units (ulp(t) + ulp(|d|)/s) outside the band */
+    double ns[TA_SETS];  /* median ns per call over interleaved rounds */
+} toia_stats;
+#define TOIA_BEYOND_UNITS 4.0
+/* n cases per family; rounds of interleaved timing. */
+void toia_measure(int n_per_family, int rounds, toia_stats out[TA_COUNT]);
 
 #endif

@@ -11,7 +11,8 @@ BENCH_TEST_DEPS := libgmp-dev libmpfr-dev libbox2d-dev g++
 BENCH_DIR := $(B)/bench
 BENCH_BIN := $(BENCH_DIR)/bench
 BENCH_C := bench/bench.c bench/accuracy.c bench/contenders.c bench/timing.c bench/smoke.c \
-  bench/approaches.c bench/ratio.c bench/rough.c bench/toi.c referee/referee.c referee/cases.c referee/ref_rough.c \
+  bench/approaches.c bench/ratio.c bench/rough.c bench/toi.c bench/quartic.c bench/toi_accel.c referee/referee.c referee/cases.c referee/ref_rough.c referee/cases_rough.c \
+  referee/ref_toi_accel.c referee/cases_toi_accel.c \
   $(HARNESS_SRC)
 BENCH_HDR := $(wildcard bench/*.h referee/*.h) $(HARNESS_HDR) $(LIB_HDR)
 # The library before issue 12 (bench/old.h names the commit), for the

@@ -107,20 +107,6 @@ static rset *rset_make(const ref_case *cd, const ref_case *cf, const double *rad
     return s;
 }
 
-static void disk_of(c2d_disk *d, const ref_disk *r)
-{
-    d->pos.x = r->pos[0], d->pos.y = r->pos[1], d->vel.x = r->vel[0], d->vel.y = r->vel[1];
-    d->spin = r->spin, d->mass = r->mass, d->radius = r->radius, d->inertia = r->inertia;
-}
-
-static void diskf_of(c2d_diskf *d, const ref_disk *r)
-{
-    d->pos.x = (float)r->pos[0], d->pos.y = (float)r->pos[1];
-    d->vel.x = (float)r->vel[0], d->vel.y = (float)r->vel[1];
-    d->spin = (float)r->spin, d->mass = (float)r->mass, d->radius = (float)r->radius;
-    d->inertia = (float)r->inertia;
-}
-
 /* A rough set: the disks, their surfaces, and the frictionless bodies of
  * the same pairs (normal = b.pos - a.pos for every call). */
 static rset *rset_rough(const ref_rough_case *rc, int n)
@@ -142,10 +128,9 @@ static rset *rset_rough(const ref_rough_case *rc, int n)
     ALLOC(s->dfa0, n), ALLOC(s->dfb0, n), ALLOC(s->dfa, n), ALLOC(s->dfb, n);
     ALLOC(s->surf, n), ALLOC(s->surff, n);
     for (i = 0; i < n; i++) {
-        disk_of(&s->da0[i], &rc[i].a), disk_of(&s->db0[i], &rc[i].b);
-        diskf_of(&s->dfa0[i], &rc[i].a), diskf_of(&s->dfb0[i], &rc[i].b);
-        s->surf[i].restitution = rc[i].e, s->surf[i].friction = rc[i].mu;
-        s->surf[i].tangential_restitution = rc[i].beta;
+        rough_disk_of(&s->da0[i], &rc[i].a), rough_disk_of(&s->db0[i], &rc[i].b);
+        rough_diskf_of(&s->dfa0[i], &rc[i].a), rough_diskf_of(&s->dfb0[i], &rc[i].b);
+        s->surf[i] = rough_surface_of(&rc[i]);
         s->surff[i].restitution = (float)rc[i].e, s->surff[i].friction = (float)rc[i].mu;
         s->surff[i].tangential_restitution = (float)rc[i].beta;
     }
@@ -588,10 +573,10 @@ static void gen_toi_ordinary(c2d_rng *r, ref_case *c, double *rad)
 
 /* Extreme time-of-impact pairs (tests/unit/test_time_of_impact.c): half
  * scaled anywhere in the range, half with every component at its own
- * exponent (magnitudes that differ by more than the exponent range). */
+ * exponent (gen_toi_ratios). */
 static void gen_toi_extreme(c2d_rng *r, ref_case *c, double *rad, int prec, int emin, int emax)
 {
-    int i, sub = emin - prec + 1;
+    int i;
     if (c2d_rng_next(r) & 1) {
         const int sp = (int)(c2d_rng_next(r) % (uint64_t)(2 * emax)) - emax;
         const int sv = (int)(c2d_rng_next(r) % (uint64_t)(2 * emax)) - emax;
@@ -602,16 +587,7 @@ static void gen_toi_extreme(c2d_rng *r, ref_case *c, double *rad, int prec, int 
         }
         *rad = ldexp(*rad, sp);
     } else {
-        for (i = 0; i < 2; i++) {
-            c->pa[i] = c2d_rng_next(r) % 4 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
-            c->pb[i] = gen_magnitude(r, sub, emax - 2, prec);
-            c->va[i] = c2d_rng_next(r) % 4 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
-            c->vb[i] = c2d_rng_next(r) % 3 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
-        }
-        *rad = fabs(gen_magnitude(r, sub, emax - 2, prec));
-        if (c2d_rng_next(r) % 4 != 0 &&
-            (c->pb[0] - c->pa[0]) * (c->vb[0] - c->va[0]) + (c->pb[1] - c->pa[1]) * (c->vb[1] - c->va[1]) > 0)
-            for (i = 0; i < 2; i++) c->va[i] = -c->va[i], c->vb[i] = -c->vb[i];
+        gen_toi_ratios(r, c, rad, prec, emin, emax);
     }
     c->ma = c->mb = 1, c->n[0] = c->n[1] = 0, c->has_normal = 0, c->e = 1;
     if (prec < 53) {

@@ -10,6 +10,7 @@
 
 #include "approaches.h"
 #include "box2d_contender.h"
+#include "cases_toi_accel.h"
 #include "old.h"
 
 static c2d_tally tally;
@@ -216,11 +217,8 @@ static void check_rough(void)
         c2d_status s1, s2;
         double scale;
         gen_rough(&r, &c);
-        a.pos.x = c.a.pos[0], a.pos.y = c.a.pos[1], a.vel.x = c.a.vel[0], a.vel.y = c.a.vel[1];
-        a.spin = c.a.spin, a.mass = c.a.mass, a.radius = c.a.radius, a.inertia = c.a.inertia;
-        b.pos.x = c.b.pos[0], b.pos.y = c.b.pos[1], b.vel.x = c.b.vel[0], b.vel.y = c.b.vel[1];
-        b.spin = c.b.spin, b.mass = c.b.mass, b.radius = c.b.radius, b.inertia = c.b.inertia;
-        s.restitution = c.e, s.friction = c.mu, s.tangential_restitution = c.beta;
+        rough_disk_of(&a, &c.a), rough_disk_of(&b, &c.b);
+        s = rough_surface_of(&c);
         a2 = a, b2 = b;
         s1 = c2d_collide_rough(&a, &b, s);
         s2 = bench_walton(&a2, &b2, s);
@@ -254,6 +252,26 @@ static void check_toi(void)
             }
 }
 
+/* The accelerated time of impact's table: every contender runs on every
+ * family and is timed; the library keeps its contract (exact statuses
+ * outside the band, within 1 unit). */
+static void check_toi_accel(void)
+{
+    toia_stats st[TA_COUNT];
+    char what[200];
+    int k;
+    toia_measure(12, 3, st);
+    for (k = 0; k < TA_COUNT; k++) {
+        snprintf(what, sizeof what, "accel toi contender %d runs on %ld cases and is timed (%.1f / %.1f ns)", k, st[k].n,
+                 st[k].ns[TA_BILLIARDS], st[k].ns[TA_ALL]);
+        check(st[k].n == 12L * toia_n_families && st[k].ns[TA_BILLIARDS] > 0 && st[k].ns[TA_ALL] > 0, what);
+        if (k != TA_LIB && k != TA_LIBF) continue;
+        snprintf(what, sizeof what, "library accel toi (%s): %ld wrong statuses, worst %.3g units <= 1",
+                 k == TA_LIBF ? "float" : "double", st[k].wrong, st[k].worst);
+        check(st[k].wrong == 0 && st[k].nan_inf == 0 && !(st[k].worst > 1), what);
+    }
+}
+
 int bench_smoke(void)
 {
     check_referee();
@@ -263,6 +281,7 @@ int bench_smoke(void)
     check_ratios();
     check_rough();
     check_toi();
+    check_toi_accel();
     c2d_put_tally(NULL, &tally);
     return c2d_tally_status(&tally);
 }

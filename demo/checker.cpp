@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 extern "C" {
 #include "collide2d.h"
@@ -47,8 +48,9 @@ struct Path {
     }
 };
 
-bool entered(const Path &a, const Path &b) {
-    std::vector<double> cuts = {0.0, a.dt};
+// cuts: scratch space, kept between calls.
+bool entered(const Path &a, const Path &b, std::vector<double> &cuts) {
+    cuts.assign({0.0, a.dt});
     for (const Waypoint *w = a.bends; w != a.bends_end; ++w) cuts.push_back(w->t);
     for (const Waypoint *w = b.bends; w != b.bends_end; ++w) cuts.push_back(w->t);
     std::sort(cuts.begin(), cuts.end());
@@ -96,12 +98,21 @@ double cushion_overlap(const Ball &b, const Table &table) {
 
 }  // namespace
 
+// The waypoints sorted by ball, then time, as a stable sort would: counted
+// out by ball (stable, linear), then each ball's few sorted by time if they
+// are not already (an engine logs them in time order).
 void Checker::index_waypoints(const FrameLog &log, size_t n) {
-    points_ = log.waypoints;
-    std::stable_sort(points_.begin(), points_.end());
     first_.assign(n + 1, 0);
-    for (const Waypoint &w : points_) ++first_[static_cast<size_t>(w.ball) + 1];
+    for (const Waypoint &w : log.waypoints) ++first_[static_cast<size_t>(w.ball) + 1];
     for (size_t i = 0; i < n; ++i) first_[i + 1] += first_[i];
+    points_.resize(log.waypoints.size());
+    fill_.assign(first_.begin(), first_.end() - 1);
+    for (const Waypoint &w : log.waypoints) points_[fill_[static_cast<size_t>(w.ball)]++] = w;
+    for (size_t i = 0; i < n; ++i) {
+        const auto begin = points_.begin() + static_cast<std::ptrdiff_t>(first_[i]);
+        const auto end = points_.begin() + static_cast<std::ptrdiff_t>(first_[i + 1]);
+        if (!std::is_sorted(begin, end)) std::stable_sort(begin, end);
+    }
 }
 
 void Checker::bound_paths(const std::vector<Ball> &before, const std::vector<Ball> &after) {
@@ -113,7 +124,7 @@ void Checker::bound_paths(const std::vector<Ball> &before, const std::vector<Bal
         live_[i] = 1;
         Box &b = box_[i];
         b = {std::min(before[i].x, after[i].x), std::min(before[i].y, after[i].y), std::max(before[i].x, after[i].x),
-             std::max(before[i].y, after[i].y)};
+             std::max(before[i].y, after[i].y), after[i].x, after[i].y};
         for (size_t k = first_[i]; k < first_[i + 1]; ++k) {
             b.x0 = std::min(b.x0, points_[k].x), b.y0 = std::min(b.y0, points_[k].y);
             b.x1 = std::max(b.x1, points_[k].x), b.y1 = std::max(b.y1, points_[k].y);
@@ -124,7 +135,12 @@ void Checker::bound_paths(const std::vector<Ball> &before, const std::vector<Bal
 
 // Candidate pairs come from a uniform grid, not from Box2D, so the check
 // shares nothing with the engines.  Cells are at least as wide as the
-// largest path box: boxes that overlap sit in neighbouring cells.
+// largest path box: boxes that overlap sit in the same or neighbouring
+// cells, so each ball looks at its own cell's later balls and at all balls
+// of the four neighbours that follow its cell (east, and the three above):
+// every neighbouring pair of cells once.  The boxes are copied out in cell
+// order, so the scan reads memory in order.  A pair is visited lower index
+// first.
 template <typename Visit>
 void Checker::for_each_close_pair(Visit visit) {
     const size_t n = box_.size();
@@ -138,7 +154,7 @@ void Checker::for_each_close_pair(Visit visit) {
     if (!(x0 <= x1)) return;
     cell = std::max(cell, std::max(x1 - x0, y1 - y0) / 2048);  // bounded grid, whatever the spread
     const size_t nx = static_cast<size_t>((x1 - x0) / cell) + 1, ny = static_cast<size_t>((y1 - y0) / cell) + 1;
-    cell_of_.assign(n, 0);
+    cell_of_.resize(n);
     cell_start_.assign(nx * ny + 1, 0);
     auto cell_x = [&](const Box &b) { return std::min(nx - 1, static_cast<size_t>((0.5 * (b.x0 + b.x1) - x0) / cell)); };
     auto cell_y = [&](const Box &b) { return std::min(ny - 1, static_cast<size_t>((0.5 * (b.y0 + b.y1) - y0) / cell)); };
@@ -149,21 +165,34 @@ void Checker::for_each_close_pair(Visit visit) {
     }
     for (size_t k = 0; k < nx * ny; ++k) cell_start_[k + 1] += cell_start_[k];
     by_cell_.assign(cell_start_[nx * ny], 0);
-    std::vector<size_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+    cell_box_.resize(cell_start_[nx * ny]);
+    fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
     for (size_t i = 0; i < n; ++i)
-        if (live_[i]) by_cell_[fill[cell_of_[i]]++] = i;
-    for (size_t i = 0; i < n; ++i) {
-        if (!live_[i]) continue;
-        const Box &bi = box_[i];
-        const size_t cx = cell_of_[i] % nx, cy = cell_of_[i] / nx;
-        for (size_t gy = cy ? cy - 1 : 0; gy <= std::min(ny - 1, cy + 1); ++gy)
-            for (size_t gx = cx ? cx - 1 : 0; gx <= std::min(nx - 1, cx + 1); ++gx)
-                for (size_t k = cell_start_[gy * nx + gx]; k < cell_start_[gy * nx + gx + 1]; ++k) {
-                    const size_t j = by_cell_[k];
-                    const Box &bj = box_[j];
-                    if (j > i && bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) visit(i, j);
+        if (live_[i]) {
+            by_cell_[fill_[cell_of_[i]]] = i;
+            cell_box_[fill_[cell_of_[i]]++] = box_[i];
+        }
+    // east, north-west, north, north-east: (dx, dy)
+    static const int kForward[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+    auto pair = [&](size_t a, size_t b) {
+        const Box &ba = cell_box_[a], &bb = cell_box_[b];
+        if (!(ba.x0 <= bb.x1 && bb.x0 <= ba.x1 && ba.y0 <= bb.y1 && bb.y0 <= ba.y1)) return;
+        if (by_cell_[a] < by_cell_[b]) visit(by_cell_[a], by_cell_[b], ba, bb);
+        else visit(by_cell_[b], by_cell_[a], bb, ba);
+    };
+    for (size_t cy = 0; cy < ny; ++cy)
+        for (size_t cx = 0; cx < nx; ++cx) {
+            const size_t own = cy * nx + cx;
+            for (size_t a = cell_start_[own]; a < cell_start_[own + 1]; ++a) {
+                for (size_t b = a + 1; b < cell_start_[own + 1]; ++b) pair(a, b);
+                for (const int *d : kForward) {
+                    if ((d[0] < 0 && cx == 0) || (d[0] > 0 && cx + 1 == nx) || (d[1] > 0 && cy + 1 == ny)) continue;
+                    const size_t gx = d[0] < 0 ? cx - 1 : cx + static_cast<size_t>(d[0]);
+                    const size_t c = (cy + static_cast<size_t>(d[1])) * nx + gx;
+                    for (size_t b = cell_start_[c]; b < cell_start_[c + 1]; ++b) pair(a, b);
                 }
-    }
+            }
+        }
 }
 
 void Checker::count_escaped(const std::vector<Ball> &after, const Table &table, Stats &stats) {
@@ -189,11 +218,11 @@ void Checker::check_frame(const std::vector<Ball> &before, const std::vector<Bal
     auto path = [&](size_t i) {
         return Path{&before[i], &after[i], points_.data() + first_[i], points_.data() + first_[i + 1], dt};
     };
-    for_each_close_pair([&](size_t i, size_t j) {
-        const double gap = std::hypot(after[j].x - after[i].x, after[j].y - after[i].y);
+    for_each_close_pair([&](size_t i, size_t j, const Box &bi, const Box &bj) {
+        const double gap = std::hypot(bj.x - bi.x, bj.y - bi.y);
         stats.max_overlap = std::max(stats.max_overlap, (kBallDiameter - gap) / kBallDiameter);
         // crossed: came into contact during the frame and is out the other side
-        if (gap > kBallDiameter && entered(path(i), path(j)) &&
+        if (gap > kBallDiameter && entered(path(i), path(j), cuts_) &&
             !std::binary_search(resolved.begin(), resolved.end(), pair_key(static_cast<int>(i), static_cast<int>(j))))
             ++stats.tunnelled;
     });

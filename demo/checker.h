@@ -25,18 +25,23 @@ public:
                      const Table &table, double dt, Stats &stats);
 
 private:
-    struct Box { double x0, y0, x1, y1; };
+    struct Box {
+        double x0, y0, x1, y1;  // the path's box, radius included
+        double x, y;            // the centre at the frame's end
+    };
     void index_waypoints(const FrameLog &log, size_t n);
     void bound_paths(const std::vector<Ball> &before, const std::vector<Ball> &after);
     template <typename Visit> void for_each_close_pair(Visit visit);
     void count_escaped(const std::vector<Ball> &after, const Table &table, Stats &stats);
 
     std::vector<Box> box_;             // each live ball's path this frame, plus its radius
+    std::vector<Box> cell_box_;        // the same in cell order (by_cell_)
     std::vector<char> live_;           // on the table before and after the frame
     std::vector<Waypoint> points_;     // this frame's waypoints, sorted by ball then time
     std::vector<size_t> first_;        // points_[first_[i] .. first_[i+1]) belong to ball i
-    std::vector<size_t> cell_of_, cell_start_, by_cell_;
+    std::vector<size_t> cell_of_, cell_start_, by_cell_, fill_;
     std::vector<char> escaped_;
+    std::vector<double> cuts_;         // a pair's piece boundaries (scratch)
 };
 
 }  // namespace demo

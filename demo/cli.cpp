@@ -11,9 +11,10 @@ namespace demo {
 
 const char kUsage[] =
     "usage: billiards [options]\n"
-    "  --scene break|elastic|gas   scene (default break)\n"
+    "  --scene break|elastic|gas|cradle  scene (default break)\n"
     "  --response collide2d|box2d  who resolves collisions (default collide2d)\n"
-    "  --balls N                   gas: number of disks (default 1000)\n"
+    "  --balls N                   gas: number of disks (default 1000); cradle: balls\n"
+    "                              in the row (default 5, at most 20)\n"
     "  --place N,X,Y               put ball N (0 = cue ball, 1-15) at X,Y metres, the\n"
     "                              surface being [0,2.54] x [0,1.27]; may repeat; only\n"
     "                              the placed balls are on the table\n"
@@ -114,7 +115,11 @@ void check_consistency(const Options &o) {
     const Scene scene = o.config.scene;
     if (scene == Scene::Gas && !o.shots.empty()) fail("--shot does not apply to --scene gas");
     if (scene == Scene::Gas && !o.config.placements.empty()) fail("--place does not apply to --scene gas");
-    if (scene != Scene::Gas && o.balls_given) fail("--balls only applies to --scene gas");
+    if (scene != Scene::Gas && scene != Scene::Cradle && o.balls_given)
+        fail("--balls only applies to --scene gas and --scene cradle");
+    if (scene == Scene::Cradle && o.config.cradle_balls > kMaxCradleBalls)
+        fail("--balls: the cradle's row holds at most " + std::to_string(kMaxCradleBalls) + " balls");
+    if (scene == Scene::Cradle && !o.config.placements.empty()) fail("--place does not apply to --scene cradle");
     if (!o.config.placements.empty()) {
         const std::string error = placement_error(scene_table(scene, o.config.table), o.config.placements);
         if (!error.empty()) fail("--place: " + error);
@@ -143,7 +148,8 @@ Options parse(int argc, char **argv) {
             if (v == "break") o.config.set_scene(Scene::Break);
             else if (v == "elastic") o.config.set_scene(Scene::Elastic);
             else if (v == "gas") o.config.set_scene(Scene::Gas);
-            else fail("--scene: unknown scene '" + v + "' (break, elastic or gas)");
+            else if (v == "cradle") o.config.set_scene(Scene::Cradle);
+            else fail("--scene: unknown scene '" + v + "' (break, elastic, gas or cradle)");
         } else if (flag == "--response") {
             const std::string v = value();
             if (v == "collide2d") o.config.response = Response::Collide2d;
@@ -152,7 +158,7 @@ Options parse(int argc, char **argv) {
         } else if (flag == "--balls") {
             const unsigned long long n = parse_unsigned(flag, value());
             if (n < 1 || n > 200000) fail("--balls: must be between 1 and 200000");
-            o.config.gas_balls = static_cast<int>(n);
+            o.config.gas_balls = o.config.cradle_balls = static_cast<int>(n);  // the scene uses its own
             o.balls_given = true;
         } else if (flag == "--place") {
             o.config.placements.push_back(parse_place(value()));

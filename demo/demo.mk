@@ -13,9 +13,9 @@ DEMO_TEST_DEPS := xvfb xauth libpng-dev
 DEMO_PLOT_DEPS := gnuplot-nox
 # the simulation (no SDL): scene, table, ball motion, engines, checker, the
 # run and the shot seam; test_physics links these alone
-DEMO_SIM_SRC := demo/scene.cpp demo/table.cpp demo/motion.cpp demo/exact_engine.cpp demo/slow_contact.cpp demo/box2d_engine.cpp demo/checker.cpp demo/sim.cpp
+DEMO_SIM_SRC := demo/scene.cpp demo/table.cpp demo/motion.cpp demo/exact_engine.cpp demo/broadphase.cpp demo/slow_contact.cpp demo/box2d_engine.cpp demo/checker.cpp demo/sim.cpp demo/cradle.cpp
 DEMO_SRC := demo/main.cpp demo/cli.cpp $(DEMO_SIM_SRC) demo/render.cpp demo/png.cpp
-DEMO_HDR := demo/cli.h demo/scene.h demo/table.h demo/motion.h demo/model.h demo/events.h demo/engine.h demo/exact_engine.h demo/slow_contact.h demo/box2d_engine.h demo/checker.h demo/sim.h demo/render.h demo/png.h
+DEMO_HDR := demo/cli.h demo/scene.h demo/table.h demo/motion.h demo/model.h demo/events.h demo/engine.h demo/exact_engine.h demo/broadphase.h demo/slow_contact.h demo/box2d_engine.h demo/checker.h demo/sim.h demo/cradle.h demo/render.h demo/png.h
 # the window: software drawing, aiming aids, panel, sound (issue 11, part B)
 DEMO_SRC += demo/canvas.cpp demo/font.cpp demo/engine_view.cpp demo/draw_table.cpp demo/draw_balls.cpp demo/aim.cpp demo/hud.cpp demo/audio.cpp
 DEMO_HDR += demo/canvas.h demo/font.h demo/view.h demo/engine_view.h demo/draw_table.h demo/draw_balls.h demo/aim.h demo/hud.h demo/audio.h

@@ -28,7 +28,8 @@
 // touches (the nearest point of a convex cone: the velocity itself, its
 // projection on one contact's line, or the corner of two), and pairs that
 // their accelerations press together end their slides or move on as one.
-// Each ball's proxy in Box2D's dynamic tree covers its path (the box of a
+// Each ball's proxy in the broadphase (broadphase.h: Box2D's dynamic tree, or
+// for the gas a uniform grid) covers its path (the box of a
 // quadratic: its ends and, where a velocity component changes sign, the
 // turning point) over a horizon of a few diameters; a ball re-queries the
 // tree when its motion changes or its horizon runs out, so a pair is always
@@ -41,8 +42,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
 
+#include "broadphase.h"
+#include "event_queue.h"
 #include "slow_contact.h"
 
 extern "C" {
@@ -136,14 +138,12 @@ struct Nose {
 
 class ExactEngine : public Engine {
 public:
-    ExactEngine(const std::vector<Ball> &balls, const Table &table, const Model &model);
+    ExactEngine(const std::vector<Ball> &balls, const Table &table, const Model &model, bool cell_grid);
     void step(double dt, Stats &stats, FrameLog &log) override;
     bool settle(double max_seconds, Stats &stats, FrameLog &log) override;
     void set_motion(int i, const Ball &state) override;
     void place_ball(int i, Point p) override;
     double now() const override { return now_; }
-
-    bool QueryCallback(int32 proxy);
 
 private:
     void insert_statics();
@@ -193,24 +193,30 @@ private:
     std::vector<char> is_changed_;
     std::vector<int32> proxy_;
     std::vector<b2AABB> swept_;
-    b2DynamicTree tree_;
-    std::priority_queue<Pending, std::vector<Pending>, std::greater<Pending>> queue_;
+    std::unique_ptr<Broadphase> broad_;
+    EventQueue<Pending> queue_{kFrameDt / 4};  // buckets of a quarter frame
     double now_ = 0;
     bool record_paths_ = true;       // waypoints and contacts for the checker
-    std::vector<int32> hits_;
+    std::vector<uintptr_t> hits_;    // the tags a query found
     std::vector<Limit> limits_;
     std::vector<int> group_;
     std::vector<int> moved_;         // balls given a new track by the event being resolved
 };
 
-// b2DynamicTree 2.4.1 carries a void * per proxy; ours is a small integer
-// that round-trips exactly and is never dereferenced.
-void *tag(int kind, int index) {
-    return reinterpret_cast<void *>(static_cast<uintptr_t>(index) * 4 + static_cast<uintptr_t>(kind)); // NOLINT(performance-no-int-to-ptr)
+// A proxy's tag: what it is and which.
+uintptr_t tag(int kind, int index) { return static_cast<uintptr_t>(index) * 4 + static_cast<uintptr_t>(kind); }
+
+// The grid's cells: three and a half diameters, a little more than a swept
+// box (two diameters of travel plus one, sweep()), so almost every box is
+// one cell's; its region is the table and its rails, where every ball stays.
+std::unique_ptr<Broadphase> broadphase_for(const Table &table, bool cell_grid) {
+    if (!cell_grid) return make_dynamic_tree();
+    return make_cell_grid(box_of(-table.rail, -table.rail, table.length + table.rail, table.width + table.rail),
+                          static_cast<float>(3.5 * kBallDiameter * kUnitsPerMetre));
 }
 
-ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, const Model &model)
-    : Engine(balls), model_(model) {
+ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, const Model &model, bool cell_grid)
+    : Engine(balls), model_(model), broad_(broadphase_for(table, cell_grid)) {
     for (size_t c = 0; c < table.cushions.size(); ++c)
         walls_.push_back(Wall{table.cushions[c], EventKind::Cushion, static_cast<int>(c)});
     for (size_t p = 0; p < table.pockets.size(); ++p) {
@@ -243,13 +249,13 @@ ExactEngine::ExactEngine(const std::vector<Ball> &balls, const Table &table, con
 void ExactEngine::insert_statics() {
     for (size_t w = 0; w < walls_.size(); ++w) {
         const Segment &s = walls_[w].s;
-        tree_.CreateProxy(box_of(std::min(s.ax, s.bx), std::min(s.ay, s.by), std::max(s.ax, s.bx), std::max(s.ay, s.by)),
+        broad_->add(box_of(std::min(s.ax, s.bx), std::min(s.ay, s.by), std::max(s.ax, s.bx), std::max(s.ay, s.by)),
                           tag(kWallProxy, static_cast<int>(w)));
     }
     for (size_t k = 0; k < noses_.size(); ++k)
-        tree_.CreateProxy(box_of_disk(noses_[k].x, noses_[k].y, noses_[k].r), tag(kNoseProxy, static_cast<int>(k)));
+        broad_->add(box_of_disk(noses_[k].x, noses_[k].y, noses_[k].r), tag(kNoseProxy, static_cast<int>(k)));
     for (size_t p = 0; p < holes_.size(); ++p)
-        tree_.CreateProxy(box_of_disk(holes_[p].x, holes_[p].y, holes_[p].capture_radius), tag(kHoleProxy, static_cast<int>(p)));
+        broad_->add(box_of_disk(holes_[p].x, holes_[p].y, holes_[p].capture_radius), tag(kHoleProxy, static_cast<int>(p)));
 }
 
 void ExactEngine::insert_ball(int i) {
@@ -258,7 +264,7 @@ void ExactEngine::insert_ball(int i) {
     if (proxy_[k] != b2_nullNode || !b.active) return;
     horizon_[k] = INFINITY;
     swept_[k] = box_of_disk(b.x, b.y, kBallRadius);
-    proxy_[k] = tree_.CreateProxy(swept_[k], tag(kBallProxy, i));
+    proxy_[k] = broad_->add(swept_[k], tag(kBallProxy, i));
 }
 
 bool ExactEngine::translating(int i) const {
@@ -290,14 +296,7 @@ void ExactEngine::sweep(int i) {
         // the track's end renews the box itself
         if (wanted < tr.t_end - now_) queue_.push(Pending{now_ + h, i, kSweepExpires, -1, gen_[k], 0u});
     }
-    // no displacement hint: the box already spans the motion, and Box2D would
-    // stretch it by four times the hint, making every query slower
-    tree_.MoveProxy(proxy_[k], swept_[k], b2Vec2(0, 0));
-}
-
-bool ExactEngine::QueryCallback(int32 proxy) {
-    hits_.push_back(proxy);
-    return true;
+    broad_->move(proxy_[k], swept_[k]);
 }
 
 // Events beyond `limit` are dropped: the box that runs out first is renewed
@@ -360,9 +359,8 @@ void ExactEngine::event_with_disk(int i, double x, double y, double radius_sum, 
 // events with it were found on its old track and are stale now.
 void ExactEngine::find_events(int i) {
     hits_.clear();
-    tree_.Query(this, swept_[static_cast<size_t>(i)]);
-    for (int32 proxy : hits_) {
-        const uintptr_t t = reinterpret_cast<uintptr_t>(tree_.GetUserData(proxy));
+    broad_->query(swept_[static_cast<size_t>(i)], hits_);
+    for (uintptr_t t : hits_) {
         const int kind = static_cast<int>(t & 3u), index = static_cast<int>(t >> 2);
         const size_t k = static_cast<size_t>(index);
         switch (kind) {
@@ -400,7 +398,7 @@ void ExactEngine::remove(int i) {
     b.active = false;
     b.motion = Motion::Pocketed;
     track_[k] = make_track(b, now_, model_.cloth, model_.friction);
-    tree_.DestroyProxy(proxy_[k]);
+    broad_->remove(proxy_[k]);
     proxy_[k] = b2_nullNode;
     ++gen_[k];
 }
@@ -408,7 +406,7 @@ void ExactEngine::remove(int i) {
 // Forgets every event and finds them all again: at the start, and after a
 // frame whose event budget ran out.
 void ExactEngine::restart() {
-    queue_ = {};
+    queue_.clear();
     for (size_t i = 0; i < balls_.size(); ++i) mark_changed(static_cast<int>(i));
     find_events_of_changed();
 }
@@ -491,9 +489,8 @@ void ExactEngine::limits_of(int i, double t, const Ball &b, std::vector<Limit> &
     out.clear();
     const double reach = kBallDiameter * (1 + 1e-9);
     hits_.clear();
-    tree_.Query(this, box_of_disk(b.x, b.y, kBallRadius * (1 + 1e-9)));
-    for (int32 proxy : hits_) {
-        const uintptr_t tg = reinterpret_cast<uintptr_t>(tree_.GetUserData(proxy));
+    broad_->query(box_of_disk(b.x, b.y, kBallRadius * (1 + 1e-9)), hits_);
+    for (uintptr_t tg : hits_) {
         const int kind = static_cast<int>(tg & 3u), index = static_cast<int>(tg >> 2);
         const size_t k = static_cast<size_t>(index);
         if (kind == kBallProxy && index != i) {
@@ -552,9 +549,8 @@ void ExactEngine::pressed_group(int a, int b, double t, std::vector<int> &group)
     for (size_t k = 0; k < group.size(); ++k) {
         const Ball m = at(group[k], t);
         hits_.clear();
-        tree_.Query(this, box_of_disk(m.x, m.y, reach));
-        for (int32 proxy : hits_) {
-            const uintptr_t tg = reinterpret_cast<uintptr_t>(tree_.GetUserData(proxy));
+        broad_->query(box_of_disk(m.x, m.y, reach), hits_);
+        for (uintptr_t tg : hits_) {
             const int index = static_cast<int>(tg >> 2);
             if ((tg & 3u) != kBallProxy || std::find(group.begin(), group.end(), index) != group.end()) continue;
             const Ball o = at(index, t);
@@ -752,9 +748,8 @@ bool ExactEngine::resolve(const Pending &e, Stats &stats, FrameLog &log) {
 // Processes the events up to t_limit; false if the budget ran out first.
 bool ExactEngine::process(double t_limit, long budget, Stats &stats, FrameLog &log) {
     long processed = 0;
-    while (!queue_.empty() && queue_.top().t <= t_limit) {
-        const Pending e = queue_.top();
-        queue_.pop();
+    Pending e;
+    while (queue_.pop_until(t_limit, e)) {
         if (e.gen_a != gen_[static_cast<size_t>(e.a)]) continue;
         if (e.kind == kBallProxy && e.gen_b != gen_[static_cast<size_t>(e.b)]) continue;
         if (++processed > budget) return false;
@@ -825,8 +820,9 @@ bool ExactEngine::settle(double max_seconds, Stats &stats, FrameLog &log) {
 
 }  // namespace
 
-std::unique_ptr<Engine> make_exact_engine(const std::vector<Ball> &balls, const Table &table, const Model &model) {
-    return std::unique_ptr<Engine>(new ExactEngine(balls, table, model));
+std::unique_ptr<Engine> make_exact_engine(const std::vector<Ball> &balls, const Table &table, const Model &model,
+                                          bool cell_grid) {
+    return std::unique_ptr<Engine>(new ExactEngine(balls, table, model, cell_grid));
 }
 
 }  // namespace demo

@@ -11,12 +11,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "cli.h"
+#include "cradle.h"
 #include "render.h"
 #include "sim.h"
 
@@ -67,16 +69,21 @@ private:
 struct Totals {
     double energy_start = 0, energy_end = 0, wall_seconds = 0;
     double momentum_start[2] = {0, 0}, momentum_end[2] = {0, 0};
+    std::unique_ptr<demo::CradleOutcome> cradle;  // the cradle scene only
 };
 
-// --trace and --events, written as the frames go.
+// --trace and --events, written as the frames go, and the cradle's check
+// watching them.
 class Recorder {
 public:
     explicit Recorder(const Options &o) : trace_(o.trace), events_(o.events) {
         if (trace_.get()) std::fputs("time,kinetic_energy,momentum_x,momentum_y\n", trace_.get());
         if (events_.get()) std::fputs("time,kind,ball,other,x,y,vx,vy,wx,wy,wz\n", events_.get());
     }
+    void watch_cradle(const Simulation &sim) { cradle_.reset(new demo::CradleCheck(sim.balls())); }
+    const demo::CradleCheck *cradle() const { return cradle_.get(); }
     void frame(const Simulation &sim) {
+        if (cradle_) cradle_->frame(sim.frame_events());
         if (trace_.get()) {
             double p[2];
             sim.momentum(p);
@@ -96,6 +103,7 @@ public:
 
 private:
     OutFile trace_, events_;
+    std::unique_ptr<demo::CradleCheck> cradle_;
 };
 
 // Shows how far a long run has got, on a terminal only.
@@ -170,7 +178,14 @@ private:
     bool gave_up_ = false;
 };
 
-const char *scene_name(Scene s) { return s == Scene::Break ? "break" : s == Scene::Elastic ? "elastic" : "gas"; }
+const char *scene_name(Scene s) {
+    switch (s) {
+    case Scene::Break: return "break";
+    case Scene::Elastic: return "elastic";
+    case Scene::Gas: return "gas";
+    default: return "cradle";
+    }
+}
 const char *response_name(Response r) { return r == Response::Box2d ? "box2d" : "collide2d"; }
 
 void print_model(const Simulation &sim) {
@@ -208,6 +223,23 @@ void print_balls(const Simulation &sim) {
     std::printf("]");
 }
 
+void print_numbers(const std::vector<double> &v) {
+    std::printf("[");
+    for (size_t k = 0; k < v.size(); ++k) std::printf("%s%.17g", k ? "," : "", v[k]);
+    std::printf("]");
+}
+
+void print_cradle(const demo::CradleOutcome &c) {
+    std::printf(",\"cradle\":{\"row\":%d,\"head_on\":%s,\"crossed\":%s,\"speed\":%.17g,\"impacts\":%ld,"
+                "\"minimal_impacts\":%ld,\"exact\":%s,\"expected\":",
+                c.row, c.head_on ? "true" : "false", c.crossed ? "true" : "false", c.speed, c.impacts, c.minimal_impacts,
+                c.exact ? "true" : "false");
+    print_numbers(c.expected);
+    std::printf(",\"actual\":");
+    print_numbers(c.actual);
+    std::printf("}");
+}
+
 void print_json(const Simulation &sim, const Totals &t) {
     const demo::Stats &s = sim.stats();
     std::printf("{\"scene\":\"%s\",\"response\":\"%s\",\"steps\":%ld,\"sim_seconds\":%.17g,\"wall_seconds\":%.6f,"
@@ -221,6 +253,7 @@ void print_json(const Simulation &sim, const Totals &t) {
     print_model(sim);
     std::printf(",");
     print_balls(sim);
+    if (t.cradle) print_cradle(*t.cradle);
     std::printf("}\n");
 }
 
@@ -240,6 +273,12 @@ void print_summary(const Simulation &sim, const Totals &t) {
     std::printf("  kinetic energy %.6g J -> %.6g J (%+.3g relative)\n", t.energy_start, t.energy_end, drift);
     std::printf("  momentum (%.6g, %.6g) -> (%.6g, %.6g) kg m/s\n", t.momentum_start[0], t.momentum_start[1],
                 t.momentum_end[0], t.momentum_end[1]);
+    if (const demo::CradleOutcome *c = t.cradle.get())
+        std::printf("  cradle: %d in the row, %ld ball-ball impacts (fewest possible %ld)%s: %s\n", c->row, c->impacts,
+                    c->minimal_impacts, c->crossed ? "" : ", the pulse had not crossed",
+                    c->exact ? "the last ball leaves at v, the others stand exactly still"
+                    : !c->head_on ? "not a head-on shot (angle 0), no textbook outcome"
+                                  : "NOT the textbook outcome");
 }
 
 Totals run_headless(Simulation &sim, const Options &o, Recorder &recorder) {
@@ -250,6 +289,7 @@ Totals run_headless(Simulation &sim, const Options &o, Recorder &recorder) {
     const long frames = seconds < 0 ? -1 : static_cast<long>(std::ceil(seconds / demo::kFrameDt - 1e-9));
     Progress progress(seconds);
     Headless headless(shots, frames, recorder, progress);
+    if (o.config.scene == Scene::Cradle) recorder.watch_cradle(sim);
     headless.shoot_next(sim);
     Totals t;
     t.energy_start = sim.energy();
@@ -260,6 +300,7 @@ Totals run_headless(Simulation &sim, const Options &o, Recorder &recorder) {
     t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     t.energy_end = sim.energy();
     sim.momentum(t.momentum_end);
+    if (recorder.cradle()) t.cradle.reset(new demo::CradleOutcome(recorder.cradle()->outcome()));
     if (headless.gave_up()) std::fprintf(stderr, "billiards: warning: not at rest after an hour a shot; stopped there\n");
     return t;
 }

@@ -1,6 +1,7 @@
 // scene.cpp - see scene.h.  The rack's rows are sqrt(3) radii apart (balls
 // touching in a triangle); the gas box's side s holds N disks of radius r at
-// area fraction f: N pi r^2 = f s^2.
+// area fraction f: N pi r^2 = f s^2.  The cradle's row is one diameter
+// apart, centres on one line: each impact's normal lies on the x axis.
 #include "scene.h"
 
 #include <algorithm>
@@ -66,17 +67,27 @@ void gas(std::vector<Ball> &balls, double side, int count, uint64_t seed) {
     }
 }
 
+void cradle(std::vector<Ball> &balls, const Table &t, int count) {
+    const double cy = centre_line_y(t);
+    balls.push_back(make_ball(head_spot_x(t), cy, 0));
+    for (int k = 0; k < count; ++k) balls.push_back(make_ball(0.5 * t.length + k * kBallDiameter, cy, k + 1));
+}
+
 }  // namespace
 
-Setup set_up(Scene scene, const TableSpec &spec, int gas_balls, uint64_t seed, const std::vector<Placement> &placements) {
+Setup set_up(Scene scene, const TableSpec &spec, int count, uint64_t seed, const std::vector<Placement> &placements) {
     Setup s;
     if (scene == Scene::Gas) {
-        const double side = std::sqrt(gas_balls * M_PI * kBallRadius * kBallRadius / kGasAreaFraction);
+        const double side = std::sqrt(count * M_PI * kBallRadius * kBallRadius / kGasAreaFraction);
         s.table = closed_box(side, side, std::max(0.05, side / 40));
-        gas(s.balls, side, gas_balls, seed);
+        gas(s.balls, side, count, seed);
         return s;
     }
     s.table = scene_table(scene, spec);
+    if (scene == Scene::Cradle) {
+        cradle(s.balls, s.table, count);
+        return s;
+    }
     if (!placements.empty()) {
         for (const Placement &p : placements) s.balls.push_back(make_ball(p.x, p.y, p.number));
         return s;

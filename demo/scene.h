@@ -7,6 +7,10 @@
 //   gas      a square box of disks on a jittered grid, 10% of its area
 //            covered, with uniformly random velocity components (far from
 //            equilibrium) and zero total momentum
+//   cradle   the elastic table with a Newton's cradle: a row of touching
+//            balls (1, 2, ...) along the centre line from the table's middle
+//            towards the foot rail, the cue ball on the head spot in line
+//            with it (cradle.h checks the outcome)
 // --place puts chosen balls anywhere on the break or elastic table instead
 // of the rack (only the placed balls are on the table).
 #ifndef C2D_DEMO_SCENE_H
@@ -21,7 +25,11 @@
 
 namespace demo {
 
-enum class Scene { Break, Elastic, Gas };
+enum class Scene { Break, Elastic, Gas, Cradle };
+
+// The longest cradle row: it fits between the table's middle and the foot
+// rail with room for the last ball to leave.
+constexpr int kMaxCradleBalls = 20;
 
 // A ball put on the table by hand: number 0 (cue ball) to 15, centre (x, y).
 struct Placement {
@@ -36,11 +44,12 @@ struct Setup {
 
 // The seed shuffles the rack (break, elastic) or places the gas.  With
 // placements (break, elastic) only those balls are on the table, in the
-// order given.
-Setup set_up(Scene scene, const TableSpec &spec, int gas_balls, uint64_t seed,
+// order given.  count: the gas's disks, or the cradle's row (1 to
+// kMaxCradleBalls).
+Setup set_up(Scene scene, const TableSpec &spec, int count, uint64_t seed,
              const std::vector<Placement> &placements = {});
 
-// The table of the break (pockets) or elastic (a closed box) scene.
+// The table of the break (pockets) or elastic and cradle (a closed box) scene.
 Table scene_table(Scene scene, const TableSpec &spec);
 
 // Why placements cannot go on the table (a number outside 0..15 or given

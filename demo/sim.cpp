@@ -14,7 +14,9 @@ namespace {
 
 std::unique_ptr<Engine> make_engine(const SimConfig &config, const std::vector<Ball> &balls, const Table &table) {
     if (config.response == Response::Box2d) return make_box2d_engine(balls, table, config.model);
-    return make_exact_engine(balls, table, config.model);
+    // the gas's many even balls: a uniform grid finds candidates faster than
+    // Box2D's tree (broadphase.h); the pool scenes keep the tree
+    return make_exact_engine(balls, table, config.model, config.scene == Scene::Gas);
 }
 
 // The cue ball's index, or -1.
@@ -36,7 +38,8 @@ Event strike_cue(Engine &engine, int cue, const Shot &shot) {
 }  // namespace
 
 Simulation::Simulation(const SimConfig &config) : config_(config) {
-    const Setup start = set_up(config.scene, config.table, config.gas_balls, config.seed, config.placements);
+    const int count = config.scene == Scene::Cradle ? config.cradle_balls : config.gas_balls;
+    const Setup start = set_up(config.scene, config.table, count, config.seed, config.placements);
     table_ = start.table;
     engine_ = make_engine(config, start.balls, table_);
 }

@@ -54,7 +54,7 @@ constexpr double kMaxShotSpeed = 15.0;  // Box2D moves at most 2 units/step: 15 
 // above the centre, do not enter an impact (real cushions also change
 // top and back spin; real ball-ball throw is smaller for a rolling ball).
 constexpr Model kPoolModel = {true, {9.81, 0.2, 0.01, 0.0127}, {0.95, 0.05, 0.0}, {0.8, 0.2, 0.0}, 0.005};
-// The elastic and gas scenes: no losses at all, so kinetic energy checks
+// The elastic, gas and cradle scenes: no losses at all, so kinetic energy checks
 // the engine.
 constexpr Model kFrictionless = {false, {9.81, 0, 0, 0}, {1.0, 0, -1.0}, {1.0, 0, -1.0}, 0};
 
@@ -63,6 +63,7 @@ struct SimConfig {
     Scene scene = Scene::Break;
     Response response = Response::Collide2d;
     int gas_balls = 1000;
+    int cradle_balls = 5;                // the cradle's row
     uint64_t seed = 1;
     Model model = kPoolModel;
     TableSpec table;                     // table.h: size and pocket geometry

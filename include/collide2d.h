@@ -8,7 +8,12 @@
  *   tangential components are kept.  Masses may differ by any ratio and may be
  *   INFINITY (an immovable wall).  It also computes the time of impact of two
  *   moving disks.  Double, float and Q16.16 fixed-point variants, plus batch
- *   entry points over structure-of-arrays data.
+ *   entry points over structure-of-arrays data.  For scenes that need them
+ *   (a pool table, granular matter): friction and spin at contact
+ *   (c2d_collide_rough, Walton's rough disks) and the time of impact under
+ *   constant acceleration (c2d_time_of_impact_accel); a scene pays only for
+ *   the model it calls.  Axis-aligned impacts are correctly rounded (an
+ *   equal-mass swap and a wall's sign flip are exact).
  *
  * EXAMPLE
  *   c2d_body a = { {0.0, 0.0}, {1.0, 0.0}, 1.0 };      // pos, vel, mass

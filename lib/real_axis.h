@@ -23,9 +23,13 @@
  *
  * CHEAP WHEN IT CAN BE
  *   Equal masses at e = 1: a swap.  A wall at e = 1: 2 ub - ua, one
- *   rounding.  A wall at rest: -e ua, one rounding.  Otherwise numerator and
- *   denominator are exact sums of products (real_sign.h) and the quotient is
- *   rounded once (real_round.h).
+ *   rounding.  A wall at rest: -e ua, one rounding; at e = 0, ub itself.
+ *   Otherwise the filter of real_round.h first: the result in double
+ *   length, ua' = ua + mb J and ub' = ub - ma J with the impulse per unit
+ *   mass J = (1 + e)(ub - ua) / (ma + mb) computed once for both, kept when
+ *   its error bound keeps it clear of every rounding boundary.  Only where it
+ *   is not are numerator and denominator formed as exact sums of products
+ *   (real_sign.h) and the quotient rounded once (real_round.h).
  */
 #ifndef C2D_REAL_AXIS_H
 #define C2D_REAL_AXIS_H
@@ -76,6 +80,11 @@ static void c2d_axis_wall(c2d_real *u2, c2d_real u, c2d_real v, c2d_real e)
         *u2 = -e * u; /* one rounding */
         return;
     }
+    if (e == 0) {
+        *u2 = v; /* exact */
+        return;
+    }
+    if (c2d_filter_wall(u2, u, v, e) != 0) return;
     n = c2d_push_triple(num, n, v, 1, 1, 1);
     n = c2d_push_triple(num, n, e, v, 1, 1);
     n = c2d_push_triple(num, n, e, u, 1, -1);
@@ -95,8 +104,11 @@ static void c2d_axis_velocities(c2d_real *ua, c2d_real *ub, c2d_real ma, c2d_rea
         *ua = v; /* a swap */
         *ub = u;
     } else {
-        c2d_axis_pair(ua, u, v, ma, mb, e);
-        c2d_axis_pair(ub, v, u, mb, ma, e);
+        const c2d_real uv[2] = {u, v};
+        c2d_real jh, jl;
+        const int quick = c2d_filter_impulse(&jh, &jl, uv, ma, mb, e);
+        if (quick == 0 || c2d_filter_apply(ua, u, mb, jh, jl) == 0) c2d_axis_pair(ua, u, v, ma, mb, e);
+        if (quick == 0 || c2d_filter_apply(ub, v, -ma, jh, jl) == 0) c2d_axis_pair(ub, v, u, mb, ma, e);
     }
 }
 

@@ -49,6 +49,14 @@ static void c2d_dx_set(c2d_dx *r, c2d_real h, c2d_real l, int e)
 
 static void c2d_dx_of(c2d_dx *r, c2d_real x) { c2d_dx_set(r, x, 0, 0); }
 
+/* *d = *s field by field (no memcpy call on small cores). */
+static void c2d_dx_copy(c2d_dx *d, const c2d_dx *s)
+{
+    d->h = s->h;
+    d->l = s->l;
+    d->e = s->e;
+}
+
 static void c2d_dx_negate(c2d_dx *a)
 {
     a->h = -a->h;
@@ -57,37 +65,45 @@ static void c2d_dx_negate(c2d_dx *a)
 
 static int c2d_dx_sign(const c2d_dx *a) { return (a->h > 0) - (a->h < 0); }
 
-/* r = a + sign b (sign +1 or -1). */
-static void c2d_dx_add(c2d_dx *r, const c2d_dx *a, const c2d_dx *b, int sign)
+/* r = (ah + al) 2^ea + (bh + bl) 2^eb, both parts nonzero and their
+ * exponents close enough that the smaller one's parts stay normal once
+ * aligned to the larger: the classical double-double sum, each alignment an
+ * exact power-of-two scaling. */
+static void c2d_dx_sum_aligned(c2d_dx *r, const c2d_real a[2], int ea, const c2d_real b[2], int eb)
 {
-    c2d_real ah = a->h, al = a->l, bh = sign < 0 ? -b->h : b->h, bl = sign < 0 ? -b->l : b->l, s, t, e1, e2;
-    int e = a->e, k = a->e - b->e;
-    if (bh == 0) {
-        c2d_dx_set(r, ah, al, e);
-        return;
-    }
-    if (ah == 0 || k < -(2 * C2D_R_MANT + 6)) { /* a is below b's low part */
-        c2d_dx_set(r, bh, bl, b->e);
-        return;
-    }
-    if (k > 2 * C2D_R_MANT + 6) { /* b is below a's low part */
-        c2d_dx_set(r, ah, al, e);
-        return;
-    }
+    const int k = ea - eb;
+    c2d_real ah = a[0], al = a[1], bh = b[0], bl = b[1], s, t, e1, e2;
+    int e = ea;
     if (k >= 0) {
         bh = c2d_scale2(bh, -k);
         bl = c2d_scale2(bl, -k);
     } else {
         ah = c2d_scale2(ah, k);
         al = c2d_scale2(al, k);
-        e = b->e;
+        e = eb;
     }
     s = c2d_two_sum(ah, bh, &e1);
     t = c2d_two_sum(al, bl, &e2);
     e1 += t;
     s = c2d_two_sum(s, e1, &e1);
-    e1 += e2;
-    c2d_dx_set(r, s, e1, e);
+    c2d_dx_set(r, s, e1 + e2, e);
+}
+
+/* r = a + sign b (sign +1 or -1). */
+static void c2d_dx_add(c2d_dx *r, const c2d_dx *a, const c2d_dx *b, int sign)
+{
+    const c2d_real pa[2] = {a->h, a->l};
+    const c2d_real pb[2] = {sign < 0 ? -b->h : b->h, sign < 0 ? -b->l : b->l};
+    const int k = a->e - b->e;
+    if (pb[0] == 0) {
+        c2d_dx_set(r, pa[0], pa[1], a->e);
+    } else if (pa[0] == 0 || k < -(2 * C2D_R_MANT + 6)) { /* a is below b's low part */
+        c2d_dx_set(r, pb[0], pb[1], b->e);
+    } else if (k > 2 * C2D_R_MANT + 6) { /* b is below a's low part */
+        c2d_dx_set(r, pa[0], pa[1], a->e);
+    } else {
+        c2d_dx_sum_aligned(r, pa, a->e, pb, b->e);
+    }
 }
 
 static void c2d_dx_mul(c2d_dx *r, const c2d_dx *a, const c2d_dx *b)
@@ -110,7 +126,7 @@ static void c2d_dx_sqrt(c2d_dx *r, const c2d_dx *a)
 {
     c2d_real h = a->h, l = a->l, s, err, p;
     int e = a->e;
-    if (h <= 0) {
+    if (!(h > 0)) { /* 0, or below: the square root of a rounded zero */
         c2d_dx_of(r, 0);
         return;
     }

@@ -194,14 +194,14 @@ static int c2d_toia_bound(c2d_toia_ctx *c)
 }
 
 /* The path keeps clear of the disk on [0, T] (hull test in a frame). */
-C2D_COLD int c2d_toia_clear(c2d_toia_ctx *c, const c2d_toia_t *T)
+C2D_COLD int c2d_toia_clear(c2d_toia_ctx *c, const c2d_dx *T)
 {
     c2d_toia_frame fr;
     return c2d_toia_frame_set(&fr, c, T->e + 1) != 0 && c2d_toia_hull_clear(&fr, c2d_toia_t_local(T, T->e + 1)) != 0;
 }
 
 /* The contact time to the working format: RANGE beyond it; within [0, H]. */
-static c2d_status c2d_toia_out(const c2d_toia_t *out, c2d_real horizon, c2d_real *t)
+static c2d_status c2d_toia_out(const c2d_dx *out, c2d_real horizon, c2d_real *t)
 {
     c2d_real v = c2d_toia_t_value(out);
     if (!(v <= C2D_R_MAX)) return C2D_RANGE;
@@ -215,7 +215,7 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
                                  const c2d_real_vec *acc_b, c2d_real radius_sum, c2d_real horizon, c2d_real *t)
 {
     c2d_toia_ctx c;
-    c2d_toia_t T, out;
+    c2d_dx T, out;
     int s0[4], sg0, eb, t_is_h;
     if (a == NULL || b == NULL || acc_a == NULL || acc_b == NULL || t == NULL) return C2D_INVALID;
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y) || !c2d_finite4(a->vel.x, a->vel.y, b->vel.x, b->vel.y) ||
@@ -235,8 +235,8 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
     if (horizon == 0) return C2D_SEPARATING;
     eb = c2d_toia_bound(&c);
     t_is_h = horizon <= C2D_R_MAX && c2d_ilogb(horizon) < eb;
-    if (t_is_h != 0) c2d_toia_t_set(&T, horizon, 0, 0);
-    else c2d_toia_t_set(&T, 1, 0, eb);
+    if (t_is_h != 0) c2d_dx_set(&T, horizon, 0, 0);
+    else c2d_dx_set(&T, 1, 0, eb);
     if (s0[0] > 0 && sg0 < 0) { /* separated and approaching: the common case */
         int fast = c2d_toia_fast(&c, &T, t_is_h, &out);
         if (fast == 0) return C2D_SEPARATING;

@@ -1,14 +1,14 @@
 /* real_toia_num.h - template: the time of impact under acceleration, part 1
- * of 7: its types, extended numbers and times (m 2^e, times as (h + l) 2^e)
- * and exact sums of products in a sliding exponent window.  The method and
- * the order of the parts: real_toia.h.  Needs real_bits.h and real_exact.h
- * first. */
+ * of 7: its types and exact sums of products in a sliding exponent window.
+ * Numbers m 2^e are real_bits.h's c2d_xf, times (h + l) 2^e real_dd.h's
+ * c2d_dx (double length, unbounded exponent).  The method and the order of
+ * the parts: real_toia.h.  Needs real_bits.h, real_exact.h, real_sign.h and
+ * real_dd.h first. */
 #ifndef C2D_REAL_TOIA_NUM_H
 #define C2D_REAL_TOIA_NUM_H
 /* ===================================================================== */
 /* Types and internal constants                                          */
 /* ===================================================================== */
-
 
 enum { C2D_TOIA_ATOMS = 32 }; /* atoms of an exact sum, at most (phase 0: h(0) = |v|^2 + d0.a) */
 enum { C2D_TOIA_DATOMS = 14 }; /* atoms of d(t) at a working-precision time */
@@ -30,19 +30,6 @@ typedef enum c2d_toia_verdict {
     C2D_TOIA_NONE, /* no contact in [0, horizon] */
     C2D_TOIA_HIT   /* contact at the time returned */
 } c2d_toia_verdict;
-
-/* Extended number m 2^e, |m| in [1, 2) or m == 0. */
-typedef struct c2d_toia_x {
-    c2d_real m;
-    int e;
-} c2d_toia_x;
-
-/* A time (h + l) 2^e: h in [1, 2) (or 0), |l| <= ulp(h): double length,
- * unbounded exponent. */
-typedef struct c2d_toia_t {
-    c2d_real h, l;
-    int e;
-} c2d_toia_t;
 
 /* A certified value: the exact quantity lies in [v - r, v + r] 2^e. */
 typedef struct c2d_toia_v {
@@ -68,7 +55,7 @@ typedef struct c2d_toia_ev {
 typedef struct c2d_toia_ctx {
     c2d_real m[3][2], ml[3][2];
     int ex[3], nz[3];
-    c2d_toia_x r;
+    c2d_xf r;
     const c2d_real_body *ba, *bb;
     const c2d_real_vec *aa, *ab;
 } c2d_toia_ctx;
@@ -88,31 +75,13 @@ typedef struct c2d_toia_fg {
 
 /* A g-root bracket: g changes sign on [lo, hi]; f and g at both ends. */
 typedef struct c2d_toia_br {
-    c2d_toia_t lo, hi;
+    c2d_dx lo, hi;
     c2d_toia_fg elo, ehi;
 } c2d_toia_br;
 
 /* ===================================================================== */
-/* Extended numbers and times                                            */
+/* Extended numbers and times: helpers                                   */
 /* ===================================================================== */
-
-static void c2d_toia_x_set(c2d_toia_x *x, c2d_real m, int e)
-{
-    if (m == 0) {
-        x->m = 0;
-        x->e = 0;
-    } else {
-        int k = c2d_ilogb(m);
-        x->m = c2d_scale2(m, -k);
-        x->e = e + k;
-    }
-}
-
-static void c2d_toia_x_copy(c2d_toia_x *d, const c2d_toia_x *s)
-{
-    d->m = s->m;
-    d->e = s->e;
-}
 
 /* 2^k clamped into the normal range.  Below it the result is 2^EMIN,
  * larger than the true factor by at most that: callers' error floors
@@ -135,31 +104,8 @@ static int c2d_toia_fdiv(int a, int b)
     return (q * b > a) ? q - 1 : q;
 }
 
-/* (h + l) 2^e, renormalised. */
-static void c2d_toia_t_set(c2d_toia_t *t, c2d_real h, c2d_real l, int e)
-{
-    c2d_real err, s = c2d_two_sum(h, l, &err);
-    if (s == 0) {
-        t->h = 0;
-        t->l = 0;
-        t->e = 0;
-    } else {
-        int k = c2d_ilogb(s);
-        t->h = c2d_scale2(s, -k);
-        t->l = c2d_scale2(err, -k);
-        t->e = e + k;
-    }
-}
-
-static void c2d_toia_t_copy(c2d_toia_t *d, const c2d_toia_t *s)
-{
-    d->h = s->h;
-    d->l = s->l;
-    d->e = s->e;
-}
-
 /* sign(a - b). */
-static int c2d_toia_t_cmp(const c2d_toia_t *a, const c2d_toia_t *b)
+static int c2d_toia_t_cmp(const c2d_dx *a, const c2d_dx *b)
 {
     c2d_real ah, al, bh, bl, s, err;
     int k;
@@ -185,30 +131,30 @@ static int c2d_toia_t_cmp(const c2d_toia_t *a, const c2d_toia_t *b)
 }
 
 /* t += dm 2^de, in double length. */
-static void c2d_toia_t_add(c2d_toia_t *t, c2d_real dm, int de)
+static void c2d_toia_t_add(c2d_dx *t, c2d_real dm, int de)
 {
-    c2d_toia_x d;
+    c2d_xf d;
     c2d_real s, err, dv;
     int k;
-    c2d_toia_x_set(&d, dm, de);
+    c2d_xf_set(&d, dm, de);
     if (d.m == 0) return;
     if (t->h == 0) {
-        c2d_toia_t_set(t, d.m, 0, d.e);
+        c2d_dx_set(t, d.m, 0, d.e);
         return;
     }
     k = d.e - t->e;
     if (k < -(2 * C2D_R_MANT + 8)) return; /* below t's low part */
     if (k > 2 * C2D_R_MANT + 8) {          /* t below d's low part */
-        c2d_toia_t_set(t, d.m, 0, d.e);
+        c2d_dx_set(t, d.m, 0, d.e);
         return;
     }
     dv = c2d_scale2(d.m, k);
     s = c2d_two_sum(t->h, dv, &err);
-    c2d_toia_t_set(t, s, err + t->l, t->e);
+    c2d_dx_set(t, s, err + t->l, t->e);
 }
 
 /* The time rounded to the working format, or C2D_R_MAX * 2 (Inf) beyond it. */
-static c2d_real c2d_toia_t_value(const c2d_toia_t *t)
+static c2d_real c2d_toia_t_value(const c2d_dx *t)
 {
     if (t->h == 0) return 0;
     if (t->e > C2D_R_EMAX) return C2D_R_MAX * 2;
@@ -217,74 +163,19 @@ static c2d_real c2d_toia_t_value(const c2d_toia_t *t)
 
 /* Double-length arithmetic on (h + l) 2^e (the classical double-double
  * algorithms with an exponent; each within a few u^2). */
-static void c2d_toia_t_neg(c2d_toia_t *t)
+static void c2d_toia_t_sum(c2d_dx *r, const c2d_dx *a, const c2d_dx *b)
 {
-    t->h = -t->h;
-    t->l = -t->l;
-}
-
-static void c2d_toia_t_sum(c2d_toia_t *r, const c2d_toia_t *a, const c2d_toia_t *b)
-{
-    c2d_real ah = a->h, al = a->l, bh = b->h, bl = b->l, s, e1, t, e2;
-    int k = a->e - b->e, e = a->e;
+    const c2d_real pa[2] = {a->h, a->l}, pb[2] = {b->h, b->l};
+    const int k = a->e - b->e;
     if (b->h == 0) {
-        c2d_toia_t_copy(r, a);
-        return;
-    }
-    if (a->h == 0 || k < -(2 * C2D_R_MANT + 8)) {
-        c2d_toia_t_copy(r, b);
-        return;
-    }
-    if (k > 2 * C2D_R_MANT + 8) {
-        c2d_toia_t_copy(r, a);
-        return;
-    }
-    if (k >= 0) {
-        bh = c2d_scale2(bh, -k);
-        bl = c2d_scale2(bl, -k);
+        c2d_dx_copy(r, a);
+    } else if (a->h == 0 || k < -(2 * C2D_R_MANT + 8)) {
+        c2d_dx_copy(r, b);
+    } else if (k > 2 * C2D_R_MANT + 8) {
+        c2d_dx_copy(r, a);
     } else {
-        ah = c2d_scale2(ah, k);
-        al = c2d_scale2(al, k);
-        e = b->e;
+        c2d_dx_sum_aligned(r, pa, a->e, pb, b->e);
     }
-    s = c2d_two_sum(ah, bh, &e1);
-    t = c2d_two_sum(al, bl, &e2);
-    e1 += t;
-    s = c2d_two_sum(s, e1, &e1);
-    c2d_toia_t_set(r, s, e1 + e2, e);
-}
-
-static void c2d_toia_t_mul(c2d_toia_t *r, const c2d_toia_t *a, const c2d_toia_t *b)
-{
-    c2d_real err, p = c2d_two_prod(a->h, b->h, &err);
-    err += a->h * b->l + a->l * b->h;
-    c2d_toia_t_set(r, p, err, a->e + b->e);
-}
-
-/* a / b, b != 0 */
-static void c2d_toia_t_div(c2d_toia_t *r, const c2d_toia_t *a, const c2d_toia_t *b)
-{
-    c2d_real q1 = a->h / b->h, err, p = c2d_two_prod(q1, b->h, &err);
-    c2d_real rem = ((a->h - p) - err + a->l) - q1 * b->l;
-    c2d_toia_t_set(r, q1, rem / b->h, a->e - b->e);
-}
-
-/* sqrt(a), a >= 0 */
-static void c2d_toia_t_sqrt(c2d_toia_t *r, const c2d_toia_t *a)
-{
-    c2d_real h = a->h, l = a->l, s, err, p;
-    int odd = a->e & 1;
-    if (!(h > 0)) {
-        c2d_toia_t_set(r, 0, 0, 0);
-        return;
-    }
-    if (odd != 0) {
-        h *= 2;
-        l *= 2;
-    }
-    s = C2D_R_SQRT(h);
-    p = c2d_two_prod(s, s, &err);
-    c2d_toia_t_set(r, s, ((h - p) - err + l) / (2 * s), (a->e - odd) / 2);
 }
 
 /* Geometric or arithmetic midpoint of a < b (both >= 0), for bisection:
@@ -292,7 +183,7 @@ static void c2d_toia_t_sqrt(c2d_toia_t *r, const c2d_toia_t *a)
  * the smallest positive time 2^(eb - 3 MANT) below which nothing is
  * resolved (bisection of [0, b] then reaches every scale in a few dozen
  * steps; the Newton phase does the rest). */
-static void c2d_toia_t_mid(c2d_toia_t *m, const c2d_toia_t *a, const c2d_toia_t *b)
+static void c2d_toia_t_mid(c2d_dx *m, const c2d_dx *a, const c2d_dx *b)
 {
     int ea = a->h == 0 ? b->e - 4 * C2D_R_MANT : a->e;
     if (a->h != 0 && b->e - a->e <= 1) {
@@ -300,10 +191,10 @@ static void c2d_toia_t_mid(c2d_toia_t *m, const c2d_toia_t *a, const c2d_toia_t 
         int k = b->e - a->e; /* 0 or 1 */
         h = c2d_two_sum(c2d_scale2(a->h, -k), b->h, &l);
         l += c2d_scale2(a->l, -k) + b->l;
-        c2d_toia_t_set(m, h, l, b->e - 1);
+        c2d_dx_set(m, h, l, b->e - 1);
         return;
     }
-    c2d_toia_t_set(m, (c2d_real)1.5, 0, c2d_toia_fdiv(ea + b->e, 2));
+    c2d_dx_set(m, (c2d_real)1.5, 0, c2d_toia_fdiv(ea + b->e, 2));
 }
 /* ===================================================================== */
 /* Exact sums of products (Shewchuk expansions in a sliding window)      */
@@ -332,22 +223,22 @@ static int c2d_toia_grow(c2d_real *w, int n, c2d_real b)
 /* Append sgn * x * y * 2^shift as (at most) two atoms, exactly: the
  * significands' product is hi + lo by TwoProduct (both in [1, 4) or
  * a multiple of 2^-2MANT: neither over- nor underflows). */
-static int c2d_toia_push(c2d_real *m, int *e, int n, const c2d_toia_x *x, const c2d_toia_x *y, int shift, int sgn)
+static int c2d_toia_push(c2d_real *m, int *e, int n, const c2d_xf *x, const c2d_xf *y, int shift, int sgn)
 {
     c2d_real lo, hi;
-    c2d_toia_x z;
+    c2d_xf z;
     if (x->m == 0 || y->m == 0) return n;
     hi = c2d_two_prod(x->m, y->m, &lo);
     if (sgn < 0) {
         hi = -hi;
         lo = -lo;
     }
-    c2d_toia_x_set(&z, hi, x->e + y->e + shift);
+    c2d_xf_set(&z, hi, x->e + y->e + shift);
     m[n] = z.m;
     e[n] = z.e;
     n++;
     if (lo != 0) {
-        c2d_toia_x_set(&z, lo, x->e + y->e + shift);
+        c2d_xf_set(&z, lo, x->e + y->e + shift);
         m[n] = z.m;
         e[n] = z.e;
         n++;
@@ -356,7 +247,7 @@ static int c2d_toia_push(c2d_real *m, int *e, int n, const c2d_toia_x *x, const 
 }
 
 /* Append sgn * x as one atom. */
-static int c2d_toia_push1(c2d_real *m, int *e, int n, const c2d_toia_x *x, int sgn)
+static int c2d_toia_push1(c2d_real *m, int *e, int n, const c2d_xf *x, int sgn)
 {
     if (x->m == 0) return n;
     m[n] = sgn < 0 ? -x->m : x->m;
@@ -431,8 +322,8 @@ C2D_COLD int c2d_toia_xsum(c2d_real *m, int *e, int n, c2d_real *hi, c2d_real *l
         }
         /* the window's components become atoms again, the rest follow */
         for (i = 0; i < k; i++) {
-            c2d_toia_x z;
-            c2d_toia_x_set(&z, m[i], top);
+            c2d_xf z;
+            c2d_xf_set(&z, m[i], top);
             m[i] = z.m;
             e[i] = z.e;
         }

@@ -7,35 +7,19 @@
 /* The problem                                                           */
 /* ===================================================================== */
 
-/* x1 - x0 exactly as (hi + lo) (halved first when it could overflow: exact
- * for the large operand; what a subnormal small one loses is far below). */
-static void c2d_toia_diff(c2d_real x1, c2d_real x0, c2d_toia_x *hi, c2d_toia_x *lo)
-{
-    int e = 0;
-    c2d_real h, l;
-    if (c2d_abs(x1) >= c2d_pow2(C2D_R_EMAX - 1) || c2d_abs(x0) >= c2d_pow2(C2D_R_EMAX - 1)) {
-        x1 *= (c2d_real)0.5;
-        x0 *= (c2d_real)0.5;
-        e = 1;
-    }
-    h = c2d_two_sum(x1, -x0, &l);
-    c2d_toia_x_set(hi, h, e);
-    c2d_toia_x_set(lo, l, e);
-}
-
 /* The exact part (hi: j = 0, lo: j = 1) of input difference k (0
  * position, 1 velocity, 2 acceleration) along axis i, as an extended number. */
-C2D_COLD void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_toia_x *x)
+C2D_COLD void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_xf *x)
 {
-    c2d_toia_x hi, lo;
+    c2d_xf hi, lo;
     if (k == 0) {
-        c2d_toia_diff(i == 0 ? c->bb->pos.x : c->bb->pos.y, i == 0 ? c->ba->pos.x : c->ba->pos.y, &hi, &lo);
+        c2d_exact_diff(i == 0 ? c->bb->pos.x : c->bb->pos.y, i == 0 ? c->ba->pos.x : c->ba->pos.y, &hi, &lo);
     } else if (k == 1) {
-        c2d_toia_diff(i == 0 ? c->bb->vel.x : c->bb->vel.y, i == 0 ? c->ba->vel.x : c->ba->vel.y, &hi, &lo);
+        c2d_exact_diff(i == 0 ? c->bb->vel.x : c->bb->vel.y, i == 0 ? c->ba->vel.x : c->ba->vel.y, &hi, &lo);
     } else {
-        c2d_toia_diff(i == 0 ? c->ab->x : c->ab->y, i == 0 ? c->aa->x : c->aa->y, &hi, &lo);
+        c2d_exact_diff(i == 0 ? c->ab->x : c->ab->y, i == 0 ? c->aa->x : c->aa->y, &hi, &lo);
     }
-    c2d_toia_x_copy(x, j == 0 ? &hi : &lo);
+    c2d_xf_copy(x, j == 0 ? &hi : &lo);
 }
 
 /* One vector's exact difference x1 - x0 (per axis hi + lo, halved first
@@ -87,7 +71,7 @@ static void c2d_toia_load(c2d_toia_ctx *c, const c2d_real_body *a, const c2d_rea
     c2d_toia_load_vec(c, 0, b->pos.x, a->pos.x, b->pos.y, a->pos.y);
     c2d_toia_load_vec(c, 1, b->vel.x, a->vel.x, b->vel.y, a->vel.y);
     c2d_toia_load_vec(c, 2, ab->x, aa->x, ab->y, aa->y);
-    c2d_toia_x_set(&c->r, radius_sum, 0);
+    c2d_xf_set(&c->r, radius_sum, 0);
 }
 
 /* ===================================================================== */
@@ -102,7 +86,7 @@ static int c2d_toia_push_dot(const c2d_toia_ctx *c, c2d_real *m, int *e, int n, 
     for (i = 0; i < 2; i++)
         for (j = 0; j < 2; j++)
             for (k = 0; k < 2; k++) {
-                c2d_toia_x x, y;
+                c2d_xf x, y;
                 c2d_toia_part(c, kx, i, j, &x);
                 c2d_toia_part(c, ky, i, k, &y);
                 n = c2d_toia_push(m, e, n, &x, &y, 0, sgn);

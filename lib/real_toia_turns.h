@@ -6,14 +6,14 @@
 /* Turning points of f: brackets of the roots of g and f's value there   */
 /* ===================================================================== */
 
-static void c2d_toia_x_mul(c2d_toia_x *r, const c2d_toia_x *a, const c2d_toia_x *b)
+static void c2d_toia_x_mul(c2d_xf *r, const c2d_xf *a, const c2d_xf *b)
 {
-    c2d_toia_x_set(r, a->m * b->m, a->e + b->e);
+    c2d_xf_set(r, a->m * b->m, a->e + b->e);
 }
 
 /* val > 0 with a margin of 2^(4 - MANT) of scale (>= 0): a decision that
  * survives the few roundings the bound arithmetic made. */
-static int c2d_toia_x_clear(const c2d_toia_x *val, const c2d_toia_x *scale)
+static int c2d_toia_x_clear(const c2d_xf *val, const c2d_xf *scale)
 {
     if (!(val->m > 0)) return 0;
     if (scale->m == 0) return 1;
@@ -31,20 +31,20 @@ static int c2d_toia_x_clear(const c2d_toia_x *val, const c2d_toia_x *scale)
  * 0 if neither. */
 C2D_COLD int c2d_toia_fturn(const c2d_toia_br *br, int dir, const c2d_toia_fg *center)
 {
-    c2d_toia_x w, x, y, z;
+    c2d_xf w, x, y, z;
     int i, res = 0;
     c2d_toia_t_diff(&w, &br->hi, &br->lo);
     w.m = c2d_abs(w.m);
     for (i = 0; i < 3; i++) {
         const c2d_toia_fg *ev = i == 0 ? &br->elo : (i == 1 ? &br->ehi : center);
-        c2d_toia_x f, r, tg, lo, hi;
+        c2d_xf f, r, tg, lo, hi;
         if (ev == NULL) continue;
-        c2d_toia_x_set(&f, ev->f.v, ev->f.e);
-        c2d_toia_x_set(&r, ev->f.r, ev->f.e);
+        c2d_xf_set(&f, ev->f.v, ev->f.e);
+        c2d_xf_set(&r, ev->f.r, ev->f.e);
         tg.m = 0;
         tg.e = 0;
         if (i < 2) {
-            c2d_toia_x_set(&x, c2d_abs(ev->g.v) + ev->g.r, ev->g.e + 1);
+            c2d_xf_set(&x, c2d_abs(ev->g.v) + ev->g.r, ev->g.e + 1);
             c2d_toia_x_mul(&tg, &x, &w);
         }
         /* lo = f - r - (dir > 0 ? tg : 0), hi = f + r + (dir < 0 ? tg : 0);
@@ -73,8 +73,8 @@ C2D_COLD int c2d_toia_fturn(const c2d_toia_br *br, int dir, const c2d_toia_fg *c
 /* The plain estimate of g's root in (x, y) (Newton in a local frame): 1 with
  * *r and the exponent *dw of 4 of its uncertainties, 0 if the frame's
  * values are not trustworthy there. */
-C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_t *y, int dir,
-                                         c2d_toia_t *r, int *dw)
+C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, int dir,
+                                         c2d_dx *r, int *dw)
 {
     c2d_toia_frame fr;
     c2d_real width = 0, xr;
@@ -82,7 +82,7 @@ C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toi
     if (c2d_toia_frame_set(&fr, c, kt) == 0) return 0;
     xr = c2d_toia_newton0(&fr, C2D_TOIA_QG, c2d_toia_t_local(x, kt), c2d_toia_t_local(y, kt), -dir, &ok, &width);
     if (ok == 0) return 0;
-    c2d_toia_t_set(r, xr, 0, kt);
+    c2d_dx_set(r, xr, 0, kt);
     *dw = r->e - C2D_R_MANT + 4;
     if (width > 0 && c2d_ilogb(width) + kt + 3 > *dw) *dw = c2d_ilogb(width) + kt + 3;
     return 1;
@@ -90,13 +90,13 @@ C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toi
 
 /* The exponent of 4 times the double-length Newton step on g at r plus
  * its noise, at least dw. */
-C2D_COLD int c2d_toia_gstep(c2d_toia_ctx *c, const c2d_toia_t *r, int dw)
+C2D_COLD int c2d_toia_gstep(c2d_toia_ctx *c, const c2d_dx *r, int dw)
 {
     c2d_toia_ev ev;
     c2d_toia_e2(c, r, &ev);
     if (ev.q[C2D_TOIA_QH].v != 0) {
-        c2d_toia_x st;
-        c2d_toia_x_set(&st, (c2d_abs(ev.q[C2D_TOIA_QG].v) + ev.q[C2D_TOIA_QG].r) / c2d_abs(ev.q[C2D_TOIA_QH].v),
+        c2d_xf st;
+        c2d_xf_set(&st, (c2d_abs(ev.q[C2D_TOIA_QG].v) + ev.q[C2D_TOIA_QG].r) / c2d_abs(ev.q[C2D_TOIA_QH].v),
                        ev.q[C2D_TOIA_QG].e - ev.q[C2D_TOIA_QH].e);
         if (st.m != 0 && st.e + 3 > dw) dw = st.e + 3;
     }
@@ -106,8 +106,8 @@ C2D_COLD int c2d_toia_gstep(c2d_toia_ctx *c, const c2d_toia_t *r, int dw)
 /* The double-length estimate of g's root in (x, y) (certified search and
  * Newton), with the exponent *dw of its uncertainty (at least 16 ulp of the
  * working format). */
-C2D_COLD void c2d_toia_gdd(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_t *y, int dir,
-                                       c2d_toia_t *r, int *dw)
+C2D_COLD void c2d_toia_gdd(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, int dir,
+                                       c2d_dx *r, int *dw)
 {
     c2d_toia_root(c, x, y, C2D_TOIA_QG, -dir, r);
     *dw = c2d_toia_gstep(c, r, r->e - C2D_R_MANT + 4);
@@ -119,10 +119,10 @@ C2D_COLD void c2d_toia_gdd(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_
  * g at the estimate +- 4 uncertainties (widening 64-fold: up to twice for
  * the plain estimate, three times for the other); at worst the piece
  * itself.  f and g are evaluated at both ends. */
-C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_t *y, int dir,
+C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, int dir,
                                             c2d_toia_br *br)
 {
-    c2d_toia_t r;
+    c2d_dx r;
     int k, dw = 0, pass = 1;
     if (c2d_toia_gplain(c, x, y, dir, &r, &dw) != 0) pass = 0;
     for (; pass < 2; pass++) {
@@ -130,12 +130,12 @@ C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_
         if (pass == 1) c2d_toia_gdd(c, x, y, dir, &r, &dw);
         if (pass == 0) widenings = 2;
         for (k = 0; k < widenings; k++) {
-            c2d_toia_t_copy(&br->lo, &r);
+            c2d_dx_copy(&br->lo, &r);
             c2d_toia_t_add(&br->lo, -1, dw);
-            if (c2d_toia_t_cmp(&br->lo, x) < 0) c2d_toia_t_copy(&br->lo, x);
-            c2d_toia_t_copy(&br->hi, &r);
+            if (c2d_toia_t_cmp(&br->lo, x) < 0) c2d_dx_copy(&br->lo, x);
+            c2d_dx_copy(&br->hi, &r);
             c2d_toia_t_add(&br->hi, 1, dw);
-            if (c2d_toia_t_cmp(&br->hi, y) > 0) c2d_toia_t_copy(&br->hi, y);
+            if (c2d_toia_t_cmp(&br->hi, y) > 0) c2d_dx_copy(&br->hi, y);
             c2d_toia_probe_fg(c, &br->lo, 1, &br->elo);
             if (br->elo.sg == -dir) {
                 c2d_toia_probe_fg(c, &br->hi, 1, &br->ehi);
@@ -144,8 +144,8 @@ C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_
             dw += 6;
         }
     }
-    c2d_toia_t_copy(&br->lo, x);
-    c2d_toia_t_copy(&br->hi, y);
+    c2d_dx_copy(&br->lo, x);
+    c2d_dx_copy(&br->hi, y);
     c2d_toia_probe_fg(c, &br->lo, 1, &br->elo);
     c2d_toia_probe_fg(c, &br->hi, 1, &br->ehi);
 }
@@ -153,25 +153,25 @@ C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_
 /* Tighten a bracket whose f-decision was a tie: double-length Newton on g
  * from its middle, certified signs (tiers 2-3) at +- 4 steps, and a tier-3
  * value of f at the center (*ct). */
-C2D_COLD void c2d_toia_tighten(c2d_toia_ctx *c, c2d_toia_br *br, int dir, c2d_toia_t *ct,
+C2D_COLD void c2d_toia_tighten(c2d_toia_ctx *c, c2d_toia_br *br, int dir, c2d_dx *ct,
                                            c2d_toia_fg *center)
 {
-    c2d_toia_t lo, hi;
+    c2d_dx lo, hi;
     c2d_toia_fg elo, ehi;
     int dw;
     c2d_toia_t_mid(ct, &br->lo, &br->hi);
     (void)c2d_toia_polish(c, ct, C2D_TOIA_QG, &br->lo, &br->hi, 2 * C2D_R_MANT + 2);
     dw = c2d_toia_gstep(c, ct, ct->e - 2 * C2D_R_MANT + 2);
-    c2d_toia_t_copy(&lo, ct);
+    c2d_dx_copy(&lo, ct);
     c2d_toia_t_add(&lo, -1, dw);
-    c2d_toia_t_copy(&hi, ct);
+    c2d_dx_copy(&hi, ct);
     c2d_toia_t_add(&hi, 1, dw);
     if (c2d_toia_t_cmp(&lo, &br->lo) > 0 && c2d_toia_t_cmp(&hi, &br->hi) < 0) {
         c2d_toia_probe_fg(c, &lo, 2, &elo);
         c2d_toia_probe_fg(c, &hi, 2, &ehi);
         if (elo.sg == -dir && ehi.sg == dir) {
-            c2d_toia_t_copy(&br->lo, &lo);
-            c2d_toia_t_copy(&br->hi, &hi);
+            c2d_dx_copy(&br->lo, &lo);
+            c2d_dx_copy(&br->hi, &hi);
             c2d_toia_fg_copy(&br->elo, &elo);
             c2d_toia_fg_copy(&br->ehi, &ehi);
         }
@@ -185,7 +185,7 @@ static int c2d_toia_push_cross(const c2d_toia_ctx *c, c2d_real *m, int *e, int n
     int j, k;
     for (j = 0; j < 2; j++)
         for (k = 0; k < 2; k++) {
-            c2d_toia_x x, y;
+            c2d_xf x, y;
             c2d_toia_part(c, kx, 0, j, &x);
             c2d_toia_part(c, ky, 1, k, &y);
             n = c2d_toia_push(m, e, n, &x, &y, 0, 1);
@@ -262,8 +262,8 @@ C2D_COLD int c2d_toia_crosses(c2d_toia_ctx *c, const c2d_toia_br *br)
  * (no contact).  On -1, *neg = a time in the piece's bracket where f < 0 is
  * certified, or NULL when no representable time has f < 0 (a contact
  * shorter than the time resolution): then *ct is the minimum's location. */
-C2D_COLD int c2d_toia_fmin(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_t *y, c2d_toia_br *br,
-                                       c2d_toia_t *ct, c2d_toia_fg *center, const c2d_toia_t **neg)
+C2D_COLD int c2d_toia_fmin(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, c2d_toia_br *br,
+                                       c2d_dx *ct, c2d_toia_fg *center, const c2d_dx **neg)
 {
     int d, tight = 0;
     *neg = NULL;
@@ -313,15 +313,15 @@ C2D_COLD int c2d_toia_fmin(c2d_toia_ctx *c, const c2d_toia_t *x, const c2d_toia_
  * never holds, g is within S of 0 at its extremum: the tie value kind (g
  * touching 0 from below at a maximum, from above at a minimum: no sign
  * change) is returned.  *sf = f's sign at s if tier 1 certified it. */
-C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_toia_t *s, int kind, int *sf, int *tied)
+C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dx *s, int kind, int *sf, int *tied)
 {
     c2d_toia_ev ev;
-    c2d_toia_x h2, H, P, D, S, G, x, y;
+    c2d_xf h2, H, P, D, S, G, x, y;
     int tier;
     *sf = 0;
     *tied = 0;
     /* h'' = 3 |a|^2, rounded up */
-    c2d_toia_x_set(&h2,
+    c2d_xf_set(&h2,
                    3 * (c->m[2][0] * c->m[2][0] + c->m[2][1] * c->m[2][1]) * (1 + c2d_pow2(3 - C2D_R_MANT)),
                    2 * c->ex[2]);
     for (tier = 1; tier <= 3; tier++) {
@@ -330,9 +330,9 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_toia_t *s, int kind, int *
             if (c2d_abs(ev.q[C2D_TOIA_QF].v) > ev.q[C2D_TOIA_QF].r) *sf = c2d_toia_sgn(ev.q[C2D_TOIA_QF].v);
         } else {
             if (tier == 2) {
-                c2d_toia_t lo, hi;
-                c2d_toia_t_copy(&lo, s);
-                c2d_toia_t_copy(&hi, s);
+                c2d_dx lo, hi;
+                c2d_dx_copy(&lo, s);
+                c2d_dx_copy(&hi, s);
                 c2d_toia_t_add(&lo, -1, s->e - 8);
                 c2d_toia_t_add(&hi, 1, s->e - 8);
                 (void)c2d_toia_polish(c, s, C2D_TOIA_QH, &lo, &hi, 2 * C2D_R_MANT);
@@ -344,8 +344,8 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_toia_t *s, int kind, int *
         if (!(c2d_abs(ev.q[C2D_TOIA_QHP].v) > ev.q[C2D_TOIA_QHP].r) ||
             c2d_toia_sgn(ev.q[C2D_TOIA_QHP].v) != kind)
             continue;
-        c2d_toia_x_set(&H, c2d_abs(ev.q[C2D_TOIA_QH].v) + ev.q[C2D_TOIA_QH].r, ev.q[C2D_TOIA_QH].e);
-        c2d_toia_x_set(&P, c2d_abs(ev.q[C2D_TOIA_QHP].v) - ev.q[C2D_TOIA_QHP].r, ev.q[C2D_TOIA_QHP].e);
+        c2d_xf_set(&H, c2d_abs(ev.q[C2D_TOIA_QH].v) + ev.q[C2D_TOIA_QH].r, ev.q[C2D_TOIA_QH].e);
+        c2d_xf_set(&P, c2d_abs(ev.q[C2D_TOIA_QHP].v) - ev.q[C2D_TOIA_QHP].r, ev.q[C2D_TOIA_QHP].e);
         /* the root exists within D unless h(s) may be positive (same sign as
          * h''): then P^2 >= 2 h'' H is needed (with slack) */
         if (!(ev.q[C2D_TOIA_QH].v + ev.q[C2D_TOIA_QH].r < 0)) {
@@ -355,10 +355,10 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_toia_t *s, int kind, int *
             if (H.m != 0 && c2d_toia_x_cmp(&x, &y) <= 0) continue;
         }
         /* D = 2 H / P, S = H D (rounded up by the slack in the test) */
-        c2d_toia_x_set(&D, 2 * H.m / P.m, H.e - P.e);
+        c2d_xf_set(&D, 2 * H.m / P.m, H.e - P.e);
         c2d_toia_x_mul(&S, &H, &D);
         S.m *= 1 + c2d_pow2(4 - C2D_R_MANT);
-        c2d_toia_x_set(&G, c2d_abs(ev.q[C2D_TOIA_QG].v) - ev.q[C2D_TOIA_QG].r, ev.q[C2D_TOIA_QG].e);
+        c2d_xf_set(&G, c2d_abs(ev.q[C2D_TOIA_QG].v) - ev.q[C2D_TOIA_QG].r, ev.q[C2D_TOIA_QG].e);
         if (G.m > 0 && c2d_toia_x_cmp(&G, &S) > 0) return c2d_toia_sgn(ev.q[C2D_TOIA_QG].v);
     }
     *tied = 1;
@@ -368,17 +368,17 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_toia_t *s, int kind, int *
 /* x.y (+ z.w) for input differences, as a double-length number: the exact
  * sum of the exact products when exact != 0, else from the hi parts in
  * plain arithmetic (a hint; relative error a few u unless it cancels). */
-static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_toia_t *r);
+static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dx *r);
 
 /* An exact sum of products (atoms) as a double-length number. */
-static void c2d_toia_t_xsum(c2d_toia_t *r, c2d_real *m, int *e, int n)
+static void c2d_toia_t_xsum(c2d_dx *r, c2d_real *m, int *e, int n)
 {
     c2d_real hi, lo;
     int k, ex = c2d_toia_xsum(m, e, n, &hi, &lo, &k);
-    c2d_toia_t_set(r, hi, lo, ex);
+    c2d_dx_set(r, hi, lo, ex);
 }
 
-static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_toia_t *r)
+static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dx *r)
 {
     if (exact != 0) {
         c2d_real m[C2D_TOIA_ATOMS];
@@ -386,15 +386,15 @@ static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int s
         if (kz >= 0) n = c2d_toia_push_dot(c, m, e, n, kz, kw, sgn);
         c2d_toia_t_xsum(r, m, e, n);
     } else {
-        c2d_toia_t p, q;
-        c2d_toia_t_set(&p, c->nz[kx] * c->nz[ky] != 0 ? (c2d_real)sgn * (c->m[kx][0] * c->m[ky][0] + c->m[kx][1] * c->m[ky][1]) : 0,
+        c2d_dx p, q;
+        c2d_dx_set(&p, c->nz[kx] * c->nz[ky] != 0 ? (c2d_real)sgn * (c->m[kx][0] * c->m[ky][0] + c->m[kx][1] * c->m[ky][1]) : 0,
                        0, c->ex[kx] + c->ex[ky]);
         if (kz >= 0) {
-            c2d_toia_t_set(&q, c->nz[kz] * c->nz[kw] != 0 ? (c2d_real)sgn * (c->m[kz][0] * c->m[kw][0] + c->m[kz][1] * c->m[kw][1]) : 0,
+            c2d_dx_set(&q, c->nz[kz] * c->nz[kw] != 0 ? (c2d_real)sgn * (c->m[kz][0] * c->m[kw][0] + c->m[kz][1] * c->m[kw][1]) : 0,
                            0, c->ex[kz] + c->ex[kw]);
             c2d_toia_t_sum(r, &p, &q);
         } else {
-            c2d_toia_t_copy(r, &p);
+            c2d_dx_copy(r, &p);
         }
     }
 }
@@ -412,50 +412,50 @@ static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int s
  * and w is accurate to its own precision.  Returns 0 if there is no real
  * root to report.  exact = 0: the coefficients from the hi parts (cheap
  * hints); 1: from exact sums (when the cheap ones did not certify). */
-C2D_COLD int c2d_toia_hroots(c2d_toia_ctx *c, const c2d_toia_ev *at_m, int exact, c2d_toia_t *rm,
-                                         c2d_toia_t *rp)
+C2D_COLD int c2d_toia_hroots(c2d_toia_ctx *c, const c2d_toia_ev *at_m, int exact, c2d_dx *rm,
+                                         c2d_dx *rp)
 {
-    c2d_toia_t a2, beta, gamma, x, y, sq;
+    c2d_dx a2, beta, gamma, x, y, sq;
     c2d_toia_dotq(c, 2, 2, -1, -1, 1, exact, &a2);
     c2d_toia_dotq(c, 1, 2, -1, -1, 1, exact, &x);
-    c2d_toia_t_div(&beta, &x, &a2);
+    c2d_dx_div(&beta, &x, &a2);
     c2d_toia_dotq(c, 1, 1, 0, 2, 1, exact, &x);
-    c2d_toia_t_div(&gamma, &x, &a2);
-    c2d_toia_t_set(&y, (c2d_real)2 / (c2d_real)3, 0, 0); /* 2/3 to double length is enough for a hint */
-    c2d_toia_t_mul(&gamma, &gamma, &y);
+    c2d_dx_div(&gamma, &x, &a2);
+    c2d_dx_set(&y, (c2d_real)2 / (c2d_real)3, 0, 0); /* 2/3 to double length is enough for a hint */
+    c2d_dx_mul(&gamma, &gamma, &y);
     if (at_m != NULL && beta.h < 0 && gamma.h > 0) {
         /* vertex form: w^2 = -2 h(m) / (3 |a|^2) */
-        c2d_toia_t_set(&x, -2 * at_m->q[C2D_TOIA_QH].v, 0, at_m->q[C2D_TOIA_QH].e);
-        c2d_toia_t_set(&y, 3, 0, 0);
-        c2d_toia_t_mul(&y, &y, &a2);
-        c2d_toia_t_div(&x, &x, &y);
+        c2d_dx_set(&x, -2 * at_m->q[C2D_TOIA_QH].v, 0, at_m->q[C2D_TOIA_QH].e);
+        c2d_dx_set(&y, 3, 0, 0);
+        c2d_dx_mul(&y, &y, &a2);
+        c2d_dx_div(&x, &x, &y);
         if (!(x.h > 0)) return 0;
-        c2d_toia_t_sqrt(&sq, &x);
-        c2d_toia_t_copy(&x, &beta);
-        c2d_toia_t_neg(&x);
+        c2d_dx_sqrt(&sq, &x);
+        c2d_dx_copy(&x, &beta);
+        c2d_dx_negate(&x);
         c2d_toia_t_sum(rp, &x, &sq); /* m + w */
         /* m - w may cancel: the product of the roots is gamma */
-        c2d_toia_t_div(rm, &gamma, rp);
+        c2d_dx_div(rm, &gamma, rp);
         return 1;
     }
-    c2d_toia_t_mul(&x, &beta, &beta);
-    c2d_toia_t_copy(&y, &gamma);
-    c2d_toia_t_neg(&y);
+    c2d_dx_mul(&x, &beta, &beta);
+    c2d_dx_copy(&y, &gamma);
+    c2d_dx_negate(&y);
     c2d_toia_t_sum(&x, &x, &y);
     if (!(x.h > 0)) return 0;
-    c2d_toia_t_sqrt(&sq, &x);
-    if (beta.h > 0) c2d_toia_t_neg(&sq);
-    c2d_toia_t_copy(&x, &beta);
-    c2d_toia_t_neg(&x);
+    c2d_dx_sqrt(&sq, &x);
+    if (beta.h > 0) c2d_dx_negate(&sq);
+    c2d_dx_copy(&x, &beta);
+    c2d_dx_negate(&x);
     c2d_toia_t_sum(&x, &x, &sq); /* -beta - sgn(beta) sqrt: no cancellation */
     if (x.h == 0) return 0;
-    c2d_toia_t_div(&y, &gamma, &x);
+    c2d_dx_div(&y, &gamma, &x);
     if (beta.h > 0) {
-        c2d_toia_t_copy(rm, &x);
-        c2d_toia_t_copy(rp, &y);
+        c2d_dx_copy(rm, &x);
+        c2d_dx_copy(rp, &y);
     } else {
-        c2d_toia_t_copy(rp, &x);
-        c2d_toia_t_copy(rm, &y);
+        c2d_dx_copy(rp, &x);
+        c2d_dx_copy(rm, &y);
     }
     return 1;
 }

@@ -135,3 +135,22 @@ void case_to_float(ref_case *c)
     }
     c->ma = (float)c->ma, c->mb = (float)c->mb, c->e = (float)c->e;
 }
+
+/* Every component with its own exponent anywhere in the format's range
+ * (subnormals included): magnitudes that differ by more than the exponent
+ * range, the audit's failure kind.  Approaching more often than not. */
+void gen_toi_ratios(c2d_rng *r, ref_case *c, double *radius, int prec, int emin, int emax)
+{
+    int i, sub = emin - prec + 1;
+    for (i = 0; i < 2; i++) {
+        c->pa[i] = c2d_rng_next(r) % 4 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
+        c->pb[i] = gen_magnitude(r, sub, emax - 2, prec);
+        c->va[i] = c2d_rng_next(r) % 4 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
+        c->vb[i] = c2d_rng_next(r) % 3 == 0 ? 0.0 : gen_magnitude(r, sub, emax - 2, prec);
+    }
+    *radius = fabs(gen_magnitude(r, sub, emax - 2, prec));
+    if (c2d_rng_next(r) % 4 != 0 &&
+        (c->pb[0] - c->pa[0]) * (c->vb[0] - c->va[0]) + (c->pb[1] - c->pa[1]) * (c->vb[1] - c->va[1]) > 0)
+        for (i = 0; i < 2; i++) c->va[i] = -c->va[i], c->vb[i] = -c->vb[i];
+    c->ma = c->mb = 1, c->n[0] = c->n[1] = 0, c->has_normal = 0, c->e = 0;
+}

@@ -22,6 +22,11 @@ void gen_extreme(c2d_rng *r, ref_case *c, int prec, int emin, int emax);
 /* A random value 2^k * (1 + mantissa) with k uniform in [kmin, kmax] and a
  * random sign, rounded to `prec` bits. */
 double gen_magnitude(c2d_rng *r, int kmin, int kmax, int prec);
+/* A time-of-impact pair with every component at its own exponent anywhere
+ * in the format's range (subnormals included): magnitudes that differ by
+ * more than the exponent range.  Approaching more often than not; unit
+ * masses, e = 0, no normal. */
+void gen_toi_ratios(c2d_rng *r, ref_case *c, double *radius, int prec, int emin, int emax);
 
 /* Copy a case into library bodies. */
 void case_to_bodies(const ref_case *c, c2d_body *a, c2d_body *b);

@@ -25,15 +25,6 @@ static double rf(double x)
     return (double)f;
 }
 
-int toia_acceleration_differs(const ref_toia_in *in) { return in->aa[0] != in->ab[0] || in->aa[1] != in->ab[1]; }
-
-int toia_in_band(const ref_toia_out *o, int is_float, const ref_toia_in *in)
-{
-    const double ef = is_float ? TOIA_EPS_F_FLOAT : TOIA_EPS_F_DOUBLE, eg = is_float ? TOIA_EPS_G_FLOAT : TOIA_EPS_G_DOUBLE;
-    if (o->tie_f <= ef || o->tie_g <= eg) return 1;
-    return toia_acceleration_differs(in) && (o->tie_fs <= TOIA_K_RES || o->tie_gs <= TOIA_K_RES);
-}
-
 void toia_case_to_float(ref_toia_in *in)
 {
     int i;
@@ -446,3 +437,12 @@ const family toia_families[] = {
     {"turn (overlap)", gen_turn},  {"huge/zero horizon", gen_huge},
 };
 const int toia_n_families = (int)(sizeof toia_families / sizeof toia_families[0]);
+
+int toia_accel_differs(const ref_toia_in *in) { return in->aa[0] != in->ab[0] || in->aa[1] != in->ab[1]; }
+
+int toia_in_band(const ref_toia_out *o, int is_float, const ref_toia_in *in)
+{
+    const double ef = is_float ? TOIA_EPS_F_FLOAT : TOIA_EPS_F_DOUBLE, eg = is_float ? TOIA_EPS_G_FLOAT : TOIA_EPS_G_DOUBLE;
+    if (o->tie_f <= ef || o->tie_g <= eg) return 1;
+    return toia_accel_differs(in) && (o->tie_fs <= TOIA_K_RES || o->tie_gs <= TOIA_K_RES);
+}

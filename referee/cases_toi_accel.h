@@ -21,6 +21,11 @@
 #define TOIA_EPS_G_FLOAT 0x1p-38
 #define TOIA_K_RES 0x1p12
 
+/* 1 when the two accelerations differ (the relative motion is curved). */
+int toia_accel_differs(const ref_toia_in *in);
+/* 1 when the case lies in the band above (for the working format). */
+int toia_in_band(const ref_toia_out *o, int is_float, const ref_toia_in *in);
+
 typedef void (*case_gen)(c2d_rng *r, int prec, ref_toia_in *in);
 
 typedef struct family {
@@ -35,14 +40,6 @@ extern const int toia_n_families;
  * R (1 + delta) (a minimum if want_min, else a maximum); big: far along the
  * path (delta >= 2^-(MANT-2) then) */
 void case_graze(c2d_rng *r, int prec, ref_toia_in *in, double delta, int want_min, int big);
-
-/* the relative acceleration is zero: the motion is c2d_time_of_impact's */
-int toia_acceleration_differs(const ref_toia_in *in);
-
-/* the referee's answer puts the case in the band above (precision: float
- * when is_float, else double); the unit test and the fuzz harness forgive
- * a wrong status there, and nowhere else */
-int toia_in_band(const ref_toia_out *o, int is_float, const ref_toia_in *in);
 
 /* round every input to float (exactly representable values stay) */
 void toia_case_to_float(ref_toia_in *in);

@@ -364,3 +364,235 @@ void c2d_hv_hex(uint64_t v, char hex[17])
     for (i = 15; i >= 0; i--, v >>= 4) hex[i] = digit[v & 0xFu];
     hex[16] = '\0';
 }
+
+/* ------------------------------------------------------------ the models
+ *
+ * Their own splitmix64 stream (another seed), so the variants' stream and
+ * hashes above stay as recorded.  A rough scene is a pair of disks near
+ * contact at unit scale (friction, spin, finite and infinite masses and
+ * inertias, wall-like bodies) or every field anywhere in the range; an
+ * accelerated scene is a pair of unit-scale disks under accelerations
+ * (decelerating balls, bodies pushed together, grazes, a horizon that may
+ * end before the contact) or every field anywhere in the range.  The
+ * inputs are made as the variants' are: exact or single correctly rounded
+ * operations only. */
+
+typedef struct hv_disk { double pos[2], vel[2], spin, mass, radius, inertia; } hv_disk;
+typedef struct hv_model_scene {
+    hv_disk a, b;
+    double n[2], e, mu, beta;                        /* rough: given normal, surface */
+    double pa[2], va[2], aa[2], pb[2], vb[2], ab[2]; /* accelerated time of impact */
+    double radius_sum, horizon;
+    double normal_given; /* 0 or 1: c2d_collide_rough or _normal */
+} hv_model_scene;
+
+const char *const c2d_hv_model_name[C2D_HV_MODELS] = {"rough-double", "rough-float", "accel-double", "accel-float"};
+
+static c2d_hv_models_hash *models_out;
+
+static void mix_model(int model, const void *p, size_t n)
+{
+    if (sink != NULL) sink(p, n);
+    fnv(&models_out->model[model], p, n);
+}
+
+static void mix_model_status(int model, c2d_status s)
+{
+    unsigned char c = (unsigned char)s;
+    mix_model(model, &c, 1);
+}
+
+static double infinity(void) { return from_bits(0x7FF0000000000000ull); }
+
+/* Friction: none, some, sticking at any force, or never sliding. */
+static double friction(void)
+{
+    switch (next() % 6) {
+    case 0: return 0.0;
+    case 1: return 1e6;
+    case 2: return infinity();
+    default: return uniform(0, 1);
+    }
+}
+
+static double tangential_restitution(void)
+{
+    switch (next() % 6) {
+    case 0: return -1.0;
+    case 1: return 1.0;
+    case 2: return 0.0;
+    default: return uniform(-1, 1);
+    }
+}
+
+static void rough_disk_plain(hv_disk *d, double x, double y)
+{
+    d->pos[0] = x, d->pos[1] = y;
+    d->vel[0] = uniform(-10, 10), d->vel[1] = uniform(-10, 10);
+    d->radius = next() % 16 == 0 ? 0.0 : uniform(0.1, 1);
+    d->spin = uniform(-20, 20);
+    d->mass = next() % 12 == 0 ? infinity() : uniform(0.1, 10);
+    d->inertia = next() % 8 == 0 ? infinity() : d->mass * uniform(0.01, 1);
+}
+
+static void rough_disk_wide(hv_disk *d)
+{
+    d->pos[0] = extreme(), d->pos[1] = extreme(), d->vel[0] = extreme(), d->vel[1] = extreme();
+    d->spin = extreme(), d->mass = absolute_sometimes(extreme());
+    d->radius = absolute_sometimes(extreme()), d->inertia = absolute_sometimes(extreme());
+}
+
+static void make_rough(hv_model_scene *s)
+{
+    if (next() % 4 != 0) {
+        /* one draw per statement: the order in which a call's arguments
+         * are evaluated is unspecified, and differs between targets */
+        const double x = uniform(-10, 10);
+        const double y = uniform(-10, 10);
+        const double dx = uniform(-2, 2);
+        const double dy = uniform(-2, 2);
+        rough_disk_plain(&s->a, x, y);
+        rough_disk_plain(&s->b, x + dx, y + dy);
+        s->n[0] = s->b.pos[0] - s->a.pos[0], s->n[1] = s->b.pos[1] - s->a.pos[1];
+        s->e = restitution(), s->mu = friction(), s->beta = tangential_restitution();
+    } else {
+        rough_disk_wide(&s->a);
+        rough_disk_wide(&s->b);
+        s->n[0] = extreme(), s->n[1] = extreme();
+        s->e = next() % 4 == 0 ? extreme() : restitution();
+        s->mu = next() % 4 == 0 ? extreme() : friction();
+        s->beta = next() % 4 == 0 ? extreme() : tangential_restitution();
+    }
+    s->normal_given = (double)(next() % 2);
+}
+
+static void make_accel(hv_model_scene *s)
+{
+    int i;
+    switch (next() % 4) {
+    case 0: /* anywhere in the range */
+        for (i = 0; i < 2; i++) {
+            s->pa[i] = extreme(), s->va[i] = extreme(), s->aa[i] = extreme();
+            s->pb[i] = extreme(), s->vb[i] = extreme(), s->ab[i] = extreme();
+        }
+        s->radius_sum = absolute_sometimes(extreme());
+        s->horizon = next() % 2 ? infinity() : absolute_sometimes(extreme());
+        return;
+    case 1: /* balls decelerating on cloth: acceleration against the velocity */
+        for (i = 0; i < 2; i++) {
+            s->pa[i] = uniform(-5, 5), s->pb[i] = s->pa[i] + uniform(-4, 4);
+            s->va[i] = uniform(-4, 4), s->vb[i] = uniform(-4, 4);
+            s->aa[i] = -s->va[i] * 0.25, s->ab[i] = -s->vb[i] * 0.25;
+        }
+        break;
+    default: /* unit scale, any accelerations, sometimes equal */
+        for (i = 0; i < 2; i++) {
+            s->pa[i] = uniform(-5, 5), s->pb[i] = s->pa[i] + uniform(-4, 4);
+            s->va[i] = uniform(-4, 4), s->vb[i] = uniform(-4, 4);
+            s->aa[i] = uniform(-2, 2), s->ab[i] = next() % 8 == 0 ? s->aa[i] : uniform(-2, 2);
+        }
+        break;
+    }
+    s->radius_sum = uniform(0, 3);
+    s->horizon = next() % 2 ? infinity() : uniform(0, 8);
+}
+
+#ifndef C2D_NO_DOUBLE
+static void disk_to_double(const hv_disk *h, c2d_disk *d)
+{
+    d->pos.x = h->pos[0], d->pos.y = h->pos[1], d->vel.x = h->vel[0], d->vel.y = h->vel[1];
+    d->spin = h->spin, d->mass = h->mass, d->radius = h->radius, d->inertia = h->inertia;
+}
+
+static void run_models_double(const hv_model_scene *s)
+{
+    c2d_disk a, b;
+    c2d_surface f;
+    c2d_vec2 n, aa, ab;
+    c2d_body pa, pb;
+    double t = -1;
+    disk_to_double(&s->a, &a), disk_to_double(&s->b, &b);
+    f.restitution = s->e, f.friction = s->mu, f.tangential_restitution = s->beta;
+    n.x = s->n[0], n.y = s->n[1];
+    mix_model_status(C2D_HV_ROUGH_DOUBLE,
+                     s->normal_given != 0 ? c2d_collide_rough_normal(&a, &b, n, f) : c2d_collide_rough(&a, &b, f));
+    mix_model(C2D_HV_ROUGH_DOUBLE, &a.vel, sizeof a.vel), mix_model(C2D_HV_ROUGH_DOUBLE, &a.spin, sizeof a.spin);
+    mix_model(C2D_HV_ROUGH_DOUBLE, &b.vel, sizeof b.vel), mix_model(C2D_HV_ROUGH_DOUBLE, &b.spin, sizeof b.spin);
+    pa.pos.x = s->pa[0], pa.pos.y = s->pa[1], pa.vel.x = s->va[0], pa.vel.y = s->va[1], pa.mass = 1;
+    pb.pos.x = s->pb[0], pb.pos.y = s->pb[1], pb.vel.x = s->vb[0], pb.vel.y = s->vb[1], pb.mass = 1;
+    aa.x = s->aa[0], aa.y = s->aa[1], ab.x = s->ab[0], ab.y = s->ab[1];
+    mix_model_status(C2D_HV_ACCEL_DOUBLE, c2d_time_of_impact_accel(&pa, aa, &pb, ab, s->radius_sum, s->horizon, &t));
+    mix_model(C2D_HV_ACCEL_DOUBLE, &t, sizeof t);
+}
+#endif
+
+#ifndef C2D_NO_FLOAT
+static void disk_to_float(const hv_disk *h, c2d_diskf *d)
+{
+    d->pos.x = to_float(h->pos[0]), d->pos.y = to_float(h->pos[1]);
+    d->vel.x = to_float(h->vel[0]), d->vel.y = to_float(h->vel[1]);
+    d->spin = to_float(h->spin), d->mass = to_float(h->mass);
+    d->radius = to_float(h->radius), d->inertia = to_float(h->inertia);
+}
+
+static void run_models_float(const hv_model_scene *s)
+{
+    c2d_diskf a, b;
+    c2d_surfacef f;
+    c2d_vec2f n, aa, ab;
+    c2d_bodyf pa, pb;
+    float t = -1;
+    disk_to_float(&s->a, &a), disk_to_float(&s->b, &b);
+    f.restitution = to_float(s->e), f.friction = to_float(s->mu), f.tangential_restitution = to_float(s->beta);
+    n.x = to_float(s->n[0]), n.y = to_float(s->n[1]);
+    mix_model_status(C2D_HV_ROUGH_FLOAT,
+                     s->normal_given != 0 ? c2d_collide_rough_normalf(&a, &b, n, f) : c2d_collide_roughf(&a, &b, f));
+    mix_model(C2D_HV_ROUGH_FLOAT, &a.vel, sizeof a.vel), mix_model(C2D_HV_ROUGH_FLOAT, &a.spin, sizeof a.spin);
+    mix_model(C2D_HV_ROUGH_FLOAT, &b.vel, sizeof b.vel), mix_model(C2D_HV_ROUGH_FLOAT, &b.spin, sizeof b.spin);
+    pa.pos.x = to_float(s->pa[0]), pa.pos.y = to_float(s->pa[1]);
+    pa.vel.x = to_float(s->va[0]), pa.vel.y = to_float(s->va[1]), pa.mass = 1;
+    pb.pos.x = to_float(s->pb[0]), pb.pos.y = to_float(s->pb[1]);
+    pb.vel.x = to_float(s->vb[0]), pb.vel.y = to_float(s->vb[1]), pb.mass = 1;
+    aa.x = to_float(s->aa[0]), aa.y = to_float(s->aa[1]), ab.x = to_float(s->ab[0]), ab.y = to_float(s->ab[1]);
+    mix_model_status(C2D_HV_ACCEL_FLOAT,
+                     c2d_time_of_impact_accelf(&pa, aa, &pb, ab, to_float(s->radius_sum), to_float(s->horizon), &t));
+    mix_model(C2D_HV_ACCEL_FLOAT, &t, sizeof t);
+}
+#endif
+
+void c2d_hv_run_models(unsigned long count, c2d_hv_models_hash *h, void (*bytes)(const void *p, size_t n))
+{
+    static hv_model_scene s; /* static: off a microcontroller's small stack */
+    unsigned long done;
+    int m;
+    rng.s = 0x6A09E667F3BCC909ull; /* not the variants' seed: its own stream */
+    models_out = h, sink = bytes;
+    h->inputs = 0xCBF29CE484222325ull;
+    for (m = 0; m < C2D_HV_MODELS; m++) h->model[m] = 0xCBF29CE484222325ull, h->present[m] = 0;
+#ifndef C2D_NO_DOUBLE
+    h->present[C2D_HV_ROUGH_DOUBLE] = h->present[C2D_HV_ACCEL_DOUBLE] = 1;
+#endif
+#ifndef C2D_NO_FLOAT
+    h->present[C2D_HV_ROUGH_FLOAT] = h->present[C2D_HV_ACCEL_FLOAT] = 1;
+#endif
+    for (done = 0; done < count; done++) {
+        make_rough(&s);
+        make_accel(&s);
+        fnv(&h->inputs, &s, sizeof s);
+#ifndef C2D_NO_DOUBLE
+        run_models_double(&s);
+#endif
+#ifndef C2D_NO_FLOAT
+        run_models_float(&s);
+#endif
+    }
+}
+
+uint64_t c2d_hv_models_combined(const c2d_hv_models_hash *h)
+{
+    uint64_t all = 0xCBF29CE484222325ull;
+    int m;
+    for (m = 0; m < C2D_HV_MODELS; m++)
+        if (h->present[m]) fnv(&all, &h->model[m], sizeof h->model[m]);
+    return all;
+}

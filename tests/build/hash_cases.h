@@ -33,8 +33,30 @@ extern const char *const c2d_hv_name[C2D_HV_VARIANTS];
  * hashed (to locate a difference between two targets with cmp -l). */
 void c2d_hv_run(unsigned long count, c2d_hv_hash *h, void (*sink)(const void *p, size_t n));
 
+/* The models (c2d_collide_rough and _normal, c2d_time_of_impact_accel), in
+ * double and float, hashed apart from the variants above over their own
+ * case stream, so the variants' recorded hashes do not move when models
+ * are added: "rough-double", "rough-float", "accel-double", "accel-float". */
+#define C2D_HV_MODELS_DEFAULT_COUNT 20000ul
+
+enum { C2D_HV_ROUGH_DOUBLE, C2D_HV_ROUGH_FLOAT, C2D_HV_ACCEL_DOUBLE, C2D_HV_ACCEL_FLOAT, C2D_HV_MODELS };
+
+typedef struct c2d_hv_models_hash {
+    uint64_t inputs;                /* the generated model cases themselves */
+    uint64_t model[C2D_HV_MODELS];  /* each model's outputs and statuses */
+    int present[C2D_HV_MODELS];     /* its variant compiled in */
+} c2d_hv_models_hash;
+
+extern const char *const c2d_hv_model_name[C2D_HV_MODELS];
+
+/* Runs `count` model cases (sink as for c2d_hv_run). */
+void c2d_hv_run_models(unsigned long count, c2d_hv_models_hash *h, void (*sink)(const void *p, size_t n));
+
 /* One hash over the variants compiled in (FNV-1a of their hashes). */
 uint64_t c2d_hv_combined(const c2d_hv_hash *h);
+
+/* The same over the models compiled in. */
+uint64_t c2d_hv_models_combined(const c2d_hv_models_hash *h);
 
 /* 16 lower-case hex digits and a terminating NUL into out[17]. */
 void c2d_hv_hex(uint64_t v, char out[17]);

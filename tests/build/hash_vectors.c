@@ -7,9 +7,11 @@
  * microcontroller driver (tests/cross/hash_mcu.c); this file is the host's
  * front end.  Standalone on purpose (no GMP, no cmocka).
  * Usage: hash_vectors [COUNT [DUMP]]  prints the inputs' hash, one hash per
- * variant compiled in, and last "hash_vectors: COUNT cases, hash H" (all
- * variants together); DUMP receives the raw bytes hashed, to locate
- * differences (cmp -l).  Bad arguments: a message and exit status 2. */
+ * variant compiled in, and "hash_vectors: COUNT cases, hash H" (all
+ * variants together); then, over the models' own 20,000 cases, their
+ * inputs' hash ("model-inputs"), one hash per model and variant
+ * ("rough-double" ...) and "hash_vectors: N model cases, models hash H".
+ * DUMP receives the raw bytes hashed, to locate differences (cmp -l).  Bad arguments: a message and exit status 2. */
 #include "collide2d.h"
 #include "hash_cases.h"
 
@@ -30,6 +32,7 @@ int main(int argc, char **argv)
 {
     unsigned long count = C2D_HV_DEFAULT_COUNT;
     c2d_hv_hash h;
+    c2d_hv_models_hash m;
     char hex[17];
     int v;
     if (argc > 1) {
@@ -58,6 +61,16 @@ int main(int argc, char **argv)
     }
     c2d_hv_hex(c2d_hv_combined(&h), hex);
     printf("hash_vectors: %lu cases, hash %s\n", count, hex);
+    c2d_hv_run_models(C2D_HV_MODELS_DEFAULT_COUNT, &m, dump != NULL ? to_dump : NULL);
+    c2d_hv_hex(m.inputs, hex);
+    printf("hash_vectors: model-inputs hash %s\n", hex);
+    for (v = 0; v < C2D_HV_MODELS; v++) {
+        if (!m.present[v]) continue;
+        c2d_hv_hex(m.model[v], hex);
+        printf("hash_vectors: %s hash %s\n", c2d_hv_model_name[v], hex);
+    }
+    c2d_hv_hex(c2d_hv_models_combined(&m), hex);
+    printf("hash_vectors: %lu model cases, models hash %s\n", C2D_HV_MODELS_DEFAULT_COUNT, hex);
     if (dump != NULL && fclose(dump) != 0) {
         perror(argv[2]);
         return 2;

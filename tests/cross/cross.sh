@@ -8,7 +8,8 @@
 #   equals the table in DOC.  `write` first rewrites that table (between its
 #   two marker lines) from this run, when every target agrees.
 #   Each COMMAND prints lines "...: VARIANT hash H" (VARIANT: inputs, double,
-#   float, Q16.16), as hash_vectors and hash_mcu do.
+#   float, Q16.16, and for the models model-inputs, rough-double,
+#   rough-float, accel-double, accel-float), as hash_vectors and hash_mcu do.
 # Prints one line per target, then "cross: N passed, N failed".
 set -u
 [ $# -ge 6 ] || { echo "usage: cross.sh check|write OUTDIR DOC NAME DESCRIPTION COMMAND ..." >&2; exit 2; }
@@ -21,6 +22,8 @@ c2d_tally_name=cross
 begin='<!-- hash table: begin (written by `make determinism-table`, tests/cross/cross.sh) -->'
 end='<!-- hash table: end -->'
 variants="inputs double float Q16.16"
+# The models' hashes, over their own case stream (hash_cases.h).
+models="model-inputs rough-double rough-float accel-double accel-float"
 
 # Start every run; each writes OUTDIR/NAME.txt and OUTDIR/NAME.rc.
 names=""
@@ -38,8 +41,10 @@ wait
 hash_of() { # NAME VARIANT: the hash a run printed, or nothing
     sed -n "s/^.*: $2 hash \([0-9a-f]\{16\}\)\$/\1/p" "$out/$1.txt" | tail -n 1
 }
-hashed() { # NAME: the variants a run hashed (inputs excluded)
-    for v in double float Q16.16; do [ -n "$(hash_of "$1" "$v")" ] && printf '%s ' "$v"; done
+hashed() { # NAME: the variants and models a run hashed (inputs excluded)
+    for v in double float Q16.16 rough-double rough-float accel-double accel-float; do
+        [ -n "$(hash_of "$1" "$v")" ] && printf '%s ' "$v"
+    done
 }
 documented() { # VARIANT: its hash in DOC's table
     awk -v b="$begin" -v e="$end" -v v="$1" '$0 == b { on = 1 } $0 == e { on = 0 }
@@ -52,19 +57,20 @@ verdicts=""
 for name in $names; do
     rc=$(cat "$out/$name.rc")
     got=$(hashed "$name")
-    if [ "$rc" -ne 0 ] || [ -z "$got" ] || [ -z "$(hash_of "$name" inputs)" ]; then
+    if [ "$rc" -ne 0 ] || [ -z "$got" ] || [ -z "$(hash_of "$name" inputs)" ] ||
+        [ -z "$(hash_of "$name" model-inputs)" ]; then
         c2d_failed "$name: the run failed (exit status $rc); its output:"
         tail -n 5 "$out/$name.txt" >&2
         verdicts="$verdicts $name=failed"
         continue
     fi
     differ=""
-    for v in inputs $got; do
+    for v in inputs model-inputs $got; do
         [ "$(hash_of "$name" "$v")" = "$(hash_of "$ref" "$v")" ] || differ="$differ $v"
     done
     if [ "$name" = "$ref" ]; then
         c2d_passed
-        echo "cross: $name ($(cat "$out/$name.desc")): $(for v in $variants; do
+        echo "cross: $name ($(cat "$out/$name.desc")): $(for v in $variants $models; do
             printf '%s %s  ' "$v" "$(hash_of "$name" "$v")"; done)"
     elif [ -z "$differ" ]; then
         c2d_passed
@@ -83,9 +89,9 @@ if [ "$mode" = write ]; then
         table=$out/table.md
         {
             echo "$begin"
-            echo "| variant | hash of the 100,000 cases |"
+            echo "| variant | hash of the 100,000 cases (models: of their 20,000) |"
             echo "|---|---|"
-            for v in $variants; do echo "| $v | \`$(hash_of "$ref" "$v")\` |"; done
+            for v in $variants $models; do echo "| $v | \`$(hash_of "$ref" "$v")\` |"; done
             echo
             echo "| target | built and run | variants hashed | result |"
             echo "|---|---|---|---|"
@@ -110,7 +116,7 @@ fi
 
 # The reference against the published table.
 missing="" differ=""
-for v in $(hashed "$ref") inputs; do
+for v in $(hashed "$ref") inputs model-inputs; do
     d=$(documented "$v")
     if [ -z "$d" ]; then missing="$missing $v"; elif [ "$d" != "$(hash_of "$ref" "$v")" ]; then differ="$differ $v"; fi
 done

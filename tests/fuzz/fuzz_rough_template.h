@@ -2,7 +2,7 @@
  * (c2d_collide_rough, c2d_collide_rough_normal) in one floating type.
  * Included after fuzz_template.h (its body helpers) by fuzz_double.c and
  * fuzz_float.c; the type header names, besides fuzz_template.h's,
- *   c2d_num_disk, c2d_num_surface
+ *   C2D_T_DISK, C2D_T_SURFACE
  *   C2D_T_COLLIDE_ROUGH, C2D_T_COLLIDE_ROUGH_NORMAL
  *   C2D_T_READ_FRICTION, C2D_T_READ_BETA   decoders (decode.c)
  *   C2D_T_LIMIT                            the largest finite value
@@ -28,7 +28,7 @@
 
 #define C2D_FUZZ_ROUGH_BOUND_ULP 18
 
-static void c2d_num_read_disk(c2d_fuzz_reader *r, c2d_num_disk *d)
+static void c2d_num_read_disk(c2d_fuzz_reader *r, C2D_T_DISK *d)
 {
     d->pos.x = C2D_T_READ(r);
     d->pos.y = C2D_T_READ(r);
@@ -41,19 +41,19 @@ static void c2d_num_read_disk(c2d_fuzz_reader *r, c2d_num_disk *d)
     if (r->mode == C2D_FUZZ_TAME) d->radius = C2D_T_FABS(d->radius);
 }
 
-static void c2d_num_disk_to_ref(const c2d_num_disk *d, ref_disk *o)
+static void C2D_T_DISK_to_ref(const C2D_T_DISK *d, ref_disk *o)
 {
     o->pos[0] = d->pos.x, o->pos[1] = d->pos.y, o->vel[0] = d->vel.x, o->vel[1] = d->vel.y;
     o->spin = d->spin, o->mass = d->mass, o->radius = d->radius, o->inertia = d->inertia;
 }
 
-static void c2d_num_disk_to_body(const c2d_num_disk *d, c2d_num_body *o)
+static void C2D_T_DISK_to_body(const C2D_T_DISK *d, c2d_num_body *o)
 {
     o->pos = d->pos, o->vel = d->vel, o->mass = d->mass;
 }
 
-static void c2d_num_describe_rough(const c2d_num_disk *a, const c2d_num_disk *b, const c2d_num_vec *n,
-                                   c2d_num_surface s)
+static void c2d_num_describe_rough(const C2D_T_DISK *a, const C2D_T_DISK *b, const c2d_num_vec *n,
+                                   C2D_T_SURFACE s)
 {
     c2d_fuzz_describe("a={{%a,%a},{%a,%a},w=%a,m=%a,r=%a,I=%a} b={{%a,%a},{%a,%a},w=%a,m=%a,r=%a,I=%a} n=%s{%a,%a} "
                       "e=%a mu=%a beta=%a",
@@ -65,16 +65,16 @@ static void c2d_num_describe_rough(const c2d_num_disk *a, const c2d_num_disk *b,
                       (double)s.tangential_restitution);
 }
 
-static c2d_status c2d_num_rough_call(c2d_num_disk *a, c2d_num_disk *b, const c2d_num_vec *n, c2d_num_surface s)
+static c2d_status c2d_num_rough_call(C2D_T_DISK *a, C2D_T_DISK *b, const c2d_num_vec *n, C2D_T_SURFACE s)
 {
     return n ? C2D_T_COLLIDE_ROUGH_NORMAL(a, b, *n, s) : C2D_T_COLLIDE_ROUGH(a, b, s);
 }
 
 /* The fields c2d_collide does not read are valid (the surface's friction
  * and beta included), so the rough status is the smooth one. */
-static int c2d_num_rough_fields_valid(const c2d_num_disk *a, const c2d_num_disk *b, c2d_num_surface s)
+static int c2d_num_rough_fields_valid(const C2D_T_DISK *a, const C2D_T_DISK *b, C2D_T_SURFACE s)
 {
-    const c2d_num_disk *d[2];
+    const C2D_T_DISK *d[2];
     int j;
     d[0] = a, d[1] = b;
     for (j = 0; j < 2; j++)
@@ -85,14 +85,14 @@ static int c2d_num_rough_fields_valid(const c2d_num_disk *a, const c2d_num_disk 
 
 /* friction 0 or beta -1: c2d_collide's status and velocities, bit for
  * bit, the spins untouched. */
-static void c2d_num_check_rough_identity(const c2d_num_disk *a0, const c2d_num_disk *b0, const c2d_num_vec *n,
-                                         c2d_num_surface s, const char *which)
+static void c2d_num_check_rough_identity(const C2D_T_DISK *a0, const C2D_T_DISK *b0, const c2d_num_vec *n,
+                                         C2D_T_SURFACE s, const char *which)
 {
-    c2d_num_disk a = *a0, b = *b0;
+    C2D_T_DISK a = *a0, b = *b0;
     c2d_num_body ba, bb;
     c2d_status rough, smooth;
-    c2d_num_disk_to_body(a0, &ba);
-    c2d_num_disk_to_body(b0, &bb);
+    C2D_T_DISK_to_body(a0, &ba);
+    C2D_T_DISK_to_body(b0, &bb);
     rough = c2d_num_rough_call(&a, &b, n, s);
     smooth = n ? C2D_T_COLLIDE_NORMAL(&ba, &bb, *n, s.restitution) : C2D_T_COLLIDE(&ba, &bb, s.restitution);
     if (!c2d_num_rough_fields_valid(a0, b0, s)) {
@@ -115,14 +115,14 @@ static void c2d_num_check_rough_identity(const c2d_num_disk *a0, const c2d_num_d
  * value, as bounds.c checks c2d_collide's immovable body: like c2d_collide
  * (which the rough contact reproduces bit for bit at mu = 0), an immovable
  * body's velocity of -0 comes back +0. */
-static void c2d_num_check_rough_written(const c2d_num_disk *a0, const c2d_num_disk *b0, const c2d_num_disk *a,
-                                        const c2d_num_disk *b)
+static void c2d_num_check_rough_written(const C2D_T_DISK *a0, const C2D_T_DISK *b0, const C2D_T_DISK *a,
+                                        const C2D_T_DISK *b)
 {
-    const c2d_num_disk *d0[2], *d[2];
+    const C2D_T_DISK *d0[2], *d[2];
     int j;
     d0[0] = a0, d0[1] = b0, d[0] = a, d[1] = b;
     for (j = 0; j < 2; j++) {
-        c2d_num_disk back = *d[j];
+        C2D_T_DISK back = *d[j];
         back.vel = d0[j]->vel, back.spin = d0[j]->spin;
         if (memcmp(&back, d0[j], sizeof back) != 0) c2d_fuzz_fail("OK but %c's position, mass, radius or inertia was written", "ab"[j]);
         if (!isfinite(d[j]->vel.x) || !isfinite(d[j]->vel.y) || !isfinite(d[j]->spin))
@@ -137,7 +137,7 @@ static void c2d_num_check_rough_written(const c2d_num_disk *a0, const c2d_num_di
 
 /* Body j's scale (largest of |vx|, |vy|, |spin r| before and after) and
  * the 18-ulp error its outputs may carry. */
-static long double c2d_num_rough_delta(const c2d_num_disk *d0, const c2d_num_disk *d, long double *scale)
+static long double c2d_num_rough_delta(const C2D_T_DISK *d0, const C2D_T_DISK *d, long double *scale)
 {
     const long double r = d0->radius;
     long double s = c2d_fuzz_maxabs4(d0->vel.x, d0->vel.y, d->vel.x, d->vel.y);
@@ -147,7 +147,7 @@ static long double c2d_num_rough_delta(const c2d_num_disk *d0, const c2d_num_dis
     return C2D_FUZZ_ROUGH_BOUND_ULP * c2d_fuzz_ulp(s, c2d_num_fmt);
 }
 
-static void c2d_num_check_rough_momentum(const c2d_num_disk *d0[2], const c2d_num_disk *d[2], const long double delta[2])
+static void c2d_num_check_rough_momentum(const C2D_T_DISK *d0[2], const C2D_T_DISK *d[2], const long double delta[2])
 {
     int i, j;
     if (isinf(d0[0]->mass) || isinf(d0[1]->mass)) return;
@@ -165,7 +165,7 @@ static void c2d_num_check_rough_momentum(const c2d_num_disk *d0[2], const c2d_nu
 }
 
 /* Twice the kinetic energy, translation (in the frame) and rotation. */
-static void c2d_num_check_rough_energy(const c2d_num_disk *d0[2], const c2d_num_disk *d[2], const long double delta[2],
+static void c2d_num_check_rough_energy(const C2D_T_DISK *d0[2], const C2D_T_DISK *d[2], const long double delta[2],
                                        const long double scale[2])
 {
     long double frame[2] = {0, 0}, ke0 = 0, ke1 = 0, bound = 0;
@@ -195,10 +195,10 @@ static void c2d_num_check_rough_energy(const c2d_num_disk *d0[2], const c2d_num_
         c2d_fuzz_fail("rough energy gained: 2KE %.21Lg -> %.21Lg (+%.3Lg > bound %.3Lg)", ke0, ke1, ke1 - ke0, bound);
 }
 
-static void c2d_num_check_rough_physics(const c2d_num_disk *a0, const c2d_num_disk *b0, const c2d_num_disk *a,
-                                        const c2d_num_disk *b)
+static void c2d_num_check_rough_physics(const C2D_T_DISK *a0, const C2D_T_DISK *b0, const C2D_T_DISK *a,
+                                        const C2D_T_DISK *b)
 {
-    const c2d_num_disk *d0[2], *d[2];
+    const C2D_T_DISK *d0[2], *d[2];
     long double delta[2], scale[2];
     d0[0] = a0, d0[1] = b0, d[0] = a, d[1] = b;
     delta[0] = c2d_num_rough_delta(a0, a, &scale[0]);
@@ -209,8 +209,8 @@ static void c2d_num_check_rough_physics(const c2d_num_disk *a0, const c2d_num_di
 
 /* Status and accuracy against the referee (exact status; outputs in MPFR),
  * RANGE accepted where the referee allows it, as tests/unit/test_rough.c. */
-static void c2d_num_check_rough_referee(const c2d_num_disk *a0, const c2d_num_disk *b0, const c2d_num_vec *n,
-                                        c2d_num_surface s, c2d_status st, const c2d_num_disk *a, const c2d_num_disk *b)
+static void c2d_num_check_rough_referee(const C2D_T_DISK *a0, const C2D_T_DISK *b0, const c2d_num_vec *n,
+                                        C2D_T_SURFACE s, c2d_status st, const C2D_T_DISK *a, const C2D_T_DISK *b)
 {
     static ref_rough_answer ans;
     static int ready;
@@ -218,8 +218,8 @@ static void c2d_num_check_rough_referee(const c2d_num_disk *a0, const c2d_num_di
     c2d_status exact;
     double got[6], err;
     if (!ready) ref_rough_init(&ans), ready = 1;
-    c2d_num_disk_to_ref(a0, &c.a);
-    c2d_num_disk_to_ref(b0, &c.b);
+    C2D_T_DISK_to_ref(a0, &c.a);
+    C2D_T_DISK_to_ref(b0, &c.b);
     c.has_normal = n != NULL;
     c.n[0] = n ? n->x : 0, c.n[1] = n ? n->y : 0;
     c.e = s.restitution, c.mu = s.friction, c.beta = s.tangential_restitution;
@@ -238,9 +238,9 @@ static void c2d_num_check_rough_referee(const c2d_num_disk *a0, const c2d_num_di
 
 static void c2d_num_fuzz_collide_rough(c2d_fuzz_reader *r, int with_normal)
 {
-    c2d_num_disk a, b, a0, b0;
+    C2D_T_DISK a, b, a0, b0;
     c2d_num_vec n;
-    c2d_num_surface s, smooth;
+    C2D_T_SURFACE s, smooth;
     c2d_status st;
     c2d_num_read_disk(r, &a);
     c2d_num_read_disk(r, &b);

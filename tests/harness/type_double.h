@@ -11,8 +11,6 @@ typedef c2d_body c2d_num_body;
 typedef c2d_vec2 c2d_num_vec;
 typedef c2d_pairs c2d_num_pairs;
 typedef c2d_soa c2d_num_soa;
-typedef c2d_disk c2d_num_disk;
-typedef c2d_surface c2d_num_surface;
 
 #define C2D_T_NAME "double"
 #define C2D_T_PREC 53      /* significand bits and smallest normal exponent: the ulp */
@@ -28,14 +26,24 @@ typedef c2d_surface c2d_num_surface;
 #define C2D_T_COLLIDE_NORMAL c2d_collide_normal
 #define C2D_T_TIME_OF_IMPACT c2d_time_of_impact
 #define C2D_T_BATCH c2d_collide_batch
-#define C2D_T_COLLIDE_ROUGH c2d_collide_rough
-#define C2D_T_COLLIDE_ROUGH_NORMAL c2d_collide_rough_normal
-#define C2D_T_TIME_OF_IMPACT_ACCEL c2d_time_of_impact_accel
 
 /* The shared vector table (tests/vectors/vectors.h). */
 #define C2D_T_VECTOR c2d_vector_d
 #define C2D_T_VECTORS c2d_vectors_d
 #define C2D_T_VECTOR_COUNT c2d_vector_count_d
+
+/* The models (tests/vectors/check_models.h and its tables). */
+#define C2D_T_DISK c2d_disk
+#define C2D_T_SURFACE c2d_surface
+#define C2D_T_COLLIDE_ROUGH c2d_collide_rough
+#define C2D_T_COLLIDE_ROUGH_NORMAL c2d_collide_rough_normal
+#define C2D_T_TIME_OF_IMPACT_ACCEL c2d_time_of_impact_accel
+#define C2D_T_ROUGH_VECTOR c2d_rough_vector_d
+#define C2D_T_ROUGH_VECTORS c2d_rough_vectors_d
+#define C2D_T_ROUGH_VECTOR_COUNT c2d_rough_vector_count_d
+#define C2D_T_ACCEL_VECTOR c2d_accel_vector_d
+#define C2D_T_ACCEL_VECTORS c2d_accel_vectors_d
+#define C2D_T_ACCEL_VECTOR_COUNT c2d_accel_vector_count_d
 
 /* The fuzz harness's decoders (tests/fuzz/fuzz.h). */
 #define C2D_T_READ c2d_fuzz_read_double

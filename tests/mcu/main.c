@@ -1,6 +1,8 @@
 /* MCU test harness: runs the library's shared test vectors
- * (tests/vectors/vectors.c, the table the host cmocka tests use, checked by
- * the same code: tests/vectors/check_template.h) on a bare-metal target.
+ * (tests/vectors/vectors.c, the tables the host cmocka tests use, checked by
+ * the same code: tests/vectors/check_template.h, and check_models.h for the
+ * rough-contact and accelerated time-of-impact tables) on a bare-metal
+ * target.
  * Each failure is printed; the last line is "<target>: N passed, N failed"
  * and the exit status (through semihosting, so QEMU's own) is non-zero on
  * any failure.  No C library, no allocation: the platform supplies mcu.h. */
@@ -36,9 +38,13 @@ int main(void)
     c2d_put("\n");
 #ifndef C2D_NO_DOUBLE
     c2d_check_vectors_d(&tally);
+    c2d_check_rough_vectors_d(&tally);
+    c2d_check_accel_vectors_d(&tally);
 #endif
 #ifndef C2D_NO_FLOAT
     c2d_check_vectors_f(&tally);
+    c2d_check_rough_vectors_f(&tally);
+    c2d_check_accel_vectors_f(&tally);
 #endif
 #ifndef C2D_NO_FIXED
     c2d_check_vectors_x(&tally);

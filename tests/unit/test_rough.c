@@ -3,123 +3,10 @@
  * statuses, accuracy against a 4400-bit MPFR referee in ulp of each body's
  * scale, english off a cushion, and equipartition in a rough-disk gas. */
 #include "check.h"
-#include "ref_rough.h"
+#include "cases_rough.h"
 
 #define CASES 20000
 #define BOUND_ULP 18.0 /* c2d_collide's 16 ulp plus 2 (the header's bound) */
-
-static const double kMu[] = {0.05, 0.2, 1.0, 1e6, INFINITY};
-
-static void disk_from(c2d_disk *d, const ref_disk *r)
-{
-    d->pos.x = r->pos[0], d->pos.y = r->pos[1], d->vel.x = r->vel[0], d->vel.y = r->vel[1];
-    d->spin = r->spin, d->mass = r->mass, d->radius = r->radius, d->inertia = r->inertia;
-}
-
-static void diskf_from(c2d_diskf *d, const ref_disk *r)
-{
-    d->pos.x = (float)r->pos[0], d->pos.y = (float)r->pos[1], d->vel.x = (float)r->vel[0];
-    d->vel.y = (float)r->vel[1], d->spin = (float)r->spin, d->mass = (float)r->mass;
-    d->radius = (float)r->radius, d->inertia = (float)r->inertia;
-}
-
-/* A unit-scale contact: radii 0.1..1 touching (to rounding) along a random
- * line, speeds and spin x radius up to 10, inertia k m r^2 with k in
- * [0.1, 1] or INFINITY, restitution, friction and beta all over their range. */
-static void gen_rough(c2d_rng *r, ref_rough_case *c)
-{
-    ref_case base;
-    double ang = c2d_rng_range(r, 0, 6.283185307179586);
-    int i;
-    ref_disk *d[2];
-    gen_plain(r, &base);
-    d[0] = &c->a, d[1] = &c->b;
-    c->a.radius = c2d_rng_range(r, 0.1, 1), c->b.radius = c2d_rng_range(r, 0.1, 1);
-    c->a.pos[0] = base.pa[0], c->a.pos[1] = base.pa[1];
-    c->b.pos[0] = base.pa[0] + (c->a.radius + c->b.radius) * cos(ang);
-    c->b.pos[1] = base.pa[1] + (c->a.radius + c->b.radius) * sin(ang);
-    for (i = 0; i < 2; i++) {
-        c->a.vel[i] = base.va[i], c->b.vel[i] = base.vb[i];
-        c->n[i] = c->b.pos[i] - c->a.pos[i];
-    }
-    c->a.mass = base.ma, c->b.mass = base.mb;
-    for (i = 0; i < 2; i++) {
-        d[i]->spin = c2d_rng_range(r, -10, 10) / d[i]->radius;
-        d[i]->inertia = c2d_rng_next(r) % 8 == 0 ? INFINITY : c2d_rng_range(r, 0.1, 1) * d[i]->mass * d[i]->radius * d[i]->radius;
-    }
-    if (c2d_rng_next(r) % 10 == 0) c->b.mass = INFINITY;
-    c->has_normal = (int)(c2d_rng_next(r) & 1);
-    c->e = base.e;
-    c->mu = kMu[c2d_rng_next(r) % 5];
-    c->beta = c2d_rng_next(r) % 4 == 0 ? 1.0 : c2d_rng_range(r, -1, 1);
-    /* approach more often than not */
-    if ((c->b.vel[0] - c->a.vel[0]) * c->n[0] + (c->b.vel[1] - c->a.vel[1]) * c->n[1] > 0)
-        for (i = 0; i < 2; i++) c->a.vel[i] = -c->a.vel[i], c->b.vel[i] = -c->b.vel[i];
-}
-
-/* The normal part anywhere in the range (gen_extreme), spins and radii too. */
-static void gen_rough_extreme(c2d_rng *r, ref_rough_case *c, int prec, int emin, int emax)
-{
-    ref_case base;
-    int i;
-    gen_extreme(r, &base, prec, emin, emax);
-    for (i = 0; i < 2; i++) {
-        c->a.pos[i] = base.pa[i], c->b.pos[i] = base.pb[i], c->a.vel[i] = base.va[i], c->b.vel[i] = base.vb[i];
-        c->n[i] = base.n[i];
-    }
-    c->a.mass = base.ma, c->b.mass = base.mb, c->has_normal = base.has_normal, c->e = base.e;
-    c->a.spin = gen_magnitude(r, emin - prec + 1, emax - 4, prec);
-    c->b.spin = gen_magnitude(r, emin - prec + 1, emax - 4, prec);
-    c->a.radius = fabs(gen_magnitude(r, emin, emax - 4, prec)) * (c2d_rng_next(r) % 8 != 0);
-    c->b.radius = fabs(gen_magnitude(r, emin, emax - 4, prec)) * (c2d_rng_next(r) % 8 != 0);
-    c->a.inertia = c2d_rng_next(r) % 6 == 0 ? INFINITY : fabs(gen_magnitude(r, emin, emax - 1, prec));
-    c->b.inertia = c2d_rng_next(r) % 6 == 0 ? INFINITY : fabs(gen_magnitude(r, emin, emax - 1, prec));
-    c->mu = kMu[c2d_rng_next(r) % 5];
-    c->beta = c2d_rng_next(r) % 3 == 0 ? 1.0 : (prec < 53 ? (double)(float)c2d_rng_range(r, -1, 1) : c2d_rng_range(r, -1, 1));
-}
-
-static c2d_status run_double(const ref_rough_case *c, double out[6])
-{
-    c2d_disk a, b;
-    c2d_surface s;
-    c2d_vec2 n;
-    c2d_status st;
-    disk_from(&a, &c->a), disk_from(&b, &c->b);
-    s.restitution = c->e, s.friction = c->mu, s.tangential_restitution = c->beta;
-    n.x = c->n[0], n.y = c->n[1];
-    st = c->has_normal ? c2d_collide_rough_normal(&a, &b, n, s) : c2d_collide_rough(&a, &b, s);
-    out[0] = a.vel.x, out[1] = a.vel.y, out[2] = b.vel.x, out[3] = b.vel.y, out[4] = a.spin, out[5] = b.spin;
-    return st;
-}
-
-static c2d_status run_float(const ref_rough_case *c, double out[6])
-{
-    c2d_diskf a, b;
-    c2d_surfacef s;
-    c2d_vec2f n;
-    c2d_status st;
-    diskf_from(&a, &c->a), diskf_from(&b, &c->b);
-    s.restitution = (float)c->e, s.friction = (float)c->mu, s.tangential_restitution = (float)c->beta;
-    n.x = (float)c->n[0], n.y = (float)c->n[1];
-    st = c->has_normal ? c2d_collide_rough_normalf(&a, &b, n, s) : c2d_collide_roughf(&a, &b, s);
-    out[0] = a.vel.x, out[1] = a.vel.y, out[2] = b.vel.x, out[3] = b.vel.y, out[4] = a.spin, out[5] = b.spin;
-    return st;
-}
-
-/* The case as the float call sees it (every input rounded to float). */
-static void round_to_float(ref_rough_case *c)
-{
-    ref_disk *d[2];
-    int i, k;
-    d[0] = &c->a, d[1] = &c->b;
-    for (i = 0; i < 2; i++) {
-        for (k = 0; k < 2; k++) d[i]->pos[k] = (float)d[i]->pos[k], d[i]->vel[k] = (float)d[i]->vel[k];
-        d[i]->spin = (float)d[i]->spin, d[i]->mass = (float)d[i]->mass;
-        d[i]->radius = (float)d[i]->radius, d[i]->inertia = (float)d[i]->inertia;
-        c->n[i] = (float)c->n[i];
-    }
-    c->e = (float)c->e, c->mu = (float)c->mu, c->beta = (float)c->beta;
-}
 
 static void print_case(const ref_rough_case *c)
 {
@@ -146,8 +33,8 @@ static void run_against_referee(int is_float, int extreme, uint64_t seed)
         double got[6], err;
         c2d_status st;
         if (extreme) gen_rough_extreme(&r, &c, prec, emin, emax); else gen_rough(&r, &c);
-        if (is_float) round_to_float(&c);
-        st = is_float ? run_float(&c, got) : run_double(&c, got);
+        if (is_float) rough_case_to_float(&c);
+        st = is_float ? rough_callf(&c, got) : rough_call(&c, got);
         ref_rough(&c, limit, &ans);
         if (st == C2D_RANGE && ans.status == C2D_OK && ans.range_allowed) continue;
         if (st == C2D_OK && ans.status == C2D_RANGE && !ans.range_required) ans.status = C2D_OK;
@@ -228,8 +115,8 @@ static void test_smooth_contacts_are_c2d_collide_bit_for_bit(void **state)
         else if (is_float) gen_rough_extreme(&r, &c, 24, -126, 127);
         else gen_rough_extreme(&r, &c, 53, -1022, 1023);
         if (i % 3 == 0) c.mu = 0; else c.beta = -1;
-        if (is_float) round_to_float(&c);
-        st = is_float ? run_float(&c, got) : run_double(&c, got);
+        if (is_float) rough_case_to_float(&c);
+        st = is_float ? rough_callf(&c, got) : rough_call(&c, got);
         want_st = is_float ? smooth_float(&c, want) : smooth_double(&c, want);
         if (st != want_st) print_case(&c);
         assert_status(st, want_st);
@@ -261,7 +148,7 @@ static void test_momenta_are_conserved_and_energy_never_grows(void **state)
         c.a.inertia = 0.4 * c.a.mass * 0.0625, c.b.inertia = 0.5 * c.b.mass * 0.140625;
         if (i % 3 == 0) c.e = 1, c.beta = 1, c.mu = INFINITY;
         ref_rough_invariants(&c, NULL, before);
-        if (run_double(&c, got) != C2D_OK) continue;
+        if (rough_call(&c, got) != C2D_OK) continue;
         ref_rough_invariants(&c, got, after);
         assert_close(after[1], before[1], 1e-14 * (fabs(c.a.mass * c.a.vel[0]) + fabs(c.b.mass * c.b.vel[0]) + 1));
         assert_close(after[2], before[2], 1e-14 * (fabs(c.a.mass * c.a.vel[1]) + fabs(c.b.mass * c.b.vel[1]) + 1));
@@ -294,7 +181,7 @@ static void test_rolling_contact_stays_accurate_for_the_light_disk(void **state)
         c.b.vel[0] = -1e-3, c.b.vel[1] = speed; /* rolls along a: contact point nearly still */
         c.b.spin = -speed / 0.5 * (1 + 1e-12);
         c.e = 0.9, c.mu = 0.3, c.beta = 0.5;
-        assert_status(run_double(&c, got), C2D_OK);
+        assert_status(rough_call(&c, got), C2D_OK);
         ref_rough(&c, DBL_MAX, &ans);
         assert_true(ref_rough_err(&c, &ans, got, 53, -1022) <= BOUND_ULP);
     }

@@ -78,7 +78,7 @@ static void check_case(ref_toia_in *in, int is_float, toia_tally *k, ref_toia_ou
         assert_true(e <= BOUND_UNITS);
         if (e > k->worst) k->worst = e;
     }
-    if (!toia_acceleration_differs(in) && isinf(in->h)) {
+    if (!toia_accel_differs(in) && isinf(in->h)) {
         k->linear++;
         if (call(in, is_float, 1, &tl) != got && !band) {
             k->linear_differ++;

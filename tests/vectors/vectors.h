@@ -40,6 +40,61 @@ extern const c2d_vector_f c2d_vectors_f[];
 extern const int c2d_vector_count_f;
 #endif
 
+/* The models of friction and spin (c2d_collide_rough, or _normal when
+ * normal_given) and of acceleration (c2d_time_of_impact_accel), double and
+ * float.  A rough disk is {pos.x, pos.y, vel.x, vel.y, spin, mass, radius,
+ * inertia}, the surface s {restitution, friction, tangential_restitution}.
+ * out: {va.x, va.y, vb.x, vb.y, spin a, spin b}; tol[i]: the header's bound
+ * (18 ulp of the body's scale: c2d_collide's 16 plus 2) plus half an ulp of
+ * out[i] (the rounding of the expected value itself), for a spin divided by
+ * its radius (0 for radius 0: the spin cannot change).  For the time of
+ * impact, t within tol: the header's bound (1 unit: ulp(t) + ulp(|d|) / the
+ * approach speed at contact) plus half an ulp of t.  Every tol is rounded
+ * upward into its format.  No time-of-impact case lies in the tie band of
+ * c2d_time_of_impact_accel's contract (an exact tie may: it is decided as
+ * one). */
+#ifndef C2D_NO_DOUBLE
+typedef struct c2d_rough_vector_d {
+    const char *name;
+    int normal_given;
+    double a[8], b[8], n[2], s[3];
+    int status;
+    double out[6], tol[6];
+} c2d_rough_vector_d;
+extern const c2d_rough_vector_d c2d_rough_vectors_d[];
+extern const int c2d_rough_vector_count_d;
+
+typedef struct c2d_accel_vector_d {
+    const char *name;
+    double pa[2], va[2], aa[2], pb[2], vb[2], ab[2], radius_sum, horizon;
+    int status;
+    double t, tol;
+} c2d_accel_vector_d;
+extern const c2d_accel_vector_d c2d_accel_vectors_d[];
+extern const int c2d_accel_vector_count_d;
+#endif
+
+#ifndef C2D_NO_FLOAT
+typedef struct c2d_rough_vector_f {
+    const char *name;
+    int normal_given;
+    float a[8], b[8], n[2], s[3];
+    int status;
+    float out[6], tol[6];
+} c2d_rough_vector_f;
+extern const c2d_rough_vector_f c2d_rough_vectors_f[];
+extern const int c2d_rough_vector_count_f;
+
+typedef struct c2d_accel_vector_f {
+    const char *name;
+    float pa[2], va[2], aa[2], pb[2], vb[2], ab[2], radius_sum, horizon;
+    int status;
+    float t, tol;
+} c2d_accel_vector_f;
+extern const c2d_accel_vector_f c2d_accel_vectors_f[];
+extern const int c2d_accel_vector_count_f;
+#endif
+
 #ifndef C2D_NO_FIXED
 typedef struct c2d_vector_x {
     const char *name;
