@@ -20,6 +20,10 @@ const char kUsage[] =
     "                              the placed balls are on the table\n"
     "  --seed N                    rack order / gas start (default 1)\n"
     "  --headless                  no window (automatic without a display)\n"
+    "  --game practice|8ball       practice: clear the table (the window's default);\n"
+    "                              8ball: two players, WPA-style rules\n"
+    "  --players A,B               8ball: each human or computer (window default\n"
+    "                              human,computer; headless: computer,computer only)\n"
     "headless only:\n"
     "  --shot DEG,MPS[,SIDE,TOP]   cue shot, may repeat, each once the table is at rest:\n"
     "                              angle (0 = +x, counter-clockwise), the cue ball's\n"
@@ -111,7 +115,22 @@ std::string path_value(const std::string &flag, const std::string &v) {
     return v;
 }
 
+// 8-ball plays from the rack of the break scene, its shots chosen by the
+// players: options that set up another table or other shots do not apply.
+void check_game(const Options &o) {
+    if (o.players_given && o.game != GameMode::EightBall) fail("--players only applies to --game 8ball");
+    if (o.game == GameMode::None) return;
+    if (o.config.scene != Scene::Break) fail("--game is played on the break scene's table (drop --scene)");
+    if (!o.config.placements.empty()) fail("--place does not apply to --game (the game starts from the rack)");
+    if (o.game == GameMode::Practice && o.headless) fail("--game practice is played in the window (drop --headless)");
+    if (o.game != GameMode::EightBall) return;
+    for (const std::string &flag : o.headless_only)
+        if (flag != "--json" && flag != "--screenshot")
+            fail(flag + " does not apply to --game 8ball (its shots are chosen by the players)");
+}
+
 void check_consistency(const Options &o) {
+    check_game(o);
     const Scene scene = o.config.scene;
     if (scene == Scene::Gas && !o.shots.empty()) fail("--shot does not apply to --scene gas");
     if (scene == Scene::Gas && !o.config.placements.empty()) fail("--place does not apply to --scene gas");
@@ -164,6 +183,20 @@ Options parse(int argc, char **argv) {
             o.config.placements.push_back(parse_place(value()));
         } else if (flag == "--seed") {
             o.config.seed = parse_unsigned(flag, value());
+        } else if (flag == "--game") {
+            const std::string v = value();
+            if (v == "practice") o.game = GameMode::Practice;
+            else if (v == "8ball") o.game = GameMode::EightBall;
+            else fail("--game: unknown game '" + v + "' (practice or 8ball)");
+        } else if (flag == "--players") {
+            const std::vector<std::string> f = fields(value());
+            if (f.size() != 2) fail("--players: expected two players, e.g. human,computer");
+            for (size_t k = 0; k < 2; ++k) {
+                if (f[k] != "human" && f[k] != "computer")
+                    fail("--players: each player is human or computer, got '" + f[k] + "'");
+                o.computer[k] = f[k] == "computer";
+            }
+            o.players_given = true;
         } else if (flag == "--headless") {
             o.headless = true;
         } else if (flag == "--seconds") {

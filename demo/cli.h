@@ -13,8 +13,15 @@ namespace demo {
 
 extern const char kUsage[];
 
+// --game: none given (today's runs), practice (clear the table, the
+// window's default) or 8-ball; --players: who plays each side of 8-ball.
+enum class GameMode { None, Practice, EightBall };
+
 struct Options {
     SimConfig config;
+    GameMode game = GameMode::None;
+    bool players_given = false;
+    bool computer[2] = {false, true};  // 8-ball players (window default human,computer)
     bool balls_given = false, headless = false, json = false;
     std::vector<Shot> shots;
     double seconds = -1;  // < 0: the scene's default

@@ -159,8 +159,16 @@ void draw_help(Canvas &canvas, const Screen &layout, const std::string &title, c
 void draw_banner(Canvas &canvas, const Screen &layout, const std::string &text) {
     const RectF &t = layout.table;
     const int max_w = static_cast<int>(t.w * 0.8f);
-    const int scale = fit_scale(text, max_w, text_scale(layout) * 2);
-    const std::vector<std::string> lines = wrap(text, max_w, scale);
+    // as large as it goes on at most three lines
+    int scale = text_scale(layout) * 2;
+    std::vector<std::string> lines = wrap(text, max_w, scale);
+    const auto fits = [&]() {
+        if (lines.size() > 3) return false;
+        for (const std::string &l : lines)
+            if (text_width(l, scale) > max_w) return false;
+        return true;
+    };
+    while (scale > 1 && !fits()) lines = wrap(text, max_w, --scale);
     const int line_h = kLineAdvance * scale, h = static_cast<int>(lines.size()) * line_h;
     int widest = 0;
     for (const std::string &l : lines) widest = std::max(widest, text_width(l, scale));

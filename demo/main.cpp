@@ -19,6 +19,7 @@
 
 #include "cli.h"
 #include "cradle.h"
+#include "game.h"
 #include "render.h"
 #include "sim.h"
 
@@ -210,10 +211,10 @@ void print_model(const Simulation &sim) {
     std::printf("}");
 }
 
-void print_balls(const Simulation &sim) {
+void print_balls(const std::vector<demo::Ball> &balls) {
     std::printf("\"balls\":[");
     bool first = true;
-    for (const demo::Ball &b : sim.balls()) {
+    for (const demo::Ball &b : balls) {
         std::printf("%s{\"number\":%d,\"x\":%.17g,\"y\":%.17g,\"vx\":%.17g,\"vy\":%.17g,\"wx\":%.17g,\"wy\":%.17g,"
                     "\"wz\":%.17g,\"state\":\"%s\",\"on_table\":%s}",
                     first ? "" : ",", b.number, b.x, b.y, b.vx, b.vy, b.wx, b.wy, b.wz, demo::motion_name(b.motion),
@@ -252,7 +253,7 @@ void print_json(const Simulation &sim, const Totals &t) {
                 t.momentum_start[1], t.momentum_end[0], t.momentum_end[1]);
     print_model(sim);
     std::printf(",");
-    print_balls(sim);
+    print_balls(sim.balls());
     if (t.cradle) print_cradle(*t.cradle);
     std::printf("}\n");
 }
@@ -357,14 +358,90 @@ std::string joined(const std::vector<std::string> &flags) {
     return s;
 }
 
+// --- 8-ball without a window: two computer players (game.h) ---------------
+
+void print_game_json(const demo::GameRecord &g, const Options &o, const Simulation &table, double wall) {
+    std::printf("{\"scene\":\"break\",\"response\":\"%s\",\"game\":\"8ball\",\"players\":[\"computer\",\"computer\"],"
+                "\"seed\":%llu,\"shots\":[",
+                response_name(o.config.response), static_cast<unsigned long long>(o.config.seed));
+    for (size_t i = 0; i < g.shots.size(); ++i) {
+        const demo::ShotRecord &r = g.shots[i];
+        std::printf("%s{\"player\":%d,\"angle\":%.17g,\"speed\":%.17g,\"side\":%.17g,\"topback\":%.17g,", i ? "," : "",
+                    r.player, r.shot.angle_deg, r.shot.speed, r.shot.side, r.shot.topback);
+        if (r.placed) std::printf("\"ball_in_hand\":[%.17g,%.17g],", r.cue.x, r.cue.y);
+        else std::printf("\"ball_in_hand\":null,");
+        std::printf("\"potted\":[");
+        for (size_t k = 0; k < r.potted.size(); ++k) std::printf("%s%d", k ? "," : "", r.potted[k]);
+        std::printf("],\"foul\":\"%s\",\"keeps_turn\":%s,\"candidates\":%d}", demo::foul_name(r.foul),
+                    r.keeps_turn ? "true" : "false", r.candidates);
+    }
+    std::printf("],\"shot_count\":%zu,\"fouls\":%d,\"groups\":[\"%s\",\"%s\"],\"winner\":", g.shots.size(), g.fouls,
+                demo::group_name(g.groups[0]), demo::group_name(g.groups[1]));
+    if (g.winner >= 0) std::printf("%d", g.winner);
+    else std::printf("null");
+    std::printf(",\"reason\":\"%s\",\"candidates\":%ld,\"sim_seconds\":%.17g,\"wall_seconds\":%.6f,\"think_seconds\":%.6f,",
+                g.reason.c_str(), g.candidates, g.sim_seconds, wall, g.think_seconds);
+    print_model(table);
+    std::printf(",");
+    print_balls(g.balls);
+    std::printf("}\n");
+}
+
+void print_game_summary(const demo::GameRecord &g, double wall) {
+    std::printf("billiards: 8-ball, computer against computer\n");
+    for (size_t i = 0; i < g.shots.size(); ++i) {
+        const demo::ShotRecord &r = g.shots[i];
+        std::string potted;
+        for (int n : r.potted) potted += (potted.empty() ? "" : " ") + std::to_string(n);
+        std::printf("  %3zu  player %d%s  %7.2f deg %5.2f m/s tip %+.2f,%+.2f  potted [%s]%s%s\n", i + 1, r.player + 1,
+                    r.placed ? " (ball in hand)" : "", r.shot.angle_deg, r.shot.speed, r.shot.side, r.shot.topback,
+                    potted.c_str(), r.foul != demo::Foul::None ? "  foul: " : "",
+                    r.foul != demo::Foul::None ? demo::foul_name(r.foul) : "");
+    }
+    if (g.winner >= 0) std::printf("  player %d (%s) wins: %s\n", g.winner + 1, demo::group_name(g.groups[g.winner]), g.reason.c_str());
+    else std::printf("  %s\n", g.reason.c_str());
+    std::printf("  %zu shots, %d fouls; the computer simulated %ld candidate shots in %.3f s (%.0f shots/s, %.1f ms a turn); "
+                "%.1f s of play simulated in %.3f s\n",
+                g.shots.size(), g.fouls, g.candidates, g.think_seconds,
+                static_cast<double>(g.candidates) / std::max(g.think_seconds, 1e-9),
+                1000 * g.think_seconds / static_cast<double>(std::max<size_t>(1, g.shots.size())), g.sim_seconds, wall);
+}
+
+int run_game_headless(const Options &o) {
+    if (o.players_given && !(o.computer[0] && o.computer[1]))
+        throw UsageError{"--players: a human player needs the window; headless, --game 8ball is --players computer,computer"};
+    check_writable(o.screenshot);
+    const auto start = std::chrono::steady_clock::now();
+    const demo::GameRecord g = demo::play_computer_game(o.config, o.config.seed);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    demo::SimConfig final_table = o.config;
+    for (const demo::Ball &b : g.balls)
+        if (b.active) final_table.placements.push_back(demo::Placement{b.number, b.x, b.y});
+    const Simulation table(final_table);
+    if (o.json) print_game_json(g, o, table, wall);
+    else print_game_summary(g, wall);
+    std::string error;
+    if (!o.screenshot.empty() && !demo::screenshot_offscreen(table, o.screenshot, error)) {
+        std::fprintf(stderr, "billiards: screenshot: %s\n", error.c_str());
+        return 1;
+    }
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fprintf(stderr, "billiards: standard output: %s\n", std::strerror(errno ? errno : EIO));
+        return 1;
+    }
+    return 0;
+}
+
 int run(const Options &o) {
     std::string why;
     if (!o.headless && display_named(why)) {
         if (!o.headless_only.empty())
             throw UsageError{joined(o.headless_only) + ": only for a headless run (add --headless)"};
-        if (demo::play_window(o.config, why) == demo::WindowResult::Ok) return 0;
+        if (demo::play_window(o.config, demo::Players{o.game == demo::GameMode::EightBall, {o.computer[0], o.computer[1]}}, why) == demo::WindowResult::Ok) return 0;
     }
     if (!o.headless) std::fprintf(stderr, "billiards: %s; running headless\n", why.c_str());
+    if (o.game == demo::GameMode::EightBall) return run_game_headless(o);
+    if (o.game == demo::GameMode::Practice) throw UsageError{"--game practice is played in the window"};
     for (const std::string *path : {&o.screenshot, &o.screenshot_window, &o.speeds}) check_writable(*path);
     Recorder recorder(o);
     Simulation sim(o.config);

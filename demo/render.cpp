@@ -38,6 +38,7 @@ const char *const kHelp[] = {
     "Right button      cancel the stroke",
     "Arrow keys        tip offset: up follow, down draw, sides english",
     "Click the ball    set the tip offset; C centre; wheel follow/draw",
+    "8-ball: ball in hand - move the mouse, click to put the cue ball down",
     "M mute   H help   F12 screenshot   R rack again   Esc quit",
 };
 
@@ -263,8 +264,8 @@ namespace {
 // orientations, the picture, then a wait for the frame's deadline.
 class Game : public Driver {
 public:
-    Game(const SimConfig &config, Window &window, Audio &audio)
-        : config_(config), window_(window), audio_(audio), frequency_(static_cast<double>(SDL_GetPerformanceFrequency())),
+    Game(const SimConfig &config, const Players &players, Window &window, Audio &audio)
+        : config_(config), match_(config, players), window_(window), audio_(audio), frequency_(static_cast<double>(SDL_GetPerformanceFrequency())),
           deadline_(static_cast<double>(SDL_GetPerformanceCounter()) / frequency_) {}
     void start(const Simulation &sim);
     bool next_frame(Simulation &sim) override;
@@ -272,9 +273,18 @@ public:
     void after_step(const Simulation &sim) override;
 
 private:
-    bool can_shoot(const Simulation &sim) const {
-        return pool(sim) && sim.at_rest() && sim.cue_on_table() && sim.object_balls_left() > 0;
+    // The table is at rest for the next shot (the practice table not cleared,
+    // the game not over).
+    bool table_ready(const Simulation &sim) const {
+        if (!pool(sim) || !sim.at_rest() || !sim.cue_on_table() || match_.shot_running()) return false;
+        return match_.eight_ball() ? !match_.state().over() : sim.object_balls_left() > 0;
     }
+    // A human may aim and shoot.
+    bool can_shoot(const Simulation &sim) const { return table_ready(sim) && !match_.computer_to_play() && !placing_; }
+    void judge_shot(Simulation &sim);
+    void computer_turn(Simulation &sim);
+    void place_at_mouse(Simulation &sim);
+    void new_game(Simulation &sim);
     bool handle_event(Simulation &sim, const SDL_Event &e);
     void handle_key(Simulation &sim, const SDL_Keysym &key);
     void aim_at_mouse(const Simulation &sim);
@@ -284,6 +294,7 @@ private:
     void screenshot(const Canvas &frame);
 
     const SimConfig config_;
+    Match match_;
     Window &window_;
     Audio &audio_;
     const double frequency_;
@@ -300,7 +311,24 @@ private:
     double press_x_ = 0, press_y_ = 0, mouse_x_ = 0, mouse_y_ = 0;  // canvas pixels
     int shots_ = 0, screenshots_ = 0, skipped_ = 0;
     double last_speed_ = 0;
+    bool placing_ = false;     // a human's ball in hand: the cue ball follows the mouse until a click
+    int rest_frames_ = 0;      // frames the table has been at rest
+    int aim_frames_ = -1;      // the computer's shot: frames since it was planned (-1: not yet)
+    Plan plan_;
 };
+
+// The computer waits a moment once the table is at rest, then shows its aim
+// and the cue drawn back for a second before it plays.
+constexpr int kThinkFrames = 30;
+constexpr int kComputerAimFrames = 60;
+
+// The cue ball put at p, at rest.
+void put_cue(Simulation &sim, Point p) {
+    std::vector<Ball> balls = sim.balls();
+    for (Ball &b : balls)
+        if (b.number == 0) b = Ball{p.x, p.y, 0, 0, 0, true};
+    sim.set_balls(balls);
+}
 
 void Game::start(const Simulation &sim) {
     shape_ = table_shape(sim.table());
@@ -324,11 +352,64 @@ bool Game::next_frame(Simulation &sim) {
 // The aim follows the mouse when it moves (and when the table comes to
 // rest), so the fine-aim keys and Shift + mouse keep what they set.
 bool Game::before_step(Simulation &sim, bool) {
+    if (match_.shot_running() && sim.at_rest()) judge_shot(sim);
+    rest_frames_ = sim.at_rest() ? rest_frames_ + 1 : 0;
+    if (match_.computer_to_play() && table_ready(sim)) computer_turn(sim);
+    if (placing_) place_at_mouse(sim);
     const bool ready = can_shoot(sim);
     if (ready && !dragging_ && !dialing_ && (follow_mouse_ || !was_ready_)) aim_at_mouse(sim);
     follow_mouse_ = false;
     was_ready_ = ready;
     return true;
+}
+
+// The shot has come to rest: the rules' verdict, and who plays next.
+void Game::judge_shot(Simulation &sim) {
+    std::vector<Ball> balls = sim.balls();
+    if (match_.shot_ended(sim.table(), balls)) sim.set_balls(balls);
+    placing_ = match_.eight_ball() && match_.state().ball_in_hand && !match_.computer_to_play() && !match_.state().over();
+    aim_frames_ = -1;
+}
+
+void Game::computer_turn(Simulation &sim) {
+    if (rest_frames_ < kThinkFrames) return;
+    if (aim_frames_ < 0) {
+        plan_ = match_.plan(sim.balls());
+        if (plan_.place_cue) put_cue(sim, plan_.cue);
+        aim_.angle = plan_.shot.angle_deg * M_PI / 180;
+        aim_.side = plan_.shot.side;
+        aim_.topback = plan_.shot.topback;
+        aim_frames_ = 0;
+    }
+    aim_.power = std::min(1.0, plan_.shot.speed / kMaxPlaySpeed) * std::min(1.0, 1.5 * aim_frames_ / kComputerAimFrames);
+    if (++aim_frames_ < kComputerAimFrames) return;
+    match_.shot_started(sim.balls());
+    sim.shoot(plan_.shot);
+    last_speed_ = plan_.shot.speed;
+    aim_.power = 0;
+    aim_frames_ = -1;
+    ++shots_;
+}
+
+// Ball in hand: the cue ball goes where the mouse is whenever it may.
+void Game::place_at_mouse(Simulation &sim) {
+    if (!sim.at_rest() || layout_.panel.contains(static_cast<float>(mouse_x_), static_cast<float>(mouse_y_))) return;
+    const Point p{layout_.view.wx(mouse_x_), layout_.view.wy(mouse_y_)};
+    std::vector<Ball> others = sim.balls();
+    if (!cue_placement_ok(sim.table(), others, p.x, p.y)) return;
+    for (const Ball &b : others)
+        if (b.number == 0 && b.active && b.x == p.x && b.y == p.y) return;
+    put_cue(sim, p);
+}
+
+void Game::new_game(Simulation &sim) {
+    sim = Simulation(config_);
+    start(sim);
+    match_.reset();
+    placing_ = false;
+    aim_frames_ = -1;
+    rest_frames_ = 0;
+    if (!pool(sim)) sim.shoot(Shot{0, kMaxPlaySpeed});
 }
 
 void Game::aim_at_mouse(const Simulation &sim) {
@@ -342,6 +423,7 @@ void Game::shoot(Simulation &sim) {
     const double speed = aim_.power * kMaxPlaySpeed;
     aim_.power = 0;
     if (speed < 0.02 || !can_shoot(sim)) return;
+    match_.shot_started(sim.balls());
     sim.shoot(Shot{aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback});
     ++shots_;
     last_speed_ = speed;
@@ -373,7 +455,12 @@ bool Game::handle_event(Simulation &sim, const SDL_Event &e) {
     case SDL_MOUSEBUTTONDOWN:
         mouse_x_ = e.button.x * sx;
         mouse_y_ = e.button.y * sy;
-        if (e.button.button == SDL_BUTTON_LEFT) {
+        if (e.button.button == SDL_BUTTON_LEFT && placing_) {
+            place_at_mouse(sim);
+            const Ball &cue = sim.balls()[0];
+            // put down only where the mouse is (a legal place), not where it last was
+            placing_ = !(cue.active && std::hypot(cue.x - layout_.view.wx(mouse_x_), cue.y - layout_.view.wy(mouse_y_)) < 1e-9);
+        } else if (e.button.button == SDL_BUTTON_LEFT) {
             if (dial_offset(spin_dial(layout_), static_cast<float>(mouse_x_), static_cast<float>(mouse_y_), aim_.side, aim_.topback)) {
                 dialing_ = true;
             } else if (can_shoot(sim) && !layout_.panel.contains(static_cast<float>(mouse_x_), static_cast<float>(mouse_y_))) {
@@ -408,11 +495,7 @@ bool Game::handle_event(Simulation &sim, const SDL_Event &e) {
 void Game::handle_key(Simulation &sim, const SDL_Keysym &key) {
     const double step = 0.05;
     switch (key.sym) {
-    case SDLK_r:
-        sim = Simulation(config_);
-        start(sim);
-        if (!pool(sim)) sim.shoot(Shot{0, kMaxPlaySpeed});
-        break;
+    case SDLK_r: new_game(sim); break;
     case SDLK_h:
     case SDLK_F1: help_ = !help_; break;
     case SDLK_m: audio_.toggle_mute(); break;
@@ -455,14 +538,18 @@ void Game::sound_and_drops(const Simulation &sim) {
 Overlay Game::overlay(const Simulation &sim) const {
     Overlay o;
     o.drops = drops_;
-    o.aiming = can_shoot(sim);
+    o.aiming = can_shoot(sim) || (match_.computer_to_play() && aim_frames_ >= 0 && table_ready(sim));
     o.aim = aim_;
     o.help = help_;
     const int left = sim.object_balls_left();
     char line[160];
-    std::snprintf(line, sizeof line, "Practice: clear the table   Shots %d   Balls left %d", shots_, left);
-    o.panel.lines.emplace_back(line);
-    if (last_speed_ > 0) {
+    if (match_.eight_ball()) {
+        o.panel.lines = match_.status(placing_);
+    } else {
+        std::snprintf(line, sizeof line, "Practice: clear the table   Shots %d   Balls left %d", shots_, left);
+        o.panel.lines.emplace_back(line);
+    }
+    if (last_speed_ > 0 && !match_.eight_ball()) {
         std::snprintf(line, sizeof line, "Last shot %.1f m/s", last_speed_);
         o.panel.lines.emplace_back(line);
     }
@@ -474,7 +561,8 @@ Overlay Game::overlay(const Simulation &sim) const {
     o.panel.max_speed = kMaxPlaySpeed;
     o.panel.side = aim_.side;
     o.panel.topback = aim_.topback;
-    if (left == 0 && sim.at_rest())
+    if (match_.eight_ball()) o.banner = match_.result();
+    else if (left == 0 && sim.at_rest())
         o.banner = "Table cleared in " + std::to_string(shots_) + (shots_ == 1 ? " shot" : " shots") + ". Press R to rack again.";
     return o;
 }
@@ -490,6 +578,7 @@ void Game::screenshot(const Canvas &frame) {
 }
 
 void Game::after_step(const Simulation &sim) {
+    match_.add_events(sim.frame_events());
     if (pool(sim)) {
         sound_and_drops(sim);
         poses_.advance(sim.balls(), kFrameDt);
@@ -511,14 +600,14 @@ void Game::after_step(const Simulation &sim) {
 
 }  // namespace
 
-WindowResult play_window(const SimConfig &config, std::string &error) {
+WindowResult play_window(const SimConfig &config, const Players &players, std::string &error) {
     Simulation sim(config);
     Window w;
     const WindowResult opened = open_window(sim, w, error);
     if (opened != WindowResult::Ok) return opened;
     Audio audio(pool(sim));  // the gas would be a roar: silent
     if (pool(sim) && !audio.available()) std::fprintf(stderr, "billiards: no sound (%s)\n", audio.problem().c_str());
-    Game game(config, w, audio);
+    Game game(config, players, w, audio);
     game.start(sim);
     if (!pool(sim)) sim.shoot(Shot{0, kMaxPlaySpeed});
     run(sim, game);

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "game.h"
 #include "sim.h"
 
 namespace demo {
@@ -24,7 +25,7 @@ WindowResult screenshot_window(const Simulation &sim, const std::string &path, s
 // mouse, press and drag to pull the cue back, release to shoot; spin on the
 // panel's cue-ball diagram or the arrow keys.  Unavailable (with the reason
 // in error) when there is no display or no window/renderer can be made.
-WindowResult play_window(const SimConfig &config, std::string &error);
+WindowResult play_window(const SimConfig &config, const Players &players, std::string &error);
 
 }  // namespace demo
 

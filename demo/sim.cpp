@@ -80,6 +80,8 @@ void Simulation::respot_cue() {
     engine_->place_ball(cue, free_head_spot(table_, balls()));
 }
 
+void Simulation::set_balls(const std::vector<Ball> &balls) { engine_ = make_engine(config_, balls, table_); }
+
 double Simulation::energy() const {
     double e = 0;
     for (const Ball &b : balls()) e += demo::energy(b);

@@ -94,6 +94,9 @@ public:
     bool cue_on_table() const;
     // Puts a pocketed cue ball back on the head spot (or the nearest free spot).
     void respot_cue();
+    // New places for the balls of a table at rest (the same balls in the same
+    // order, each at rest or pocketed): ball in hand, a re-spotted 8.
+    void set_balls(const std::vector<Ball> &balls);
 
     const SimConfig &config() const { return config_; }
     const Table &table() const { return table_; }

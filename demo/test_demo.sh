@@ -240,5 +240,30 @@ status=$?
 [ "$status" = 0 ] || cat "$TMP/err"
 check "window under Xvfb draws the table" $status
 
+# --- 8-ball, computer against computer: a winner by the rules, the same game
+# from the same seed, the shots in the JSON; a human player needs the window
+strip_clock() { sed 's/"wall_seconds":[^,]*,//; s/"think_seconds":[^,]*,//' "$1"; }
+for seed in 1 2 3; do
+    "$BIN" --headless --game 8ball --players computer,computer --seed $seed --json > "$TMP/game$seed.json"
+    winner=$(json_get "$TMP/game$seed.json" winner)
+    echo "    8-ball seed $seed: $(json_get "$TMP/game$seed.json" shot_count) shots, $(json_get "$TMP/game$seed.json" fouls) fouls, winner $winner, $(json_get "$TMP/game$seed.json" reason)"
+    { [ "$winner" = 0 ] || [ "$winner" = 1 ]; } && grep -q '"number":8,[^}]*"on_table":false' "$TMP/game$seed.json" &&
+        grep -q '"shots":\[{"player":0,"angle":[^,]*,"speed":[^,]*,"side":[^,]*,"topback":[^,]*,"ball_in_hand":null,"potted":\[[0-9,]*\],"foul":"[a-z_]*"' "$TMP/game$seed.json"
+    check "8-ball seed $seed: runs to a winner on the 8, shots in the JSON" $?
+done
+"$BIN" --headless --game 8ball --seed 1 --json > "$TMP/again.json"
+[ "$(strip_clock "$TMP/game1.json")" = "$(strip_clock "$TMP/again.json")" ]; check "8-ball: same seed, same JSON" $?
+[ "$(strip_clock "$TMP/game1.json")" != "$(strip_clock "$TMP/game2.json")" ]; check "8-ball: another seed, another game" $?
+bad --game 8ball --players human,computer
+bad --game 8ball --players computer
+bad --game 8ball --players computer,robot
+bad --game chess
+bad --players computer,computer
+bad --game 8ball --shot 0,3
+bad --game 8ball --place 0,1,0.6
+bad --game 8ball --scene elastic
+bad --game 8ball --seconds 10
+bad --game practice
+
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]

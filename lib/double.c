@@ -64,9 +64,11 @@ c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution)
     return c2d_real_collide(a, b, restitution);
 }
 
+/* The normal as two scalars (real_collide.h, c2d_collide_normal_front):
+ * by address, gcc passes the 16-byte c2d_vec2 through memory. */
 c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution)
 {
-    return c2d_real_collide_normal(a, b, &normal, restitution);
+    return c2d_collide_normal_front(a, b, normal.x, normal.y, restitution);
 }
 
 c2d_status c2d_time_of_impact(const c2d_body *a, const c2d_body *b, double radius_sum, double *t)

@@ -65,6 +65,9 @@ c2d_status c2d_collidef(c2d_bodyf *a, c2d_bodyf *b, float restitution)
     return c2d_real_collide(a, b, restitution);
 }
 
+/* The normal by address, unlike double.c: gcc inlines the whole front end
+ * here, and the 8-byte c2d_vec2f forwards from the store to its loads;
+ * given as two floats, gcc unpacks them through an integer register. */
 c2d_status c2d_collide_normalf(c2d_bodyf *a, c2d_bodyf *b, c2d_vec2f normal, float restitution)
 {
     return c2d_real_collide_normal(a, b, &normal, restitution);

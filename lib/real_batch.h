@@ -7,8 +7,9 @@
  *   in a loop with a fixed trip count and no branches, which the compiler
  *   vectorises: the test and the arithmetic it accepts are the very
  *   operations of c2d_quick, so an accepted lane has the scalar call's bits,
- *   and a separating lane its status.  Every other lane (walls, cancelling
- *   d, anything outside the window, bad input) takes the whole scalar call.
+ *   and a separating lane its status; a wall takes c2d_quick's mass pair by
+ *   a bit-mask select.  Every other lane (cancelling d, the axes, anything
+ *   outside the window, bad input) takes the whole scalar call.
  *   An accepted lane's velocities are committed with a bit-mask select that
  *   leaves the others untouched, so the scalar call sees them as they were.
  *   A partial block (the tail) and a bad restitution take the scalar call.
@@ -63,8 +64,7 @@ static inline void c2d_batch_commit(c2d_real *v, const c2d_real *x, const c2d_re
 
 /* The front end over one full block from `base`: each lane's C2D_LANE_*,
  * and the accepted lanes' velocities committed in place.  c2d_quick's
- * arithmetic with & in place of its branches (both masses finite: walls go
- * to the scalar call).  Results go to local arrays first, so nothing the
+ * arithmetic with & in place of its branches, walls included.  Results go to local arrays first, so nothing the
  * main loop writes can alias what it reads; each commit loop then touches
  * one array. */
 #ifdef C2D_DISPATCH
@@ -89,14 +89,26 @@ static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, 
         const c2d_real nn = nx * nx + ny * ny;
         const c2d_real geometry = k < nn ? k : nn, lighter = ma[j] < mb[j] ? ma[j] : mb[j];
         const c2d_real least = geometry < lighter ? geometry : lighter;
+        /* A wall (one mass INFINITY) takes c2d_finish's mass pair, (0, 1) or
+         * (1, 0): fa + fb = 1.  With `lighter` finite (which refuses two
+         * immovable bodies, and NaN: then lighter is NaN or INFINITY) the
+         * window below then implies c2d_quick_wall's, since the other mass is
+         * `lighter` and (k + nn) + 1 <= W implies k + nn <= W; without a wall
+         * it is c2d_quick's own.  So the kernel accepts only what c2d_quick
+         * accepts, with the same fa and fb. */
+        const c2d_real_bits ia = (c2d_real_bits)(ma[j] > C2D_R_MAX), ib = (c2d_real_bits)(mb[j] > C2D_R_MAX);
+        const c2d_real_bits movable = (c2d_real_bits)0 - ((ia | ib) ^ 1u);
+        const c2d_real fa = c2d_pick(ma[j], movable, (c2d_real_bits)0 - (ia & (ib ^ 1u)));
+        const c2d_real fb = c2d_pick(mb[j], movable, (c2d_real_bits)0 - (ib & (ia ^ 1u)));
         /* Truth values in the floating type's width (c2d_real_bits), combined
          * with & and |: no branch, and no narrowing of a comparison's mask. */
-        const c2d_real_bits window = (c2d_real_bits)((k + nn) + (ma[j] + mb[j]) <= hi) & (c2d_real_bits)(least >= lo) &
-                                     (c2d_real_bits)(nx != 0) & (c2d_real_bits)(ny != 0); /* axes: scalar */
+        const c2d_real_bits window = (c2d_real_bits)((k + nn) + (fa + fb) <= hi) & (c2d_real_bits)(least >= lo) &
+                                     (c2d_real_bits)(lighter <= C2D_R_MAX) & (c2d_real_bits)(nx != 0) &
+                                     (c2d_real_bits)(ny != 0); /* axes: scalar */
         const c2d_real_bits ok = window & (c2d_real_bits)(4 * d + k <= 0);
-        const c2d_real den = nn * (ma[j] + mb[j]);
+        const c2d_real den = nn * (fa + fb);
         const c2d_real c = e1 * d / den;
-        const c2d_real la = c * mb[j], lb = c * ma[j];
+        const c2d_real la = c * fb, lb = c * fa;
         out[0][j] = vax[j] + la * nx;
         out[1][j] = vay[j] + la * ny;
         out[2][j] = vbx[j] - lb * nx;

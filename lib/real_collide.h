@@ -173,18 +173,6 @@ __attribute__((target("arch=x86-64-v3"))) C2D_COLD c2d_status c2d_cancelling_fus
 }
 #endif
 
-/* Tier 2 for the front end: with FMA when the CPU has it (chosen at run
- * time under C2D_DISPATCH), Dekker's split otherwise; the same bits. */
-C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *nh,
-                                         const c2d_real_vec *nl, c2d_real restitution)
-{
-#ifdef C2D_R_FUSED
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
-        return c2d_cancelling_fused(a, b, nh, nl, restitution);
-#endif
-    return c2d_cancelling_as(a, b, nh, nl, restitution, 0);
-}
-
 /* What c2d_collide's front end could not decide: the fast path, then the
  * tier its verdict names.  Out of line, so the front end stays small. */
 C2D_COLD c2d_status c2d_collide_fallback(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
@@ -198,6 +186,34 @@ C2D_COLD c2d_status c2d_collide_fallback(c2d_real_body *a, c2d_real_body *b, c2d
     if (v == C2D_VERDICT_GENERAL) return c2d_collide_slow(a, b, restitution);
     if (v == C2D_VERDICT_OK) c2d_store(a, b, out);
     return c2d_verdict_status(v);
+}
+
+/* Tier 2 for the front end: with FMA when the CPU has it (chosen at run
+ * time under C2D_DISPATCH), Dekker's split otherwise; the same bits.  The
+ * normal is the given one (nl = 0), or with `given` NULL the exact position
+ * difference, formed here so that the front end need not keep the
+ * positions: where c2d_collide_slow would take another route (positions so
+ * large that the difference may overflow), the fallback takes the pair. */
+C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *given,
+                                         c2d_real restitution)
+{
+    c2d_real_vec nh, nl;
+    if (given != NULL) {
+        nh.x = given->x; /* field by field: a struct copy may become a memcpy call */
+        nh.y = given->y;
+        nl.x = 0;
+        nl.y = 0;
+    } else {
+        if (!(c2d_abs(a->pos.x) + c2d_abs(a->pos.y) + c2d_abs(b->pos.x) + c2d_abs(b->pos.y) <
+              c2d_pow2(C2D_R_EMAX - 2)))
+            return c2d_collide_fallback(a, b, restitution);
+        c2d_exact_normal(a, b, &nh, &nl);
+    }
+#ifdef C2D_R_FUSED
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+        return c2d_cancelling_fused(a, b, &nh, &nl, restitution);
+#endif
+    return c2d_cancelling_as(a, b, &nh, &nl, restitution, 0);
 }
 
 /* c2d_collide: the input-only front end (real_fast.h), else the fallback. */
@@ -219,14 +235,8 @@ static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2
         const c2d_real pa = on_y != 0 ? a->pos.y : a->pos.x, pb = on_y != 0 ? b->pos.y : b->pos.x;
         return c2d_axis_impact(a, b, NULL, on_y, pb > pa ? 1 : (pb < pa ? -1 : 0), restitution);
     }
-    /* A valid pair whose d cancels: where the fast path would send it, unless
-     * the positions are so large that c2d_collide_slow takes another route. */
-    if (v == C2D_VERDICT_ACCURATE && c2d_abs(a->pos.x) + c2d_abs(a->pos.y) + c2d_abs(b->pos.x) + c2d_abs(b->pos.y) <
-                                         c2d_pow2(C2D_R_EMAX - 2)) {
-        c2d_real_vec nh, nl;
-        c2d_exact_normal(a, b, &nh, &nl);
-        return c2d_quick_cancelling(a, b, &nh, &nl, restitution);
-    }
+    /* A valid pair whose d cancels: where the fast path would send it. */
+    if (v == C2D_VERDICT_ACCURATE) return c2d_quick_cancelling(a, b, NULL, restitution);
     return c2d_collide_fallback(a, b, restitution);
 }
 
@@ -262,34 +272,46 @@ C2D_COLD c2d_status c2d_collide_normal_fallback(c2d_real_body *a, c2d_real_body 
     return c2d_verdict_status(v);
 }
 
-/* c2d_collide_normal: positions are only validated. */
-static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *normal,
-                                                 c2d_real restitution)
+/* c2d_collide_normal: positions are only validated.  The normal comes as
+ * its two components, so the front end keeps it in registers whether or not
+ * the compiler inlines it: given as a pointer to the public function's
+ * by-value c2d_vec2, gcc 12 split the front end off (.part.0) and passed the
+ * normal through memory, stored as two 8-byte halves and reloaded as one
+ * 16-byte vector, which the store buffer cannot forward (some 10 cycles on
+ * the critical path).  Only the out-of-line tiers take it by address, each
+ * from a copy made on its own branch. */
+static inline c2d_status c2d_collide_normal_front(c2d_real_body *a, c2d_real_body *b, c2d_real nx, c2d_real ny,
+                                                  c2d_real restitution)
 {
     c2d_real out[4];
+    c2d_real_vec n;
     c2d_pair p;
     c2d_verdict v;
     if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y)) return C2D_INVALID;
-    c2d_pair_of(&p, a, b, normal->x, normal->y);
+    c2d_pair_of(&p, a, b, nx, ny);
     v = a == b ? C2D_VERDICT_GENERAL : c2d_quick(&p, 1 + restitution, out);
     if (v == C2D_VERDICT_OK) {
         c2d_store(a, b, out);
         return C2D_OK;
     }
     if (v == C2D_VERDICT_SEPARATING) return C2D_SEPARATING;
+    n.x = nx;
+    n.y = ny;
     if (v == C2D_VERDICT_AXIS) {
-        const int on_y = normal->x == 0;
-        const c2d_real ni = on_y != 0 ? normal->y : normal->x;
-        return c2d_axis_impact(a, b, normal, on_y, ni > 0 ? 1 : (ni < 0 ? -1 : 0), restitution);
+        const int on_y = nx == 0;
+        const c2d_real ni = on_y != 0 ? ny : nx;
+        return c2d_axis_impact(a, b, &n, on_y, ni > 0 ? 1 : (ni < 0 ? -1 : 0), restitution);
     }
-    if (v == C2D_VERDICT_ACCURATE) {
-        c2d_real_vec zero;
-        zero.x = 0;
-        zero.y = 0;
-        return c2d_quick_cancelling(a, b, normal, &zero, restitution);
-    }
-    return c2d_collide_normal_fallback(a, b, normal, restitution);
+    if (v == C2D_VERDICT_ACCURATE) return c2d_quick_cancelling(a, b, &n, restitution);
+    return c2d_collide_normal_fallback(a, b, &n, restitution);
+}
+
+/* The same for a normal given by address (c2d_collide_rough_normal). */
+static inline c2d_status c2d_real_collide_normal(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *normal,
+                                                 c2d_real restitution)
+{
+    return c2d_collide_normal_front(a, b, normal->x, normal->y, restitution);
 }
 
 #endif /* C2D_REAL_COLLIDE_H */

@@ -122,6 +122,80 @@ static void test_float_batch_is_bit_identical_to_scalar_calls(void **state)
     assert_lanes_agree(&check, done);
 }
 
+/* Walls (one mass INFINITY) run in the batch's kernel: plain scenes with
+ * a or b immovable, and every fifth lane's other mass at an edge of the
+ * kernel's window or outside it (2^-W and just below, huge but finite, the
+ * largest finite, NaN, INFINITY: two walls, negative).  Each lane must be
+ * the scalar call bit for bit, and most must be resolved. */
+static double wall_partner(c2d_rng *r, double m, double lo, double big, double max)
+{
+    const double edges[8] = {lo, lo * (1 - 0x1p-20), big, max, NAN, INFINITY, -1, 0};
+    return c2d_rng_next(r) % 5 == 0 ? edges[c2d_rng_next(r) % 8] : m;
+}
+
+static void wall_cases(ref_case *cs, uint64_t seed, double lo, double big, double max)
+{
+    c2d_rng r;
+    int i;
+    r.s = seed;
+    for (i = 0; i < N; i++) {
+        ref_case *c = &cs[i];
+        gen_plain(&r, c);
+        if (c2d_rng_next(&r) % 2) {
+            c->mb = INFINITY;
+            c->ma = wall_partner(&r, c->ma, lo, big, max);
+        } else {
+            c->ma = INFINITY;
+            c->mb = wall_partner(&r, c->mb, lo, big, max);
+        }
+    }
+}
+
+static void test_walls_in_the_batch_are_the_scalar_call(void **state)
+{
+    static ref_case cs[N];
+    static float blockf[C2D_SOA_FIELDS * N];
+    const c2d_soa s = c2d_soa_in(block, N, status);
+    const c2d_pairs p = c2d_soa_pairs(&s);
+    const c2d_soaf sf = c2d_soa_inf(blockf, N, status);
+    const c2d_pairsf pf = c2d_soa_pairsf(&sf);
+    c2d_batch_check check = {0, 0, 0}, checkf = {0, 0, 0};
+    size_t done, donef, i;
+    (void)state;
+    wall_cases(cs, 407, 0x1p-200, 1e250, DBL_MAX);
+    for (i = 0; i < N; i++) {
+        c2d_body a, b;
+        case_to_bodies(&cs[i], &a, &b);
+        c2d_soa_put(&s, i, &a, &b);
+    }
+    done = c2d_collide_batch(&p, N, 0.8, s.status);
+    for (i = 0; i < N; i++) {
+        c2d_body a, b;
+        c2d_status want;
+        case_to_bodies(&cs[i], &a, &b);
+        want = c2d_collide(&a, &b, 0.8);
+        c2d_batch_check_lane(&check, &s, i, want, &a, &b);
+    }
+    assert_lanes_agree(&check, done);
+    assert_true(done > N / 4); /* the family does hold resolved walls */
+    wall_cases(cs, 408, 0x1p-20, 1e30, FLT_MAX);
+    for (i = 0; i < N; i++) {
+        c2d_bodyf a, b;
+        case_to_bodiesf(&cs[i], &a, &b);
+        c2d_soa_putf(&sf, i, &a, &b);
+    }
+    donef = c2d_collide_batchf(&pf, N, 0.8f, sf.status);
+    for (i = 0; i < N; i++) {
+        c2d_bodyf a, b;
+        c2d_status want;
+        case_to_bodiesf(&cs[i], &a, &b);
+        want = c2d_collidef(&a, &b, 0.8f);
+        c2d_batch_check_lanef(&checkf, &sf, i, want, &a, &b);
+    }
+    assert_lanes_agree(&checkf, donef);
+    assert_true(donef > N / 4); /* in float too */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -129,6 +203,7 @@ int main(void)
         cmocka_unit_test(test_batch_with_invalid_restitution_refuses_every_pair),
         cmocka_unit_test(test_batch_without_status_array_and_tiny_counts),
         cmocka_unit_test(test_float_batch_is_bit_identical_to_scalar_calls),
+        cmocka_unit_test(test_walls_in_the_batch_are_the_scalar_call),
     };
     return cmocka_run_group_tests_name("batch", tests, NULL, NULL);
 }
