@@ -144,3 +144,60 @@ c2d_fixed c2d_fuzz_read_restitutionx(c2d_fuzz_reader *r)
     if (tag % 4 == 3) return 0;
     return c2d_fuzz_read_fixed(r);
 }
+
+/* The rough contact's surface.  Friction: tame a byte (0: none, 255:
+ * INFINITY, else k/64), mixed a tag choosing raw bits, that byte, 0 or
+ * INFINITY (the identities and the never-sliding contact come often).
+ * beta: tame a byte mapped onto [-1, 1] with both ends exact, mixed raw
+ * bits, that byte, 1 or -1. */
+double c2d_fuzz_read_friction(c2d_fuzz_reader *r)
+{
+    uint8_t k;
+    if (r->mode == C2D_FUZZ_RAW) return c2d_fuzz_read_double(r);
+    if (r->mode == C2D_FUZZ_MIXED) {
+        const uint8_t tag = c2d_fuzz_read_byte(r);
+        if (tag % 4 == 0) return c2d_fuzz_read_double(r);
+        if (tag % 4 == 2) return 0.0;
+        if (tag % 4 == 3) return INFINITY;
+    }
+    k = c2d_fuzz_read_byte(r);
+    return k == 255 ? INFINITY : k / 64.0;
+}
+
+double c2d_fuzz_read_beta(c2d_fuzz_reader *r)
+{
+    if (r->mode == C2D_FUZZ_RAW) return c2d_fuzz_read_double(r);
+    if (r->mode == C2D_FUZZ_MIXED) {
+        const uint8_t tag = c2d_fuzz_read_byte(r);
+        if (tag % 4 == 0) return c2d_fuzz_read_double(r);
+        if (tag % 4 == 2) return 1.0;
+        if (tag % 4 == 3) return -1.0;
+    }
+    return c2d_fuzz_read_byte(r) * 2 / 255.0 - 1.0;
+}
+
+/* The time of impact's horizon: INFINITY often (a tag byte's low bit in tame
+ * mode, a quarter of the tags in mixed mode), else a length (tame: >= 0). */
+double c2d_fuzz_read_horizon(c2d_fuzz_reader *r)
+{
+    uint8_t tag;
+    if (r->mode == C2D_FUZZ_RAW) return c2d_fuzz_read_double(r);
+    tag = c2d_fuzz_read_byte(r);
+    if (r->mode == C2D_FUZZ_TAME) return tag % 2 == 0 ? INFINITY : fabs(c2d_fuzz_read_double(r));
+    return tag % 4 == 0 ? INFINITY : c2d_fuzz_read_double(r);
+}
+
+float c2d_fuzz_read_frictionf(c2d_fuzz_reader *r)
+{
+    return r->mode == C2D_FUZZ_RAW ? c2d_fuzz_read_float(r) : (float)c2d_fuzz_read_friction(r);
+}
+
+float c2d_fuzz_read_betaf(c2d_fuzz_reader *r)
+{
+    return r->mode == C2D_FUZZ_RAW ? c2d_fuzz_read_float(r) : (float)c2d_fuzz_read_beta(r);
+}
+
+float c2d_fuzz_read_horizonf(c2d_fuzz_reader *r)
+{
+    return r->mode == C2D_FUZZ_RAW ? c2d_fuzz_read_float(r) : (float)c2d_fuzz_read_horizon(r);
+}

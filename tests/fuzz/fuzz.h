@@ -4,7 +4,10 @@
  *   decode.c           the input bytes decoded into arguments
  *   bounds.c           the bounds the documented accuracy implies
  *   fuzz_template.h    the checks of one floating type, instantiated by
- *                      fuzz_double.c and fuzz_float.c (as lib/ does)
+ *                      fuzz_double.c and fuzz_float.c (as lib/ does);
+ *                      fuzz_rough_template.h and fuzz_accel_template.h
+ *                      likewise for the rough contact and the time of
+ *                      impact under acceleration
  *   fuzz_fixed.c       the Q16.16 checks */
 #ifndef C2D_FUZZ_H
 #define C2D_FUZZ_H
@@ -28,6 +31,12 @@ enum {
     C2D_FUZZ_TOIX,
     C2D_FUZZ_BATCH,
     C2D_FUZZ_BATCHF,
+    C2D_FUZZ_ROUGH,
+    C2D_FUZZ_ROUGH_NORMAL,
+    C2D_FUZZ_TOI_ACCEL,
+    C2D_FUZZ_ROUGHF,
+    C2D_FUZZ_ROUGH_NORMALF,
+    C2D_FUZZ_TOI_ACCELF,
     C2D_FUZZ_ENTRIES
 };
 
@@ -42,6 +51,8 @@ void c2d_fuzz_fail(const char *fmt, ...);
 /* Records the decoded arguments for the report (e/r: restitution or radius). */
 void c2d_fuzz_describe_d(const c2d_body *a, const c2d_body *b, double nx, double ny, double e);
 void c2d_fuzz_describe_x(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed nx, c2d_fixed ny, c2d_fixed e);
+/* Records any text as the decoded arguments. */
+void c2d_fuzz_describe(const char *fmt, ...);
 /* The status is one of the enum's values and has a name. */
 void c2d_fuzz_check_status(c2d_status s);
 /* n bytes unchanged by a call that returned s. */
@@ -65,6 +76,12 @@ float c2d_fuzz_read_restitutionf(c2d_fuzz_reader *r);
 c2d_fixed c2d_fuzz_read_fixed(c2d_fuzz_reader *r);
 c2d_fixed c2d_fuzz_read_massx(c2d_fuzz_reader *r);
 c2d_fixed c2d_fuzz_read_restitutionx(c2d_fuzz_reader *r);
+double c2d_fuzz_read_friction(c2d_fuzz_reader *r);
+double c2d_fuzz_read_beta(c2d_fuzz_reader *r);
+double c2d_fuzz_read_horizon(c2d_fuzz_reader *r);
+float c2d_fuzz_read_frictionf(c2d_fuzz_reader *r);
+float c2d_fuzz_read_betaf(c2d_fuzz_reader *r);
+float c2d_fuzz_read_horizonf(c2d_fuzz_reader *r);
 
 /* --------------------------------------------------------- bounds (bounds.c) */
 
@@ -101,6 +118,10 @@ void c2d_fuzz_time_of_impactf(c2d_fuzz_reader *r);
 void c2d_fuzz_batchf(c2d_fuzz_reader *r, int flags);
 void c2d_fuzz_collidex(c2d_fuzz_reader *r, int with_normal);
 void c2d_fuzz_time_of_impactx(c2d_fuzz_reader *r);
+void c2d_fuzz_collide_rough(c2d_fuzz_reader *r, int with_normal);
+void c2d_fuzz_time_of_impact_accel(c2d_fuzz_reader *r);
+void c2d_fuzz_collide_roughf(c2d_fuzz_reader *r, int with_normal);
+void c2d_fuzz_time_of_impact_accelf(c2d_fuzz_reader *r);
 
 /* The double answer the float and Q16.16 checks compare with
  * (fuzz_double.c): the call made and checked as c2d_fuzz_collide does

@@ -11,11 +11,17 @@
 #                      fixed seed (FUZZ_RUNS executions); part of `make test`
 #   make fuzz-seeds    rewrite the hand-made seeds (tests/fuzz/make_seeds.c)
 # The libFuzzer build is always sanitised: libFuzzer, ASan and UBSan need
-# clang, hence clang-14 here whatever CC is.
+# clang, hence clang-14 here whatever CC is.  Both builds link the exact
+# referee (referee/, GMP + MPFR) the harness checks statuses and accuracy
+# against; under libFuzzer it is sanitised but not coverage-instrumented, so
+# the corpus grows on the library's paths and the harness's, not the referee's.
 
 FUZZ_SECONDS ?= 60
-FUZZ_RUNS ?= 200000
-FUZZ_DEPS := clang-14 libclang-rt-14-dev
+# The referee checks cost about a millisecond per execution on average (the
+# time of impact under acceleration most): ~800 executions/s on an idle core,
+# ~280 on a loaded one, so the smoke run takes ~25 s (60 s at most).
+FUZZ_RUNS ?= 20000
+FUZZ_DEPS := clang-14 libclang-rt-14-dev libgmp-dev libmpfr-dev
 FUZZ_CLANG := clang-14
 FUZZ_DIR := $(B)/fuzz
 FUZZ_BIN := $(FUZZ_DIR)/fuzz_collide2d
@@ -25,11 +31,15 @@ FUZZ_REPLAY := $(FUZZ_DIR)/replay
 # the shared test helper (tests/harness/) for the batch arrays and checks.
 FUZZ_SRC := $(addprefix tests/fuzz/,fuzz_collide2d.c decode.c bounds.c fuzz_double.c fuzz_float.c fuzz_fixed.c) \
   tests/harness/harness.c
-FUZZ_HDR := $(wildcard tests/fuzz/*.h) $(HARNESS_HDR)
+FUZZ_REF_SRC := referee/referee.c referee/ref_rough.c referee/ref_toi_accel.c referee/cases_toi_accel.c
+FUZZ_HDR := $(wildcard tests/fuzz/*.h referee/*.h) $(HARNESS_HDR)
 FUZZ_CORPUS := tests/fuzz/corpus
-FUZZ_INC := -Iinclude -Itests/harness -Itests/fuzz
-FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off $(FUZZ_INC) \
-  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_INC := -Iinclude -Itests/harness -Itests/fuzz -Ireferee
+FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_CFLAGS := -g -O2 -std=c99 $(WARN) -ffp-contract=off $(FUZZ_INC) -fsanitize=fuzzer $(FUZZ_SAN)
+FUZZ_REF_OBJ := $(patsubst referee/%.c,$(FUZZ_DIR)/ref/%.o,$(FUZZ_REF_SRC))
+FUZZ_REPLAY_REF_OBJ := $(patsubst referee/%.c,$(FUZZ_DIR)/replay-ref/%.o,$(FUZZ_REF_SRC))
+FUZZ_LIBS := -lmpfr -lgmp -lm
 
 .PHONY: fuzz-deps fuzz test-fuzz fuzz-seeds
 
@@ -37,13 +47,23 @@ fuzz-deps:
 	@sh scripts/deps.sh $(FUZZ_DEPS)
 
 # c2d_put (the helper's output, for the replay's closing line) goes to stdout.
-$(FUZZ_BIN): $(FUZZ_SRC) $(FUZZ_HDR) $(LIB_SRC) $(LIB_DEPS) | fuzz-deps
+$(FUZZ_DIR)/ref/%.o: referee/%.c $(wildcard referee/*.h) $(LIB_HDR) | fuzz-deps
 	@mkdir -p $(@D)
-	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) -lm
+	$(FUZZ_CLANG) -g -O2 -std=c99 $(WARN) -Wno-conversion -ffp-contract=off $(FUZZ_INC) $(FUZZ_SAN) -c -o $@ $<
 
-$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(FUZZ_HDR) $(LIB_SRC) $(LIB_DEPS)
+$(FUZZ_BIN): $(FUZZ_SRC) $(FUZZ_HDR) $(FUZZ_REF_OBJ) $(LIB_SRC) $(LIB_DEPS) | fuzz-deps
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) $(FUZZ_INC) -o $@ tests/fuzz/replay.c $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) -lm
+	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) $(FUZZ_REF_OBJ) $(FUZZ_LIBS)
+
+# The referee as the unit tests build it (-Wno-conversion: GMP's types).
+$(FUZZ_DIR)/replay-ref/%.o: referee/%.c $(wildcard referee/*.h) $(LIB_HDR) | fuzz-deps
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Wno-conversion $(FUZZ_INC) -c -o $@ $<
+
+$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(FUZZ_HDR) $(FUZZ_REPLAY_REF_OBJ) $(LIB_SRC) $(LIB_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) $(FUZZ_INC) -o $@ tests/fuzz/replay.c $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) \
+	  $(FUZZ_REPLAY_REF_OBJ) $(FUZZ_LIBS)
 
 $(FUZZ_DIR)/make_seeds: tests/fuzz/make_seeds.c tests/fuzz/fuzz.h
 	@mkdir -p $(@D)

@@ -24,8 +24,25 @@
  *     give the same status (RANGE aside, where the float result really is
  *     near FLT_MAX) and outputs within the sum of their documented bounds;
  *     likewise Q16.16 against double, with the Q16.16 bound;
- *   - time of impact, when OK, is finite and >= 0 (Q16.16: also agrees with
- *     the double answer within its documented bound);
+ *   - time of impact: its status is the exact referee's (referee/, GMP
+ *     rationals; RANGE when the exact t exceeds the format's largest
+ *     value), and when OK t is within the documented 4 units (ulp(t) plus
+ *     ulp(|d|) over the approach speed) of the exact time (Q16.16: agrees
+ *     with the double answer within its documented bound);
+ *   - rough contact (c2d_collide_rough(_normal)(f)): the status is the
+ *     referee's (referee/ref_rough.c: exact, in the priority order) and on
+ *     OK each output within 18 ulp of its body's scale; only velocities
+ *     and spins written, never non-finite; an immovable body keeps its
+ *     velocity, infinite inertia or a zero radius its spin; momentum kept
+ *     and energy (with rotation) never gained beyond what 18 ulp allow;
+ *     friction 0, and beta = -1, give c2d_collide(_normal)'s status and
+ *     velocities bit for bit with the spins untouched (INVALID instead
+ *     when a field only the rough contact reads is bad);
+ *   - time of impact under acceleration: *t written only on OK, then
+ *     0 <= t <= horizon; the status is the exact referee's
+ *     (referee/ref_toi_accel.c, Sturm sequences over Q) outside the tie
+ *     band the header states, and t within 1 unit of the exact time; with
+ *     equal accelerations and no horizon, c2d_time_of_impact's status;
  *   - the batch entry points give bit-identical outputs, statuses and count
  *     to scalar calls on the same pairs (tests/harness), each of which
  *     holds every property above.
@@ -72,7 +89,7 @@ void c2d_fuzz_check_untouched(const void *before, const void *after, size_t n, c
     if (memcmp(before, after, n) != 0) c2d_fuzz_fail("status %s but %s was modified", c2d_status_string(s), what);
 }
 
-static void describe(const char *fmt, ...)
+void c2d_fuzz_describe(const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -82,13 +99,13 @@ static void describe(const char *fmt, ...)
 
 void c2d_fuzz_describe_d(const c2d_body *a, const c2d_body *b, double nx, double ny, double e)
 {
-    describe("a={{%a,%a},{%a,%a},%a} b={{%a,%a},{%a,%a},%a} n={%a,%a} e/r=%a", a->pos.x, a->pos.y, a->vel.x,
+    c2d_fuzz_describe("a={{%a,%a},{%a,%a},%a} b={{%a,%a},{%a,%a},%a} n={%a,%a} e/r=%a", a->pos.x, a->pos.y, a->vel.x,
              a->vel.y, a->mass, b->pos.x, b->pos.y, b->vel.x, b->vel.y, b->mass, nx, ny, e);
 }
 
 void c2d_fuzz_describe_x(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed nx, c2d_fixed ny, c2d_fixed e)
 {
-    describe("a={{%d,%d},{%d,%d},%d} b={{%d,%d},{%d,%d},%d} n={%d,%d} e/r=%d", (int)a->pos.x, (int)a->pos.y,
+    c2d_fuzz_describe("a={{%d,%d},{%d,%d},%d} b={{%d,%d},{%d,%d},%d} n={%d,%d} e/r=%d", (int)a->pos.x, (int)a->pos.y,
              (int)a->vel.x, (int)a->vel.y, (int)a->mass, (int)b->pos.x, (int)b->pos.y, (int)b->vel.x,
              (int)b->vel.y, (int)b->mass, (int)nx, (int)ny, (int)e);
 }
@@ -100,7 +117,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static const char *const names[C2D_FUZZ_ENTRIES] = {
         "c2d_collide", "c2d_collide_normal", "c2d_time_of_impact", "c2d_collidef", "c2d_collide_normalf",
         "c2d_time_of_impactf", "c2d_collidex", "c2d_collide_normalx", "c2d_time_of_impactx",
-        "c2d_collide_batch", "c2d_collide_batchf"};
+        "c2d_collide_batch", "c2d_collide_batchf", "c2d_collide_rough", "c2d_collide_rough_normal",
+        "c2d_time_of_impact_accel", "c2d_collide_roughf", "c2d_collide_rough_normalf", "c2d_time_of_impact_accelf"};
     c2d_fuzz_reader r;
     int entry, flags;
     r.p = data;
@@ -121,7 +139,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     case C2D_FUZZ_COLLIDE_NORMALX: c2d_fuzz_collidex(&r, 1); break;
     case C2D_FUZZ_TOIX: c2d_fuzz_time_of_impactx(&r); break;
     case C2D_FUZZ_BATCH: c2d_fuzz_batch(&r, flags); break;
-    default: c2d_fuzz_batchf(&r, flags); break;
+    case C2D_FUZZ_BATCHF: c2d_fuzz_batchf(&r, flags); break;
+    case C2D_FUZZ_ROUGH: c2d_fuzz_collide_rough(&r, 0); break;
+    case C2D_FUZZ_ROUGH_NORMAL: c2d_fuzz_collide_rough(&r, 1); break;
+    case C2D_FUZZ_TOI_ACCEL: c2d_fuzz_time_of_impact_accel(&r); break;
+    case C2D_FUZZ_ROUGHF: c2d_fuzz_collide_roughf(&r, 0); break;
+    case C2D_FUZZ_ROUGH_NORMALF: c2d_fuzz_collide_roughf(&r, 1); break;
+    default: c2d_fuzz_time_of_impact_accelf(&r); break;
     }
     return 0;
 }

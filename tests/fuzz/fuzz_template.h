@@ -4,7 +4,8 @@
  * the type's header (tests/harness/type_*.h) and soa_template.h; the type
  * header names
  *   c2d_num, c2d_num_body, c2d_num_vec, c2d_num_pairs, c2d_num_soa
- *   C2D_T_PREC, C2D_T_EMIN                 the format, for the bounds
+ *   C2D_T_PREC, C2D_T_EMIN, C2D_T_LIMIT    the format, for the bounds and
+ *                                          the referee (referee.h)
  *   C2D_T_FABS                             |x| in the type
  *   C2D_T_READ, C2D_T_READ_MASS, C2D_T_READ_RESTITUTION   decoders (decode.c)
  *   C2D_T_COLLIDE, C2D_T_COLLIDE_NORMAL, C2D_T_TIME_OF_IMPACT, C2D_T_BATCH
@@ -114,6 +115,31 @@ static void c2d_num_check_time_of_impact(c2d_status s, c2d_num t, c2d_num t0)
         c2d_fuzz_fail("time of impact %s but *t written", c2d_status_string(s));
 }
 
+/* The status against the exact referee (rationals: exact over the whole
+ * range), RANGE where the exact t exceeds the format's largest value; on OK
+ * t within the header's 4 units of the exact time. */
+#define C2D_FUZZ_TOI_BOUND_UNITS 4.0
+
+static void c2d_num_check_toi_referee(const c2d_num_body *a, const c2d_num_body *b, c2d_num rad, c2d_status s,
+                                      c2d_num t)
+{
+    ref_case c;
+    double want = 0, unit = 0, err;
+    c2d_status exact;
+    c.pa[0] = a->pos.x, c.pa[1] = a->pos.y, c.pb[0] = b->pos.x, c.pb[1] = b->pos.y;
+    c.va[0] = a->vel.x, c.va[1] = a->vel.y, c.vb[0] = b->vel.x, c.vb[1] = b->vel.y;
+    exact = ref_time_of_impact(&c, rad, &want, &unit, C2D_T_PREC, C2D_T_EMIN);
+    if (exact == C2D_OK && want > C2D_T_LIMIT) exact = C2D_RANGE;
+    if (s != exact)
+        c2d_fuzz_fail("time of impact %s, exact %s (t = %a, exact %a)", c2d_status_string(s),
+                      c2d_status_string(exact), (double)t, want);
+    if (s != C2D_OK) return;
+    err = fabs((double)t - want) / unit;
+    if (!(err <= C2D_FUZZ_TOI_BOUND_UNITS))
+        c2d_fuzz_fail("time of impact t = %a, exact %a: %.3g units > %g", (double)t, want, err,
+                      C2D_FUZZ_TOI_BOUND_UNITS);
+}
+
 static void c2d_num_fuzz_time_of_impact(c2d_fuzz_reader *r)
 {
     c2d_num_body a, b, a0, b0;
@@ -130,6 +156,7 @@ static void c2d_num_fuzz_time_of_impact(c2d_fuzz_reader *r)
     c2d_num_check_time_of_impact(s, t, t0);
     c2d_fuzz_check_untouched(&a0, &a, sizeof a, s, "a (const)");
     c2d_fuzz_check_untouched(&b0, &b, sizeof b, s, "b (const)");
+    c2d_num_check_toi_referee(&a, &b, rad, s, t);
 }
 
 /* The batch over up to C2D_FUZZ_MAX_PAIRS decoded pairs against a checked

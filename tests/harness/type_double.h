@@ -15,6 +15,8 @@ typedef c2d_soa c2d_num_soa;
 #define C2D_T_NAME "double"
 #define C2D_T_PREC 53      /* significand bits and smallest normal exponent: the ulp */
 #define C2D_T_EMIN (-1022)
+#define C2D_T_IS_FLOAT 0
+#define C2D_T_LIMIT DBL_MAX /* largest finite value (float.h) */
 #define C2D_T_FABS fabs
 #define C2D_T_PUT c2d_put_double
 /* Equal first: also accepts two equal infinities. */
@@ -47,3 +49,6 @@ typedef c2d_soa c2d_num_soa;
 #define C2D_T_READ c2d_fuzz_read_double
 #define C2D_T_READ_MASS c2d_fuzz_read_mass
 #define C2D_T_READ_RESTITUTION c2d_fuzz_read_restitution
+#define C2D_T_READ_FRICTION c2d_fuzz_read_friction
+#define C2D_T_READ_BETA c2d_fuzz_read_beta
+#define C2D_T_READ_HORIZON c2d_fuzz_read_horizon

@@ -15,6 +15,8 @@ typedef c2d_soaf c2d_num_soa;
 #define C2D_T_NAME "float"
 #define C2D_T_PREC 24      /* significand bits and smallest normal exponent: the ulp */
 #define C2D_T_EMIN (-126)
+#define C2D_T_IS_FLOAT 1
+#define C2D_T_LIMIT FLT_MAX /* largest finite value (float.h) */
 #define C2D_T_FABS fabsf
 #define C2D_T_PUT c2d_put_float
 /* Equal first: also accepts two equal infinities. */
@@ -47,3 +49,6 @@ typedef c2d_soaf c2d_num_soa;
 #define C2D_T_READ c2d_fuzz_read_float
 #define C2D_T_READ_MASS c2d_fuzz_read_massf
 #define C2D_T_READ_RESTITUTION c2d_fuzz_read_restitutionf
+#define C2D_T_READ_FRICTION c2d_fuzz_read_frictionf
+#define C2D_T_READ_BETA c2d_fuzz_read_betaf
+#define C2D_T_READ_HORIZON c2d_fuzz_read_horizonf
