@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # collide2d - top-level build.  `make` builds the library; `make test` installs
 # what it needs, builds and runs every test; `make demo` runs the billiards break.
 #

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "approaches.h"
 
 #include <math.h>

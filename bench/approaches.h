@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference approaches a user might write instead of calling collide2d,
  * transcribed for the benchmark only (never shipped).  Each takes the
  * library's body type so every contender sees the same inputs, writes the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* collide2d speed-for-accuracy benchmark.  See bench/bench.mk.
  *   bench [--results FILE] [--plot-data FILE] [--ir FILE] [--flags TEXT]
  *         [--sizes FILE] [--plain N] [--extreme N] [--rounds N]

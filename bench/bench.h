@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the benchmark's parts: the contenders, the input sets with their
  * exact answers, accuracy statistics and timings. */
 #ifndef C2D_BENCH_H

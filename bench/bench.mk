@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # bench/bench.mk - the speed-for-accuracy benchmark (included by the top-level
 # Makefile).  `make bench` measures every contender against the exact referee,
 # times them, counts instructions with callgrind and writes bench/RESULTS.md

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "box2d_contender.h"
 
 #include <box2d/box2d.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Box2D 2.4.1's own contact solver as a contender: one b2World holding two
  * circles, restitution e, restitution threshold 0, no friction, no gravity,
  * warm starting off; each collision places the two disks touching with the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Code size per call site (make bench: compiled with the library's flags,
  * sizes read with nm -S).  Each function makes one call: the library call
  * or the C2D_INLINE front end, with the restitution a parameter (var_) or

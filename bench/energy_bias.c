@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* energy_bias.c - is c2d_collide's energy error at e = 1 a bias?
  *
  * An elastic impact keeps the kinetic energy exactly; the library's result

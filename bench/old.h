@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The library as it was before issue 12's work (commit BENCH_OLD_REV
  * below), built into the benchmark from `git archive` with its global
  * symbols renamed old_* (objcopy --redefine-syms), so the old and the new

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stand-in for the old library when its sources cannot be had (a tree
  * without git history): the same names, renamed old_* like the real one
  * (bench/bench.mk), every call refusing.  c2d_version() == 0 tells the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Pareto plot of the speed-for-accuracy trade: worst and median error
 # relative to each body's velocity scale against median ns per collision.
 # Called by bench.mk with datafile and outfile set (columns: see plot_data

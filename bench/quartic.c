@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The time of impact under constant acceleration as a game programmer or
  * pooltool writes it, for the benchmark only (never shipped): form the
  * quartic |d(t)|^2 - R^2 = c4 t^4 + c3 t^3 + c2 t^2 + c1 t + c0 in double,

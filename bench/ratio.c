@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Interleaved ratios (issue 12's goals, the axis-aligned branch, the rough
  * model and the library before and after): each comparison is a group of
  * passes over the same in-cache pairs, timed one after another in every

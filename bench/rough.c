@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Rough disks (c2d_collide_rough, Walton's model) against the MPFR referee
  * (referee/ref_rough.c): the library in double and float and the model
  * transcribed plainly (bench_walton).  The generators are the unit test's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `bench --smoke` (make test-bench): every contender runs on every input
  * kind, the referee agrees with hand-computed collisions, and the library
  * rows keep their documented accuracy.  No timing is asserted. */

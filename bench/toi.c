@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The time of impact against the exact referee (referee/referee.c: status
  * in rationals, t in 256-bit MPFR): the library, the library before issue
  * 12 (bench/old.h) and the textbook quadratic, on the ordinary and extreme

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The time of impact under constant acceleration: what the library's exact
  * statuses cost against the textbook quartic solvers (bench/quartic.c).
  *

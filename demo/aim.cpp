@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // aim.cpp - see aim.h.  A ball of radius R moving from c along the unit d
 // meets: another ball at the least t >= 0 with |c + t d - b| = 2R; a cushion
 // face or jaw facing (the lines a ball's surface touches, normal n) at

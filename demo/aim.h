@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // aim.h - the aiming aids: where the cue ball's straight path first meets a
 // ball, a cushion, a jaw or a pocket (the ghost ball), the object ball's
 // direction along the line of centres and the cue ball's tangent line (the

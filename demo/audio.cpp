@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // audio.cpp - see audio.h.  Each sound is a sum of exponentially decaying
 // partials a e^(-t/tau) sin(2 pi f t) plus filtered noise bursts (a
 // one-pole low-pass, y += k (x - y)), the way struck hard objects ring:

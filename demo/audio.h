@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // audio.h - the table's sounds, synthesised in code when the window opens
 // (no asset files): the click of two balls, the thud of a cushion, a ball
 // dropping into a pocket, the cue's strike.  Volume follows the impulse of

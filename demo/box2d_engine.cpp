@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // box2d_engine.cpp - see box2d_engine.h.  Balls are dynamic circles
 // without friction or rotation, cushions and jaw facings two-sided edges,
 // jaw noses static circles, pockets sensors that drop a ball once its centre

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // box2d_engine.h - Box2D 2.4.1's own solver on the same scene, for
 // comparison: it resolves contacts by impulses at the end of each step, so
 // fast balls can pass through each other (the checker counts it).

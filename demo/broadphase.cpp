@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // broadphase.cpp - see broadphase.h.  The grid lists a box no wider or
 // taller than a cell in one cell, the one that holds its lower-left corner,
 // and the few larger boxes (the gas box's walls, a ball swept unusually far)

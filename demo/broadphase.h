@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // broadphase.h - where the exact engine finds its candidates: boxes (in
 // Box2D units, exact_engine.cpp) with a tag, and the query "every box that
 // overlaps this one".  Two answers to it:

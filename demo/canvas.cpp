@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // canvas.cpp - see canvas.h.
 #include "canvas.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // canvas.h - the window's pixels, drawn in software: an RGB frame buffer with
 // antialiased primitives (disks, rings, thick lines, convex polygons,
 // rectangles) blended in sRGB.  The same frame goes to the window (one

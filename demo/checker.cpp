@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // checker.cpp - see checker.h.  Between its waypoints a ball moves as the
 // engine says it does, p(t) = p0 + v (t - t0) + a (t - t0)^2 / 2 (Box2D's
 // balls, and any ball before its first waypoint, move straight between the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // checker.h - the independent frame checker.  It trusts neither engine: from
 // the balls before and after a frame and the engine's log (the pairs it
 // resolved, the points where paths bent), it counts

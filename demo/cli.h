@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // cli.h - the command line of the billiards demo: the options, their
 // parsing and checks (`billiards --help` lists them).  Bad input is a
 // UsageError: the caller prints its message and exits with status 2.

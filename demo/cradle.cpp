@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // cradle.cpp - see cradle.h.  Between events a lossless ball keeps its
 // velocity, so the velocities after the last event of each ball are the
 // balls' velocities at any later moment until the next event: the events

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // cradle.h - the check of the cradle scene against the textbook.  A cue
 // ball at v head-on (along the row, +x) into N touching equal balls on a
 // lossless, frictionless table: momentum and energy conservation in

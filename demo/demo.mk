@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # demo/demo.mk - the billiards demo, included by the top-level Makefile.
 #   make demo        install deps, build $(B)/billiards, run the headless break,
 #                    print a summary, write $(B)/billiards.png

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // draw_balls.cpp - see draw_balls.h.  Each pixel of a ball is supersampled
 // 3x3: a sample at (sx, sy) radii from the centre sees the sphere's point
 // with world normal n = (sx, -sy, sqrt(1 - sx^2 - sy^2)); its body

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // draw_balls.h - pool balls as lit spheres: the standard colours, stripes
 // (9-15), the number in its white circle, a soft shadow; each ball turned by
 // its own orientation, integrated from its angular velocity frame by frame,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // draw_table.cpp - see draw_table.h.  Every pixel is classified by what lies
 // under it (cloth, cushion rubber, hole, leather liner, wood): the playing
 // surface [0, L] x [0, W] is cloth; the band of rubber width around it is

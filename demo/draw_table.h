@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // draw_table.h - the table under the balls: cloth, cushions (rubber behind
 // each cushion face, the jaw facings and noses), the pocket holes (exactly
 // the circles a ball's centre must enter to fall), wooden rails with their

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // engine.h - what the simulation asks of an engine: move the balls on by a
 // frame, resolving the impacts on the way, and report what it resolved, so
 // the checker can tell a resolved contact from a tunnelled pair.  Two

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // engine_view.cpp - see engine_view.h.
 #include "engine_view.h"
 

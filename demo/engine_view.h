@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // engine_view.h - how the window reads the simulation: the table's shape as
 // it is drawn and aimed at (the engine's cushions and pockets, with each
 // nose's cushion face and a rail wide enough for the holes), and the

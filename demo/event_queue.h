@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // event_queue.h - the exact engine's pending events, earliest first: a
 // binary heap for the events due soon, and buckets for the rest.
 //

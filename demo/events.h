@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // events.h - what happened during a run, in time order: contacts, pocket
 // drops, the cue strike and the balls' changes of motion state.  A
 // ball-ball contact is two records at the same time, one for each ball

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // exact_engine.cpp - see exact_engine.h.
 //
 // Each ball's motion is a Track (motion.h): from its start t0 its position

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // exact_engine.h - the exact engine: every ball moves in closed form between
 // events (motion.h: quadratic in t), events are found and processed in time
 // order, impacts are resolved with collide2d; a broadphase (broadphase.h)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // font.cpp - see font.h.  Each glyph is written as its rows, top to bottom,
 // '#' for a set pixel, rows separated by spaces; rows 7-8 (descenders) are
 // given only where a glyph has them.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // font.h - a 5x7 bitmap font (printable ASCII, with descenders: cells of
 // 5x9 font pixels), drawn at an integer scale with an optional drop shadow.
 // The balls' numbers sample the same glyphs on the sphere (glyph_on).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // game.cpp - see game.h.  Each shot: the player's plan (ball in hand first,
 // if any), the shot played to rest, the rules' verdict; the 8 spotted again
 // if it fell on the break.  A ball in hand without the cue ball on the table

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // game.h - a game of 8-ball played to the end without a window: the rack of
 // the break scene (sim.h, scene.h), shots through the shot seam
 // (simulate_shot, no frames), judged by the rules (rules.h), each chosen by

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // hud.cpp - see hud.h.  Sizes follow the panel's height, so the panel reads
 // the same at any window size.
 #include "hud.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // hud.h - what the window shows around the table: the panel under it
 // (status lines, the balls pocketed so far, the power meter and the spin
 // selector: a cue-ball diagram with the miscue limit and the tip's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // main.cpp - the billiards demo's entry point: decides between the window
 // and a headless run (before SDL touches the video system), runs it, and
 // writes what was asked for (summary or JSON, events, trace, speeds,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // model.h - the physical parameters an engine works with (SimConfig in
 // sim.h sets them; their values and sources are there).
 #ifndef C2D_DEMO_MODEL_H

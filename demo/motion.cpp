@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // motion.cpp - see motion.h.
 #include "motion.h"
 

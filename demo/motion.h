@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // motion.h - a ball on the cloth between events, in closed form, and the cue
 // strike.  Sources: Leckie & Greenspan, "An event-driven pool simulation"
 // (ICGA 2006); D. Alciatore, technical proofs TP 4.1-4.3 and A.4-A.5

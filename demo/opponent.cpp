@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // opponent.cpp - see opponent.h.  Geometry of the ghost ball: to send an
 // object ball at B towards an aim point P, the cue ball must touch it with
 // the line of centres along u = (P - B)/|P - B|, its centre then at

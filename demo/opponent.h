@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // opponent.h - the computer player of 8-ball (rules.h), without SDL.  It
 // chooses a shot by playing candidate shots to rest with the same engine the
 // game uses (sim.h simulate_shot) and judging each with the same rules.

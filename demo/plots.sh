@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Pictures for the README (make demo-plots): the elastic scene's energy
 # over time for both responses, the gas speed histogram against the
 # 2-D Maxwell-Boltzmann (Rayleigh) distribution, and one shot's path with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // png.cpp - see png.h.  The image is encoded in memory
 // (png_image_write_to_memory: first call sizes it, second fills it), then
 // written with plain stdio so every write error is seen.

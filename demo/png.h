@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // png.h - compressed PNG screenshots (8-bit RGB) through libpng's simplified
 // API: deflate with adaptive row filters, so a table picture of mostly
 // smooth colour takes tens of kilobytes, not megabytes.

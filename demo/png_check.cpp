@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // png_check.cpp - test helper: decodes a PNG with libpng (independent of the
 // demo's own writer) and fails unless it is valid and not blank.
 // usage: png_check FILE.png   prints "WIDTHxHEIGHT, N colours"

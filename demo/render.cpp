@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // render.cpp - see render.h.  A frame: the cached table (redrawn only when
 // the window's size changes), the balls, the aiming aids, the panel, then
 // the help box or a banner.  The window's game is a Driver of the shared

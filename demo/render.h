@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // render.h - the demo's pictures and the game in a window: frames are drawn
 // in software (canvas.h) and shown through one SDL texture, so an offscreen
 // screenshot (no display needed), a window's screenshot and what the player

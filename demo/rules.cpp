@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // rules.cpp - see rules.h.  The rules only read what happened (the shot's
 // events and the table before and after); they never move a ball, so the
 // window, the headless game and the computer opponent's look-ahead judge a

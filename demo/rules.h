@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // rules.h - 8-ball (after the WPA rules, simplified where a computer game
 // has no referee to ask: no called shots, no push-outs), without SDL.
 //

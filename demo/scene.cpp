@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // scene.cpp - see scene.h.  The rack's rows are sqrt(3) radii apart (balls
 // touching in a triangle); the gas box's side s holds N disks of radius r at
 // area fraction f: N pi r^2 = f s^2.  The cradle's row is one diameter

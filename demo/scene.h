@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // scene.h - what is on the table at the start of a run.  SI units
 // throughout (m, m/s, kg); x runs along the table, y across it.
 //   break    a pool table (table.h: 2.54 m x 1.27 m, six pockets with jaws),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // sim.cpp - see sim.h.
 #include "sim.h"
 

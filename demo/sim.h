@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // sim.h - a run of the demo, without SDL: its configuration (scene, engine,
 // every physical parameter), the Simulation, which sets up the scene, steps
 // the engine frame by frame and has the checker check every frame; the one

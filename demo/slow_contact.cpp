@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // slow_contact.cpp - see slow_contact.h.
 #include "slow_contact.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // table.cpp - see table.h.  Each pocket is built from its two theoretical
 // jaw points P (on the cushion lines, `mouth` apart) and, for each, e: the
 // unit vector along the rail away from the pocket and n: the rail's normal

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // table.h - the table's geometry, shared by the engines (what a ball hits)
 // and the window (what is drawn): the playing surface, the cushion faces,
 // and six pockets with angled jaw facings, rounded jaw points (noses) and a

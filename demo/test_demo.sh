@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Tests of the billiards demo (make test-demo).
 # usage: demo/test_demo.sh BILLIARDS_BINARY PNG_CHECK_BINARY
 set -u

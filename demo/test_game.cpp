@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // test_game.cpp - 8-ball: the rules (rules.h) on constructed shots, checked
 // over every ball and every combination that matters rather than one
 // example each; the facts read from a shot's events; ball-in-hand placement;

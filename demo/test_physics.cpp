@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // test_physics.cpp - the pool model against the textbook laws, through the
 // shot seam (simulate_shot / simulate_to_rest: no frames, no SDL), and the
 // engine's integrity over random shots (Simulation: frames and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // view.h - where things go in the window: the table (rails included) and,
 // for the pool scenes, the panel under it (status, power meter, spin
 // selector), fitted to the canvas with the table's aspect kept and the rest

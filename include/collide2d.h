@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* collide2d.h - exact, robust 2-D collisions between disks.  C99, no
  * dependencies, no allocation, no globals, freestanding-clean.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* collide2d.c - what does not depend on a number format: the version and the
  * names of the statuses.  The collisions live in double.c, float.c and
  * fixed.c; docs/METHOD.md derives them. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* double.c - the double-precision API: binary64's parameters, the shared
  * templates instantiated for it (real_*.h, derivations there), and the
  * public functions written out by name.  C2D_NO_DOUBLE leaves it empty. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fixed.c - the Q16.16 API: the collision and the time of impact in integer
  * arithmetic only (int32/int64; on 32-bit cores the compiler's 64-bit
  * helpers), for cores without a floating-point unit.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* float.c - the single-precision API: binary32's parameters, the shared
  * templates instantiated for it (real_*.h, derivations there), and the
  * public functions written out by name.  Float arithmetic only: nothing here

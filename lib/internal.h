@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* internal.h - what every translation unit of the library shares: the public
  * header, the compiler hints, and the fast path's internal verdicts.
  *

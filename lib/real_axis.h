@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_axis.h - template: impacts whose normal lies on an axis, every
  * output correctly rounded.  Needs real_collide.h, real_sign.h and
  * real_round.h first.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_batch.h - template: c2d_collide_batch over structure-of-arrays pairs.
  * Needs real_collide.h (and what it needs) first.
  *

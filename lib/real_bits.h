@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_bits.h - template: the floating type's bits, exact powers of two, and
  * extended-exponent numbers.  Included once by double.c and by float.c after
  * they define the type's parameters:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_collide.h - template: c2d_collide and c2d_collide_normal, the three
  * tiers chained.  Needs real_bits.h, real_exact.h, real_fast.h and
  * real_general.h first (and real_axis.h after).

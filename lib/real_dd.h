@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_dd.h - template: double-length numbers with an extended exponent
  * ("dx"), for models whose results depend on differences that may cancel.
  * Needs real_bits.h, real_exact.h and real_sign.h first.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_exact.h - template: exact floating-point arithmetic.  Needs
  * real_bits.h first.
  *

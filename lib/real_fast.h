@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_fast.h - template: the branch-free fast path of a collision, shared
  * by the scalar calls and the batch kernel.  Needs real_bits.h first.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_general.h - template: the general path of a collision, for any finite
  * inputs.  Needs real_bits.h and real_exact.h first.
  *

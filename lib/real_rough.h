@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_rough.h - template: c2d_collide_rough, the impact of two rough disks
  * with friction and spin (Walton's model of rough inelastic disks).
  * Needs real_collide.h, real_sign.h and real_dd.h first.

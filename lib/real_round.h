@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_round.h - template: correctly rounded quotients of exact sums, and
  * the cheap filter in front of them.
  * Needs real_bits.h, real_exact.h and real_sign.h first.

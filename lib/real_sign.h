@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_sign.h - template: extended-number arithmetic and exact signs of sums
  * of products over the whole exponent range.  Needs real_bits.h and
  * real_exact.h first.

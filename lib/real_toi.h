@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_toi.h - template: c2d_time_of_impact, two disks moving with constant
  * velocities.  Needs real_bits.h, real_exact.h and real_sign.h first.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_toia.h - template: c2d_time_of_impact_accel, the time of impact of
  * two disks moving with constant accelerations, part 7 of 7 (the entry);
  * parts 1-6 in real_toia_num.h, _problem.h, _eval.h, _newton.h, _turns.h,

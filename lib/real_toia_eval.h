@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_toia_eval.h - template: the time of impact under acceleration,
  * part 3 of 7: f, g, h at a time with certified error bounds, three tiers
  * (plain, double length, exact).  See real_toia.h. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_toia_newton.h - template: the time of impact under acceleration,
  * part 4 of 7: extended arithmetic for the bounds, plain Newton in a local
  * frame, the double-length polish and bisection on certified signs.  See

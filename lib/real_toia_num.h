@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_toia_num.h - template: the time of impact under acceleration, part 1
  * of 7: its types and exact sums of products in a sliding exponent window.
  * Numbers m 2^e are real_bits.h's c2d_xf, times (h + l) 2^e real_dd.h's

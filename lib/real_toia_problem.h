@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_toia_problem.h - template: the time of impact under acceleration,
  * part 2 of 7: the problem (exact differences d0, v, a, the radius) and the
  * exact signs at t = 0, degree-2 polynomials in the inputs.  See real_toia.h. */

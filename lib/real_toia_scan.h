@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_toia_scan.h - template: the time of impact under acceleration,
  * part 6 of 7: the certified fast paths, the pieces of (0, T) on which g is
  * monotone, and the scan over them.  See real_toia.h. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* real_toia_turns.h - template: the time of impact under acceleration,
  * part 5 of 7: the turning points of f (roots of g, bracketed, with f's
  * value there) and of g (the roots of the quadratic h).  See real_toia.h. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Generators of collision cases, shared by the tests, the benchmark and
  * the vector generator: plain (unit-scale scenes) and extreme (the whole
  * range), driven by the seeded generator of rng.h, and the conversion of a

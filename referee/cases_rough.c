@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cases_rough.c - see cases_rough.h. */
 #include "cases_rough.h"
 

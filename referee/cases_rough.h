@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cases_rough.h - rough-disk contacts for the tests and the benchmark:
  * the generators (unit scale, whole range), the case as the float call sees
  * it, and the library called on a case. */

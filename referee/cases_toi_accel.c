@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cases.c - see cases.h.  Constructions use few-bit dyadic values so that
  * the intended exact property (a graze, a touch, a root at a float time)
  * holds exactly in float as in double. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cases_toi_accel.h - test-case families for the time of impact under
  * acceleration (the unit test, the fuzz seeds and the benchmark), and the
  * tie band of its contract as the tests check it. */

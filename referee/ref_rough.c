@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "ref_rough.h"
 
 #include <math.h>

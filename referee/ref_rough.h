@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Referee for c2d_collide_rough: the status exactly (the normal part is
  * c2d_collide's, decided by ref_collide in rationals; the extra validation
  * by the contract), the outputs in MPFR at REF_ROUGH_BITS bits: enough that

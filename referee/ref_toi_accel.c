@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* referee_toi_accel.c - see referee_toi_accel.h. */
 #include "ref_toi_accel.h"
 

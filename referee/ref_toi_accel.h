@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ref_toi_accel.h - exact referee for the time of impact under constant
  * accelerations (host only: GMP rationals, MPFR).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Exact referee for collide2d: GMP rationals for the collision (the impulse
  * form is rational in the inputs), MPFR at 256 bits for the time of impact.
  * Used by the tests and the benchmark to measure errors in ulp. */

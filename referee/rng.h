@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rng.h - the one random number generator of the tests, the benchmark and
  * the determinism hash: splitmix64 (Steele, Lea, Flood 2014), tiny, fast and
  * good enough to drive test cases.  Header-only and dependency-free (no GMP,

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # amalgamate.sh OUT - write the whole library as one self-contained C file
 # (for firmware trees that take one .c beside include/collide2d.h).
 #

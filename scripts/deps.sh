@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Install the Debian packages a make target needs, only those missing.
 # Usage: scripts/deps.sh PACKAGE...   (as root, or with sudo available)
 set -eu

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Build-contract checks for lib/: warning-free under gcc and clang with the
 # strict flags, every C2D_NO_* option, freestanding with only the compiler's
 # own headers, `cc -std=c99 -c lib/*.c` with no other flag, no outside

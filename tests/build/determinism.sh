@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # determinism.sh OUTDIR [COUNT [AMALGAMATION]] - the library's output bits over a fixed case
 # set (tests/build/hash_vectors.c: COUNT cases of the variants and 20,000 of
 # the models) must hash the same under gcc and clang at -O0, -O2 and -O3,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hash_vectors.c - hash the bits of every output and status of the library
  * over a fixed, generated set of cases, for tests/build/determinism.sh (the
  * library built by gcc and clang at several optimisation levels) and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests/build/lint.mk - static analysis of lib/ and demo/, included by the
 # top-level Makefile.  Configurations: .clang-tidy (repo root) and
 # tests/build/cppcheck-suppressions.txt, each entry with its reason.

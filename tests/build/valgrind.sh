@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # valgrind.sh BILLIARDS OUTDIR - short headless demo runs under memcheck:
 # any memory error or a definitely lost block fails the run.  Prints
 # "valgrind: N passed, N failed".

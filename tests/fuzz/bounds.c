@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bounds.c - the bounds the documented accuracy implies, shared by the
  * checks of the three variants. */
 #include "fuzz.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* decode.c - the fuzz input's bytes decoded into arguments (the format is
  * described in fuzz_collide2d.c).  Missing bytes read as 0. */
 #include "fuzz.h"

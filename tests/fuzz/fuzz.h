@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fuzz.h - what the translation units of the fuzz harness share (the input
  * format and the properties are described in fuzz_collide2d.c):
  *   fuzz_collide2d.c   the entry point and the failure report

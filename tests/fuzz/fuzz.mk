@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests/fuzz/fuzz.mk - dynamic hardening runs, included by the top-level
 # Makefile: the libFuzzer harness for every public entry point, the
 # cross-compiler determinism hash, and the demo under valgrind.

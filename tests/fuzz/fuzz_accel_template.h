@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fuzz_accel_template.h - template: the fuzz checks of the time of impact
  * under constant acceleration (c2d_time_of_impact_accel) in one floating
  * type.  Included after fuzz_template.h by fuzz_double.c and fuzz_float.c;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fuzz_collide2d.c - libFuzzer harness for every public entry point.
  *
  * INPUT FORMAT (raw bytes; missing bytes read as 0)

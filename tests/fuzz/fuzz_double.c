@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fuzz_double.c - the fuzz checks of double (fuzz_template.h), the entry
  * points and the double answer the float and Q16.16 checks compare with,
  * written out by name (fuzz.h). */

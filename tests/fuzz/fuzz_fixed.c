@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fuzz_fixed.c - the fuzz checks of Q16.16: its own properties, then
  * against the double answer on the same (exactly converted) inputs within
  * the Q16.16 bound.  Not the floating template: Q16.16 has no NaN, no

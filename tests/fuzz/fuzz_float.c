@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fuzz_float.c - the fuzz checks of float (fuzz_template.h), plus the
  * comparison with double on the same inputs, written out by name
  * (fuzz.h). */

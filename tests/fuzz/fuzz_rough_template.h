@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fuzz_rough_template.h - template: the fuzz checks of the rough contact
  * (c2d_collide_rough, c2d_collide_rough_normal) in one floating type.
  * Included after fuzz_template.h (its body helpers) by fuzz_double.c and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fuzz_template.h - template: the fuzz checks of one floating type, every
  * property of fuzz_collide2d.c's list that does not compare types.
  * Included once per translation unit (fuzz_double.c, fuzz_float.c) after

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* make_seeds.c - writes the hand-made seed inputs of the fuzz corpus
  * (make fuzz-seeds).  Each seed is one meaningful scene per entry point in
  * the harness's input format (see fuzz_collide2d.c): head-on, oblique, wall,

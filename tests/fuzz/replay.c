@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* replay.c - run the fuzz harness over files without libFuzzer, so the
  * committed regression corpus also runs under the ordinary compiler ($(CC),
  * sanitised with SANITIZE=1).  Each file runs in its own child process: a

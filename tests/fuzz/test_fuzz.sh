@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # test_fuzz.sh FUZZER REPLAY CORPUS WORKDIR RUNS - the committed regression
 # corpus (under both builds) plus a bounded, reproducible smoke run.
 # Prints "fuzz: N passed, N failed"; exit status 1 on any failure.

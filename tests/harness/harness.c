@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* harness.c - the type-independent half of the shared test helper
  * (harness.h): exact printing of numbers without a C library, the pass/fail
  * tally, byte comparison. */

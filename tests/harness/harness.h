@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* harness.h - the one helper the test programs share: the pass/fail tally
  * and its closing line, exact printing of numbers, the structure-of-arrays
  * storage the batch entry points take, and the check that a batch call gives

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* soa_float.c - the structure-of-arrays helper for float
  * (soa_template.h), its functions written out by name (harness.h). */
 #include "harness.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* soa_template.h - template: one floating type's structure-of-arrays
  * storage and the comparison of its batch entry point with scalar calls.
  * Included once per translation unit after the type's header

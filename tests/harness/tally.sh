@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tally.sh - the pass/fail tally of the shell checks, the shell twin of
 # c2d_tally (harness.h).  Sourced (POSIX sh):
 #   c2d_tally_name=NAME      prefix of every line ("check-build", ...)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* type_double.h - the double variant's names for the test templates
  * (soa_template.h, tests/vectors/check_template.h, tests/fuzz/fuzz_template.h),
  * as lib/double.c names its type for lib/real_*.h.  Included once, first, by

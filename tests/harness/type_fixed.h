@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* type_fixed.h - the Q16.16 variant's names for the test template it shares
  * with the floating types (tests/vectors/check_template.h).  Included once,
  * first, by each Q16.16 translation unit of the tests (check_fixed.c).  No

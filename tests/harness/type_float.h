@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* type_float.h - the float variant's names for the test templates
  * (soa_template.h, tests/vectors/check_template.h, tests/fuzz/fuzz_template.h),
  * as lib/float.c names its type for lib/real_*.h.  Included once, first, by

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* MCU test harness: runs the library's shared test vectors
  * (tests/vectors/vectors.c, the tables the host cmocka tests use, checked by
  * the same code: tests/vectors/check_template.h, and check_models.h for the

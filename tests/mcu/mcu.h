@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The two things the MCU test harness needs from a bare-metal platform: a
  * console and a way to end the run with a status the emulator passes on as
  * its own exit code (semihosting).  startup_arm.c provides them for

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tests/mcu/mcu.mk - the library on microcontrollers (included by Makefile).
 #
 #   make cross       builds lib/ with -Os -ffreestanding for Cortex-M0, M4F, M7

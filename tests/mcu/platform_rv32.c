@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* RV32 platform for the MCU harness: picolibc's semihosting crt0 has already
  * set up the stack, .data and .bss, and its exit() is the semihosting exit,
  * so QEMU exits with the harness's status.  Output goes through a host file

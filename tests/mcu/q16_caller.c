@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `make cross` links this with -nostdlib -lgcc against the library built with
  * C2D_NO_DOUBLE and C2D_NO_FLOAT: the link succeeding is the proof that the
  * Q16.16 path needs nothing but the compiler's own runtime on a Cortex-M0. */

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Run one MCU test binary under QEMU with semihosting and judge it: QEMU's
 # exit status (the harness's, through semihosting) must be 0 and the last
 # line must read "NAME: N passed, 0 failed" with N > 0.  A hung target is

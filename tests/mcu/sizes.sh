@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # One target's section of the size table (docs/SIZES.md), from the library
 # object built with -ffunction-sections -fstack-usage -fcallgraph-info=su.
 # Fails (exit 1, reason on stderr) when the object takes any outside symbol

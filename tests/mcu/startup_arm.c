@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bare-metal Cortex-M start-up for the MCU test harness: vector table, reset
  * handler (FPU on, .data copied, .bss zeroed, stack painted), and the
  * semihosting calls behind mcu.h.  No C library: the Q16.16-only build links

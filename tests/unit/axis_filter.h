@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* axis_filter.h - the body of test_axis_filter.c (double) and
  * test_axis_filterf.c (float): the filter in front of the exact rounding
  * of axis-aligned impacts (lib/real_round.h), tested white-box against the

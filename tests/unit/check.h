@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cmocka glue shared by the test programs: includes in the order cmocka
  * needs, plus the comparisons cmocka 1.1.5 lacks. */
 #ifndef C2D_CHECK_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // The header from C++: extern "C" linkage, no C-only constructs.
 #include "collide2d.h"
 

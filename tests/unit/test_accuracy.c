@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Accuracy against the exact referee (GMP rationals), over unit-scale scenes
  * and over the whole floating-point range: statuses must match exactly
  * (C2D_RANGE only where the contract allows it) and every output must be

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Axis-aligned impacts (a normal with one zero component) are correctly
  * rounded, double and float, scalar and batch, over the whole range; and
  * Newton's cradle comes out exactly, with the least number of impacts. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The filter in front of the exact rounding of axis-aligned impacts, float
  * (body in axis_filter.h): the library's templates instantiated here as
  * lib/float.c does, so the filter's decisions can be counted. */

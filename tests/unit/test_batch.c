@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* c2d_collide_batch(f): bit-identical to the scalar call, statuses
  * included, for mixed inputs (valid, grazing, extreme, invalid) and any
  * count, including counts that are not a multiple of the kernel's block. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* c2d_collide / c2d_collide_normal: the physics, as properties over many
  * random cases plus the seed document's examples. */
 #include "check.h"

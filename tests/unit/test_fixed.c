@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Q16.16: against the exact referee (and the double path) within the
  * documented bound, |error| <= 3 steps + 2^-24 S per component (S: largest
  * |velocity component| of either body, before or after); statuses;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The opt-in inline front ends (C2D_INLINE) give the library call's
  * statuses and bits, double and float, c2d_collide and c2d_collide_normal,
  * over every input family the other suites use plus walls and axes. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* c2d_collide_rough(f) and c2d_collide_rough_normal(f): friction and spin at
  * contact.  The identities with the frictionless call, the conservation laws,
  * statuses, accuracy against a 4400-bit MPFR referee in ulp of each body's

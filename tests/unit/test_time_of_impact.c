@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* c2d_time_of_impact(f): closed cases, then random cases against a 256-bit
  * MPFR referee, unit-scale and scaled over the whole range.  Bound: 4 units
  * of (ulp(t) + ulp(|d|) / closing speed), the documented accuracy. */

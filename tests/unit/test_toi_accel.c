@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* c2d_time_of_impact_accel(f): statuses and times against the exact referee
  * (referee/ref_toi_accel.c: Sturm sequences over the rationals, MPFR for the
  * time), family by family: billiard balls on cloth, random accelerations,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* check_double.c - the vector table's checks for double (check_template.h) and the
  * models' tables (check_models.h). */
 #include "check_vectors.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* check_fixed.c - the vector table's checks for Q16.16 (check_template.h;
  * no batch entry point, so no soa_template.h). */
 #include "check_vectors.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* check_template.h - template: one variant's checks of the shared vector
  * table, the same on the host (test_vectors.c) and on microcontrollers
  * (tests/mcu/main.c).  Included once per translation unit (check_double.c,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* check_vectors.h - the checks of the shared vector table (vectors.h), one
  * per variant compiled in (check_template.h, instantiated by check_double.c,
  * check_float.c, check_fixed.c), and for double and float the models'

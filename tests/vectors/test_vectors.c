@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The shared vector tables (tests/vectors/vectors.c, also run on emulated
  * MCUs), checked by the code the MCU harness runs (check_template.h,
  * check_models.h): every entry's status, outputs within its tolerance,

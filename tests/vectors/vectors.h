@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The library's test vectors: one table per variant, shared by the host
  * cmocka tests (tests/vectors/test_vectors.c, which also re-derives every
  * expected value with the exact referee) and the bare-metal MCU harness
