@@ -592,20 +592,20 @@ static void why(FILE *f, const results *res)
             instr(ir_of(r, &ci[GP_LIB], 1), b[0]), instr(ir_of(r, &ci[GP_SEED], 1), b[1]), ci[GP_LIB].ratio,
             r->goal_b2b[GV_COLLIDE][GS_IMPACTS][GP_LIB].ratio, cr[GP_LIB].ratio,
             r->goal_b2b[GV_COLLIDE][GS_RANDOM][GP_LIB].ratio);
-    fprintf(f, "- `c2d_collide_normal` (double) %.1f ns against `c2d_collide`'s %.1f on the same pairs: gcc 12 splits "
-               "`c2d_real_collide_normal` into a `.part.0` that receives the by-value normal through memory, stored "
-               "as two 8-byte halves and loaded as one 16-byte vector (`movupd`): no store forwarding, some 10 "
-               "cycles on the critical path. The seed given a `c2d_vec2` by value pays the same (%.2fx its scalar "
-               "form, above). Scratch build with `c2d_real_collide_normal` declared `C2D_HOT` (always inline): "
-               "7.3 ns against `c2d_collide`'s 6.3 in the same run. The float normal (8 bytes) forwards.\n",
+    fprintf(f, "- `c2d_collide_normal` (double) %.1f ns against `c2d_collide`'s %.1f on the same pairs: its front "
+               "end takes the normal as two scalars. Passed as a `c2d_vec2` by value, gcc 12 split the function "
+               "into a `.part.0` that received the normal through memory, stored as two 8-byte halves and loaded "
+               "as one 16-byte vector (`movupd`): no store forwarding, 17 ns a call before this change. The seed "
+               "given a `c2d_vec2` by value still pays it (%.2fx its scalar form, above). The float normal "
+               "(8 bytes) forwards, so `c2d_collide_normalf` takes it by address and inlines its front end whole; "
+               "it is slower than `c2d_collidef` by its position-finiteness check and the `a == b` test.\n",
             ni[GP_LIB].ns, ci[GP_LIB].ns, r->seed_byvalue[1].ratio);
-    fprintf(f, "- The `C2D_INLINE` forms: at the call site gcc compiles the window's minimum (`geometry < lighter ? "
-               "geometry : lighter`) as a branch, where the library's `c2d_quick` gets `minsd`; on ordinary pairs it "
-               "goes either way, and cachegrind charges 25%% mispredictions to that line (0.27 per call against "
-               "0.02 for the library call). Back to back the predictor learns the pairs and the inline form is "
-               "%.2fx the seed on impacts; on fresh pairs %.2fx. A branch-free minimum at the site (as in "
-               "`c2d_quick`) is what would make the inline form pay off.\n",
-            r->goal_b2b[GV_COLLIDE][GS_IMPACTS][GP_INLINE].ratio, ci[GP_INLINE].ratio);
+    fprintf(f, "- The `C2D_INLINE` forms join the window's conditions with `&` and take the minimum without a "
+               "branch (`minsd`/`maxsd`, one branch per call); before, gcc compiled the minimum as a branch that "
+               "mispredicted on a quarter of ordinary pairs. Now %.2fx the seed on fresh impacts, %.2fx back to "
+               "back; the remaining gap to 0.8x is the accept path's length (some 94 instructions against the "
+               "seed's 57, whose time is set by its divider).\n",
+            ci[GP_INLINE].ratio, r->goal_b2b[GV_COLLIDE][GS_IMPACTS][GP_INLINE].ratio);
     fprintf(f, "- Large batches, float: the roof's pairs are the plain generator's (22%% cancel, some separate), and "
                "those leave the kernel for the scalar tiers one by one: the float batch then runs at about its "
                "in-cache speed on that mix, compute-bound, not at the memory's pace.\n");
@@ -628,11 +628,10 @@ static void why(FILE *f, const results *res)
                    "zero component, and those now take the exact axis-aligned path (some 40%% of the instructions, "
                    "%s against %s per call).\n", ne[1].ratio, instr(ir_of(r, &ne[1], 1), b[0]),
                 instr(ir_of(r, &ne[0], 1), b[1]));
-        fprintf(f, "- Batches of walls (float %.2fx): the new kernel's accept test wants both masses finite, so every "
-                   "wall pair leaves the kernel for the scalar call (%s instructions per pair against %s); the old "
-                   "kernel resolved walls in the kernel with the mass pair (0, 1). The scalar front end's wall test "
-                   "(`c2d_quick_wall`) in the kernel would restore it.\n", bw[1].ratio,
-                instr(ir_of(r, &bw[1], 0), b[0]), instr(ir_of(r, &bw[0], 0), b[1]));
+        fprintf(f, "- Batches of walls (float %.2fx the library before): the kernel resolves a wall pair (one mass "
+                   "INFINITY) itself with the scalar front end's mass pair, picked by bit masks (%s instructions "
+                   "per pair against %s before); two walls and NaN masses still leave it for the scalar call.\n",
+                bw[1].ratio, instr(ir_of(r, &bw[1], 0), b[0]), instr(ir_of(r, &bw[0], 0), b[1]));
         fprintf(f, "- The time of impact on extreme pairs (%.0fx): about 40%% of them (the components at independent "
                    "exponents) reach `c2d_toi_exact`, whose extended products (`c2d_acc_product`, `c2d_compress`: "
                    "over 90%% of the instructions) take some 250,000 instructions each; %s per call on average "
