@@ -188,6 +188,8 @@ void rough_evaluate(int which, int extreme, int n, unsigned long long seed, roug
 
 /* Results go here so no timed loop can be optimised away (timing.c). */
 extern volatile double bench_sink;
+/* A monotonic clock in ns (timing.c). */
+double bench_now_ns(void);
 
 /* ------------------------- time of impact under acceleration (toi_accel.c)
  * The library (double, float) and the textbook quartic solvers

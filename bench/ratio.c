@@ -25,15 +25,7 @@
 #include <string.h>
 #include <time.h>
 
-#if defined(__has_include)
-#if __has_include(<valgrind/callgrind.h>)
-#include <valgrind/callgrind.h>
-#endif
-#endif
-#ifndef CALLGRIND_ZERO_STATS
-#define CALLGRIND_ZERO_STATS
-#define CALLGRIND_DUMP_STATS_AT(name) ((void)(name))
-#endif
+#include "callgrind.h"
 
 #include "approaches.h"
 #include "old.h"
@@ -292,13 +284,6 @@ typedef struct pass {
 
 static int g_callgrind;
 
-static double now_ns(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
-}
-
 static int cmp_double(const void *x, const void *y)
 {
     double a = *(const double *)x, b = *(const double *)y;
@@ -359,9 +344,9 @@ static double time_pass(const pass *p)
 {
     double t0, t1;
     restore(p->s, p->w);
-    t0 = now_ns();
+    t0 = bench_now_ns();
     p->run(p->s);
-    t1 = now_ns();
+    t1 = bench_now_ns();
     return (t1 - t0) / p->s->n;
 }
 

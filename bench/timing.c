@@ -8,15 +8,7 @@
 #include <string.h>
 #include <time.h>
 
-#if defined(__has_include)
-#if __has_include(<valgrind/callgrind.h>)
-#include <valgrind/callgrind.h>
-#endif
-#endif
-#ifndef CALLGRIND_ZERO_STATS
-#define CALLGRIND_ZERO_STATS
-#define CALLGRIND_DUMP_STATS_AT(name) ((void)(name))
-#endif
+#include "callgrind.h"
 
 #include "approaches.h"
 
@@ -38,7 +30,7 @@ struct timing_data {
     c2d_status *st;
 };
 
-static double now_ns(void)
+double bench_now_ns(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -166,9 +158,9 @@ static double time_pass(timing_data *t, const contender *k)
 {
     double t0, t1;
     restore(t, k);
-    t0 = now_ns();
+    t0 = bench_now_ns();
     run_pass(t, k, t->n);
-    t1 = now_ns();
+    t1 = bench_now_ns();
     return (t1 - t0) / t->n;
 }
 
@@ -326,7 +318,7 @@ void roof_run(int is_float, size_t count, int reps, roof_result *out)
         for (which = 0; which < 2; which++) {
             double t0, t1;
             for (k = 0; k < 4; k++) memcpy(arr[C2D_SOA_VEL_AX + k], v0[k], count * elt);
-            t0 = now_ns();
+            t0 = bench_now_ns();
             if (is_float) {
                 if (which == 0) bench_sink += (double)c2d_collide_batchf(&pf, count, 1.0f, st);
                 else roof_kernelf(&pf, count, st);
@@ -334,7 +326,7 @@ void roof_run(int is_float, size_t count, int reps, roof_result *out)
                 if (which == 0) bench_sink += (double)c2d_collide_batch(&p, count, 1.0, st);
                 else roof_kernel(&p, count, st);
             }
-            t1 = now_ns();
+            t1 = bench_now_ns();
             (which == 0 ? tb : tr)[rep] = t1 - t0;
         }
     }

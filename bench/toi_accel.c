@@ -121,16 +121,9 @@ static void evaluate_family(int f, int is_float, int n, toia_call *keep, toia_st
     }
 }
 
-static double now_ns(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
-}
-
 static double pass_ns(toia_solver solve, const toia_call *c, long n)
 {
-    double sink = 0, t0 = now_ns();
+    double sink = 0, t0 = bench_now_ns();
     long i;
     for (i = 0; i < n; i++) {
         double t = 0;
@@ -138,7 +131,7 @@ static double pass_ns(toia_solver solve, const toia_call *c, long n)
         sink += t + (double)s;
     }
     bench_sink = sink;
-    return (now_ns() - t0) / (double)n;
+    return (bench_now_ns() - t0) / (double)n;
 }
 
 static int cmp_double(const void *x, const void *y)
