@@ -33,10 +33,11 @@ B := build/san
 endif
 
 # One translation unit per variant (lib/collide2d.c, double.c, float.c,
-# fixed.c) over shared template headers (lib/real_*.h).
+# fixed.c) over shared template headers (lib/real/).
 LIB_SRC := $(wildcard lib/*.c)
 LIB_HDR := include/collide2d.h
-LIB_DEPS := $(LIB_HDR) $(wildcard lib/*.h)
+LIB_TEMPLATES := $(wildcard lib/*.h lib/real/*.h lib/real/*/*.h)
+LIB_DEPS := $(LIB_HDR) $(LIB_TEMPLATES)
 LIB_OBJ := $(patsubst lib/%.c,$(B)/obj/%.o,$(LIB_SRC))
 LIB_PIC := $(patsubst lib/%.c,$(B)/obj/%.pic.o,$(LIB_SRC))
 STATIC := $(B)/libcollide2d.a
@@ -84,7 +85,7 @@ $(B)/collide2d.pc: collide2d.pc.in FORCE
 # The whole library as one self-contained source, for firmware trees that
 # take one .c file beside the header (scripts/amalgamate.sh).
 amalgamate: $(AMALGAMATION)
-$(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(wildcard lib/*.h)
+$(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(LIB_TEMPLATES)
 	@mkdir -p $(@D)
 	sh scripts/amalgamate.sh $@
 

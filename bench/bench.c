@@ -613,7 +613,7 @@ static void why(FILE *f, const results *res)
         const rstat *ax = r->ba[BA_COLLIDE][BS_AXIS_UNEQUAL], *pd = r->ba[BA_COLLIDE][BS_AXIS_PADDLE];
         const rstat *bw = r->ba[BA_BATCHF][BS_WALLS], *tx = r->ba_toi[0][1], *ne = r->ba[BA_NORMAL][BS_EXTREME];
         fprintf(f, "- Slower than before, axis-aligned impacts (now correctly rounded): a moving wall at e < 1 and "
-                   "unequal masses first run the filter of `lib/real_round.h` (the result in double length with a "
+                   "unequal masses first run the filter of `lib/real/arith/round.h` (the result in double length with a "
                    "rigorous error bound, kept when clear of every rounding boundary; the exact quotient "
                    "`c2d_round_quotient`, which alone made them 7922 and 28845 instructions per call, only near a boundary, on ties and "
                    "outside the filter's exponent window): %s and %s instructions against %s before. Swaps and "

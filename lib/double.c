@@ -1,19 +1,19 @@
 /* SPDX-License-Identifier: MIT */
 /* double.c - the double-precision API: binary64's parameters, the shared
- * templates instantiated for it (real_*.h, derivations there), and the
+ * templates instantiated for it (real/, derivations there), and the
  * public functions written out by name.  C2D_NO_DOUBLE leaves it empty. */
 #include "internal.h"
 
 #ifndef C2D_NO_DOUBLE
 
-#include "real_double.h"
+#include "real/double.h"
 
 c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution)
 {
     return c2d_real_collide(a, b, restitution);
 }
 
-/* The normal as two scalars (real_collide.h, c2d_collide_normal_front):
+/* The normal as two scalars (real/collide/collide.h, c2d_collide_normal_front):
  * by address, gcc passes the 16-byte c2d_vec2 through memory. */
 c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution)
 {

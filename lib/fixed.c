@@ -15,7 +15,7 @@
  *   outside int32 is C2D_RANGE, never a wrap-around.
  *
  * TIME OF IMPACT
- *   As in real_toi.h: with d = pb - pa, v = vb - va and the miss distance
+ *   As in real/toi.h: with d = pb - pa, v = vb - va and the miss distance
  *   h = |d x v| / |v|, the earliest contact is t = c / (-d.v + |v| sqrt(R^2 - h^2))
  *   with c = (|d| - R)(|d| + R).  d (with R) and v are each scaled by a power
  *   of two so their largest component has 29 bits; t scales back by the

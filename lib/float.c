@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* float.c - the single-precision API: binary32's parameters, the shared
- * templates instantiated for it (real_*.h, derivations there), and the
+ * templates instantiated for it (real/, derivations there), and the
  * public functions written out by name.  Float arithmetic only: nothing here
  * uses or links double, so single-precision FPUs (Cortex-M4F) run it in
  * hardware.  C2D_NO_FLOAT leaves it empty. */
@@ -8,7 +8,7 @@
 
 #ifndef C2D_NO_FLOAT
 
-#include "real_float.h"
+#include "real/float.h"
 
 c2d_status c2d_collidef(c2d_bodyf *a, c2d_bodyf *b, float restitution)
 {

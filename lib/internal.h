@@ -5,7 +5,7 @@
  * The library is one translation unit per variant (collide2d.c: version and
  * status names; double.c, float.c: the floating-point API; fixed.c: Q16.16).
  * double.c and float.c define their type's parameters (C2D_R_*) and include
- * the same template headers (real_*.h), which are written once against the
+ * the same template headers (real/), which are written once against the
  * names c2d_real, c2d_real_body, ...; every static function they define is
  * local to its translation unit, so both instances use the same names and
  * every public function is written out by name in double.c and float.c.
@@ -44,8 +44,8 @@ float sqrtf(float x);
 #define C2D_COLD static
 #endif
 
-/* Run-time dispatch (real_batch.h: gcc's target_clones, an ifunc resolved
- * by the loader; real_collide.h: the FMA tier): only gcc on hosted x86-64
+/* Run-time dispatch (real/collide/batch.h: gcc's target_clones, an ifunc resolved
+ * by the loader; real/collide/collide.h: the FMA tier): only gcc on hosted x86-64
  * ELF builds, off with C2D_NO_DISPATCH, never in freestanding or MCU
  * builds.  Not clang: clang 14 gives a static function's target_clones
  * resolver a global name, so double.c's and float.c's kernels would clash
@@ -56,7 +56,7 @@ float sqrtf(float x);
 #endif
 
 /* What the fast path (and tier 2) concluded.  Internal only: never mixed
- * with the public c2d_status; c2d_verdict_status (real_fast.h) converts the
+ * with the public c2d_status; c2d_verdict_status (real/collide/fast.h) converts the
  * final ones. */
 typedef enum c2d_verdict {
     C2D_VERDICT_OK,         /* resolved: the results are ready */
@@ -64,7 +64,7 @@ typedef enum c2d_verdict {
     C2D_VERDICT_RANGE,      /* valid, a result overflows */
     C2D_VERDICT_ACCURATE,   /* valid and in the window, but d cancels: recompute d in double-double */
     C2D_VERDICT_GENERAL,    /* outside the window: validate in full and take the general path */
-    C2D_VERDICT_AXIS        /* the normal has a zero component: correctly rounded (real_axis.h) */
+    C2D_VERDICT_AXIS        /* the normal has a zero component: correctly rounded (real/collide/axis.h) */
 } c2d_verdict;
 
 /* "No exponent": the exponent reported for a zero vector (int is >= 16 bits;

@@ -4,7 +4,7 @@
 # (for firmware trees that take one .c beside include/collide2d.h).
 #
 # lib/ is one translation unit per variant; double.c and float.c include the
-# same template headers (lib/real_*.h), whose static names and types are the
+# same template headers (lib/real/), whose static names and types are the
 # same in both.  In one file they would clash, so the float instance is
 # wrapped in generated #defines that rename every identifier the templates
 # declare (c2d_two_sum -> c2d_two_sum_f32, ...), and the parameters and include
@@ -15,28 +15,41 @@ out=$1
 lib=$(dirname "$0")/../lib
 tmp=$out.tmp
 
-# inline FILE: FILE with each #include "real_*.h" replaced by that header,
-# itself inlined (real_double.h and real_float.h include the templates), and
-# the include of internal.h dropped (it is emitted once, first).
+# inline FILE: FILE with each #include "..." of a file beside it (the
+# format's parameters, real/double.h and real/float.h; their ordered list,
+# real/instance.h; the templates it names) replaced by that file, itself
+# inlined, and the include of internal.h dropped (it is emitted once, first).
 inline() {
+    dir=$(dirname "$1")
     while IFS= read -r line || [ -n "$line" ]; do
         case $line in
             '#include "internal.h"'*) ;;
-            '#include "real_'*'.h"'*)
+            '#include "'*'"'*)
                 name=${line#\#include \"}
                 name=${name%%\"*}
-                echo "/* ---- lib/$name */"
-                inline "$lib/$name"
+                if [ -f "$dir/$name" ]; then
+                    rel="$dir/$name"
+                    echo "/* ---- lib/${rel#"$lib"/} */"
+                    inline "$dir/$name"
+                    dir=$(dirname "$1")
+                else
+                    printf '%s\n' "$line"
+                fi
                 ;;
             *) printf '%s\n' "$line" ;;
         esac
     done <"$1"
 }
 
+# Every template header (lib/real/ and its folders).
+templates() {
+    find "$lib/real" -name '*.h' | LC_ALL=C sort
+}
+
 # Identifiers the templates declare at file scope: functions, typedef
 # names, struct/union/enum tags and enum constants.
 template_names() {
-    cat "$lib"/real_*.h | awk '
+    cat $(templates) | awk '
         /^(__attribute__[^ ]* )?(static|C2D_HOT|C2D_COLD)[^(=]*[ *]c2d_[a-z0-9_]+\(/ {
             s = $0; sub(/^__attribute__[^ ]* /, "", s); sub(/\(.*/, "", s); n = split(s, w, /[ *]+/); print w[n] }
         /^typedef / { s = $0; sub(/.*\}/, "", s); sub(/;.*/, "", s); n = split(s, w, /[ *{}]+/); print w[n]
@@ -49,11 +62,11 @@ template_names() {
         sort -u
 }
 
-# Macros the instances define (their parameters: real_double.h,
-# real_float.h) and the templates' include guards.
+# Macros the instances define (their parameters: real/double.h,
+# real/float.h) and the templates' include guards.
 instance_macros() {
-    { sed -n 's/^#define \(C2D_R_[A-Z0-9_]*\).*/\1/p' "$lib/real_double.h" "$lib/real_float.h"
-      sed -n 's/^#define \(C2D_REAL_[A-Z_]*_H\)$/\1/p' "$lib"/real_*.h; } | sort -u
+    { sed -n 's/^#define \(C2D_R_[A-Z0-9_]*\).*/\1/p' "$lib/real/double.h" "$lib/real/float.h"
+      sed -n 's/^#define \(C2D_REAL_[A-Z_]*_H\)$/\1/p' $(templates); } | sort -u
 }
 
 {

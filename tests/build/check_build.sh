@@ -60,7 +60,7 @@ same_public_symbols() {
 check "amalgamation defines the same public symbols as lib/" same_public_symbols
 no_self_or_c_include() {
     bad=$(grep -rn --include='*.[ch]' --include='*.cpp' '#include *"[^"]*\.c"' lib include referee tests bench)
-    for f in lib/*; do
+    for f in $(find lib -type f -name "*.[ch]"); do
         grep -q "#include *\"$(basename "$f")\"" "$f" && bad="$bad $f includes itself"
     done
     [ -z "$bad" ] || { echo "$bad"; return 1; }

@@ -5,7 +5,7 @@
 #   make lint-tidy       clang-tidy-14, warnings are errors
 #   make lint-cppcheck   cppcheck 2.10, any finding is an error
 # lib/ is checked as written, one translation unit at a time (each
-# double.c / float.c instance includes the real_*.h templates).
+# double.c / float.c instance includes the real/ templates).
 # The demo part runs only when demo/*.cpp exist; it is C++17 against Debian's
 # Box2D and SDL2 headers, taken as system headers (their own macros are
 # not ours to lint).  Each prints "lint-NAME: N passed, N failed" (one per

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* type_double.h - the double variant's names for the test templates
  * (soa_template.h, tests/vectors/check_template.h, tests/fuzz/fuzz_template.h),
- * as lib/double.c names its type for lib/real_*.h.  Included once, first, by
+ * as lib/double.c names its type for lib/real/.  Included once, first, by
  * each double translation unit of the tests (soa_double.c, check_double.c,
  * fuzz_double.c); macros that name what a program does not link are never
  * expanded there. */

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* type_float.h - the float variant's names for the test templates
  * (soa_template.h, tests/vectors/check_template.h, tests/fuzz/fuzz_template.h),
- * as lib/float.c names its type for lib/real_*.h.  Included once, first, by
+ * as lib/float.c names its type for lib/real/.  Included once, first, by
  * each float translation unit of the tests (soa_float.c, check_float.c,
  * fuzz_float.c); macros that name what a program does not link are never
  * expanded there. */

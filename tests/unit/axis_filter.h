@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* axis_filter.h - the body of test_axis_filter.c (double) and
  * test_axis_filterf.c (float): the filter in front of the exact rounding
- * of axis-aligned impacts (lib/real_round.h), tested white-box against the
+ * of axis-aligned impacts (lib/real/arith/round.h), tested white-box against the
  * exact referee.  The including file instantiates the library's templates
  * for its type (as lib/double.c / lib/float.c do) and defines FILTER_FLOAT
  * (0 or 1).

@@ -1,14 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /* The filter in front of the exact rounding of axis-aligned impacts, double
  * (body in axis_filter.h): the library's templates instantiated here with
- * lib/double.c's parameters (lib/real_double.h), so the filter's decisions can
+ * lib/double.c's parameters (lib/real/double.h), so the filter's decisions can
  * be counted. */
 #include "check.h"
 #include "../../lib/internal.h"
 
 #pragma GCC diagnostic ignored "-Wunused-function" /* the templates hold more than the filter */
 
-#include "../../lib/real_double.h"
+#include "../../lib/real/double.h"
 
 #define FILTER_FLOAT 0
 #include "axis_filter.h"

@@ -1,14 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /* The filter in front of the exact rounding of axis-aligned impacts, float
  * (body in axis_filter.h): the library's templates instantiated here with
- * lib/float.c's parameters (lib/real_float.h), so the filter's decisions can
+ * lib/float.c's parameters (lib/real/float.h), so the filter's decisions can
  * be counted. */
 #include "check.h"
 #include "../../lib/internal.h"
 
 #pragma GCC diagnostic ignored "-Wunused-function" /* the templates hold more than the filter */
 
-#include "../../lib/real_float.h"
+#include "../../lib/real/float.h"
 
 #define FILTER_FLOAT 1
 #include "axis_filter.h"

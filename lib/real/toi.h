@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* real_toi.h - template: c2d_time_of_impact, two disks moving with constant
- * velocities.  Needs real_bits.h, real_exact.h and real_sign.h first.
+/* real/toi.h - template: c2d_time_of_impact, two disks moving with constant
+ * velocities.  Needs real/arith/bits.h, real/arith/exact.h and real/arith/sign.h first.
  *
  * DERIVATION
  *   With d = pb - pa and v = vb - va, the disks touch when |d + v t| = R,
@@ -26,7 +26,7 @@
  *   and 4.  The fast path decides each from its floating value when the
  *   value clears a bound on its rounding error (FILTERS below); otherwise
  *   the exact path (c2d_toi_exact) evaluates them as exact sums of
- *   products (real_sign.h), so the status is exact over the whole range.
+ *   products (real/arith/sign.h), so the status is exact over the whole range.
  *
  * RANGE
  *   The fast path takes d and v exactly (TwoSum, as double-doubles) and
@@ -53,7 +53,7 @@
  * cleared when a low part fell below the normal range in the scaling. */
 static int c2d_scaled_diff2(c2d_real x1, c2d_real x0, c2d_real y1, c2d_real y0, c2d_real *h, c2d_real *l, int *exact)
 {
-    c2d_xf hx, lx, hy, ly;
+    c2d_ext hx, lx, hy, ly;
     int k;
     c2d_exact_diff(x1, x0, &hx, &lx);
     c2d_exact_diff(y1, y0, &hy, &ly);
@@ -74,8 +74,8 @@ static int c2d_scaled_diff2(c2d_real x1, c2d_real x0, c2d_real y1, c2d_real y0, 
 /* d = pb - pa and v = vb - va exactly as hi + lo per component, and R, all
  * as extended numbers: [axis][0] hi, [axis][1] lo. */
 typedef struct c2d_toi_pair {
-    c2d_xf d[2][2], v[2][2];
-    c2d_xf r;
+    c2d_ext d[2][2], v[2][2];
+    c2d_ext r;
 } c2d_toi_pair;
 
 static void c2d_toi_pair_load(c2d_toi_pair *p, const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum)
@@ -84,11 +84,11 @@ static void c2d_toi_pair_load(c2d_toi_pair *p, const c2d_real_body *a, const c2d
     c2d_exact_diff(b->pos.y, a->pos.y, &p->d[1][0], &p->d[1][1]);
     c2d_exact_diff(b->vel.x, a->vel.x, &p->v[0][0], &p->v[0][1]);
     c2d_exact_diff(b->vel.y, a->vel.y, &p->v[1][0], &p->v[1][1]);
-    c2d_xf_set(&p->r, radius_sum, 0);
+    c2d_ext_set(&p->r, radius_sum, 0);
 }
 
 /* r = d.v, correctly rounded, sign exact. */
-static void c2d_toi_dot(c2d_xf *r, c2d_acc *acc, const c2d_toi_pair *p)
+static void c2d_toi_dot(c2d_ext *r, c2d_acc *acc, const c2d_toi_pair *p)
 {
     c2d_acc_clear(acc);
     c2d_acc_pair_product(acc, p->d[0], p->v[0], 1);
@@ -105,7 +105,7 @@ static void c2d_toi_cross(c2d_acc *acc, const c2d_toi_pair *p)
 }
 
 /* r = |d|^2 - R^2, correctly rounded, sign exact. */
-static void c2d_toi_gap(c2d_xf *r, c2d_acc *acc, const c2d_toi_pair *p)
+static void c2d_toi_gap(c2d_ext *r, c2d_acc *acc, const c2d_toi_pair *p)
 {
     c2d_acc_clear(acc);
     c2d_acc_pair_product(acc, p->d[0], p->d[0], 1);
@@ -117,10 +117,10 @@ static void c2d_toi_gap(c2d_xf *r, c2d_acc *acc, const c2d_toi_pair *p)
 enum { C2D_TOI_PARTS = 16 }; /* exact components of |v|^2 or d x v, at most */
 
 /* Compress acc's exact sum and copy its components to parts; their count. */
-static int c2d_toi_parts(c2d_xf *parts, c2d_acc *acc)
+static int c2d_toi_parts(c2d_ext *parts, c2d_acc *acc)
 {
     int i, n = c2d_compress(acc->atom, acc->n);
-    for (i = 0; i < n; i++) c2d_xf_copy(&parts[i], &acc->atom[i]);
+    for (i = 0; i < n; i++) c2d_ext_copy(&parts[i], &acc->atom[i]);
     return n;
 }
 
@@ -130,9 +130,9 @@ static int c2d_toi_parts(c2d_xf *parts, c2d_acc *acc)
  * accumulator even after compression (never seen; it needs inputs whose
  * exact differences scatter over many exponent ranges) is the value formed
  * from the rounded factors instead. */
-static void c2d_toi_disc(c2d_xf *r, c2d_acc *acc, const c2d_toi_pair *p)
+static void c2d_toi_disc(c2d_ext *r, c2d_acc *acc, const c2d_toi_pair *p)
 {
-    c2d_xf vv[C2D_TOI_PARTS], cr[C2D_TOI_PARTS], r2[2], twice;
+    c2d_ext vv[C2D_TOI_PARTS], cr[C2D_TOI_PARTS], r2[2], twice;
     c2d_real lo;
     int i, j, nv, nc;
     c2d_acc_clear(acc);
@@ -141,14 +141,14 @@ static void c2d_toi_disc(c2d_xf *r, c2d_acc *acc, const c2d_toi_pair *p)
     nv = c2d_toi_parts(vv, acc);
     c2d_toi_cross(acc, p);
     nc = c2d_toi_parts(cr, acc);
-    c2d_xf_set(&r2[0], c2d_two_prod(p->r.m, p->r.m, &lo), 2 * p->r.e);
-    c2d_xf_set(&r2[1], lo, 2 * p->r.e);
+    c2d_ext_set(&r2[0], c2d_two_prod(p->r.m, p->r.m, &lo), 2 * p->r.e);
+    c2d_ext_set(&r2[1], lo, 2 * p->r.e);
     c2d_acc_clear(acc);
     for (i = 0; i < 2; i++)
         for (j = 0; j < nv; j++) c2d_acc_product(acc, &r2[i], &vv[j], 1);
     for (i = 0; i < nc; i++) {
         for (j = 0; j < i; j++) {
-            c2d_xf_set(&twice, cr[j].m, cr[j].e + 1);
+            c2d_ext_set(&twice, cr[j].m, cr[j].e + 1);
             c2d_acc_product(acc, &cr[i], &twice, -1);
         }
         c2d_acc_product(acc, &cr[i], &cr[i], -1);
@@ -156,11 +156,11 @@ static void c2d_toi_disc(c2d_xf *r, c2d_acc *acc, const c2d_toi_pair *p)
     if (acc->full == 0) {
         c2d_acc_value(r, acc);
     } else {
-        c2d_xf v2 = c2d_exact_sum(vv, nv), c = c2d_exact_sum(cr, nc), rr;
-        c2d_xf_mul(&rr, &p->r, &p->r);
-        c2d_xf_mul(&rr, &rr, &v2);
-        c2d_xf_mul(&c, &c, &c);
-        c2d_xf_add(r, &rr, &c, -1);
+        c2d_ext v2 = c2d_exact_sum(vv, nv), c = c2d_exact_sum(cr, nc), rr;
+        c2d_ext_mul(&rr, &p->r, &p->r);
+        c2d_ext_mul(&rr, &rr, &v2);
+        c2d_ext_mul(&c, &c, &c);
+        c2d_ext_add(r, &rr, &c, -1);
     }
 }
 
@@ -170,24 +170,24 @@ C2D_COLD c2d_status c2d_toi_exact(const c2d_real_body *a, const c2d_real_body *b
 {
     c2d_toi_pair p;
     c2d_acc acc;
-    c2d_xf dv, gap, disc, tt;
+    c2d_ext dv, gap, disc, tt;
     c2d_real value;
     c2d_toi_pair_load(&p, a, b, radius_sum);
     if (p.v[0][0].m == 0 && p.v[1][0].m == 0) return C2D_SEPARATING; /* no relative motion */
     if (p.d[0][0].m == 0 && p.d[1][0].m == 0) return C2D_SEPARATING; /* coincident: not approaching */
     c2d_toi_dot(&dv, &acc, &p);
     c2d_toi_gap(&gap, &acc, &p);
-    if (c2d_xf_sign(&gap) <= 0) {
-        if (c2d_xf_sign(&dv) >= 0) return C2D_SEPARATING;
+    if (c2d_ext_sign(&gap) <= 0) {
+        if (c2d_ext_sign(&dv) >= 0) return C2D_SEPARATING;
         *t = 0;
         return C2D_OK;
     }
-    if (c2d_xf_sign(&dv) >= 0) return C2D_SEPARATING;
+    if (c2d_ext_sign(&dv) >= 0) return C2D_SEPARATING;
     c2d_toi_disc(&disc, &acc, &p);
-    if (c2d_xf_sign(&disc) <= 0) return C2D_SEPARATING; /* misses, or grazes */
-    c2d_xf_sqrt(&tt, &disc);
-    c2d_xf_add(&tt, &tt, &dv, -1);
-    c2d_xf_div(&tt, &gap, &tt);
+    if (c2d_ext_sign(&disc) <= 0) return C2D_SEPARATING; /* misses, or grazes */
+    c2d_ext_sqrt(&tt, &disc);
+    c2d_ext_add(&tt, &tt, &dv, -1);
+    c2d_ext_div(&tt, &gap, &tt);
     value = c2d_scale2(tt.m, tt.e);
     if (!(value <= C2D_R_MAX)) return C2D_RANGE;
     *t = value;

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* real_toia_num.h - template: the time of impact under acceleration, part 1
+/* real/toia/num.h - template: the time of impact under acceleration, part 1
  * of 7: its types and exact sums of products in a sliding exponent window.
- * Numbers m 2^e are real_bits.h's c2d_xf, times (h + l) 2^e real_dd.h's
- * c2d_dx (double length, unbounded exponent).  The method and the order of
- * the parts: real_toia.h.  Needs real_bits.h, real_exact.h, real_sign.h and
- * real_dd.h first. */
+ * Numbers m 2^e are real/arith/bits.h's c2d_ext, times (h + l) 2^e real/arith/dd.h's
+ * c2d_dd (double length, unbounded exponent).  The method and the order of
+ * the parts: real/toia/solve.h.  Needs real/arith/bits.h, real/arith/exact.h, real/arith/sign.h and
+ * real/arith/dd.h first. */
 #ifndef C2D_REAL_TOIA_NUM_H
 #define C2D_REAL_TOIA_NUM_H
 /* ===================================================================== */
@@ -56,7 +56,7 @@ typedef struct c2d_toia_ev {
 typedef struct c2d_toia_ctx {
     c2d_real m[3][2], ml[3][2];
     int ex[3], nz[3];
-    c2d_xf r;
+    c2d_ext r;
     const c2d_real_body *ba, *bb;
     const c2d_real_vec *aa, *ab;
 } c2d_toia_ctx;
@@ -76,7 +76,7 @@ typedef struct c2d_toia_fg {
 
 /* A g-root bracket: g changes sign on [lo, hi]; f and g at both ends. */
 typedef struct c2d_toia_br {
-    c2d_dx lo, hi;
+    c2d_dd lo, hi;
     c2d_toia_fg elo, ehi;
 } c2d_toia_br;
 
@@ -106,7 +106,7 @@ static int c2d_toia_fdiv(int a, int b)
 }
 
 /* sign(a - b). */
-static int c2d_toia_t_cmp(const c2d_dx *a, const c2d_dx *b)
+static int c2d_toia_t_cmp(const c2d_dd *a, const c2d_dd *b)
 {
     c2d_real ah, al, bh, bl, s, err;
     int k;
@@ -132,30 +132,30 @@ static int c2d_toia_t_cmp(const c2d_dx *a, const c2d_dx *b)
 }
 
 /* t += dm 2^de, in double length. */
-static void c2d_toia_t_add(c2d_dx *t, c2d_real dm, int de)
+static void c2d_toia_t_add(c2d_dd *t, c2d_real dm, int de)
 {
-    c2d_xf d;
+    c2d_ext d;
     c2d_real s, err, dv;
     int k;
-    c2d_xf_set(&d, dm, de);
+    c2d_ext_set(&d, dm, de);
     if (d.m == 0) return;
     if (t->h == 0) {
-        c2d_dx_set(t, d.m, 0, d.e);
+        c2d_dd_set(t, d.m, 0, d.e);
         return;
     }
     k = d.e - t->e;
     if (k < -(2 * C2D_R_MANT + 8)) return; /* below t's low part */
     if (k > 2 * C2D_R_MANT + 8) {          /* t below d's low part */
-        c2d_dx_set(t, d.m, 0, d.e);
+        c2d_dd_set(t, d.m, 0, d.e);
         return;
     }
     dv = c2d_scale2(d.m, k);
     s = c2d_two_sum(t->h, dv, &err);
-    c2d_dx_set(t, s, err + t->l, t->e);
+    c2d_dd_set(t, s, err + t->l, t->e);
 }
 
 /* The time rounded to the working format, or C2D_R_MAX * 2 (Inf) beyond it. */
-static c2d_real c2d_toia_t_value(const c2d_dx *t)
+static c2d_real c2d_toia_t_value(const c2d_dd *t)
 {
     if (t->h == 0) return 0;
     if (t->e > C2D_R_EMAX) return C2D_R_MAX * 2;
@@ -164,16 +164,16 @@ static c2d_real c2d_toia_t_value(const c2d_dx *t)
 
 /* Double-length arithmetic on (h + l) 2^e (the classical double-double
  * algorithms with an exponent; each within a few u^2). */
-static void c2d_toia_t_sum(c2d_dx *r, const c2d_dx *a, const c2d_dx *b)
+static void c2d_toia_t_sum(c2d_dd *r, const c2d_dd *a, const c2d_dd *b)
 {
     const c2d_real pa[2] = {a->h, a->l}, pb[2] = {b->h, b->l};
     const int k = a->e - b->e;
     if (b->h != 0 && (a->h == 0 || k < -(2 * C2D_R_MANT + 8))) {
-        c2d_dx_copy(r, b);
+        c2d_dd_copy(r, b);
     } else if (b->h == 0 || k > 2 * C2D_R_MANT + 8) {
-        c2d_dx_copy(r, a);
+        c2d_dd_copy(r, a);
     } else {
-        c2d_dx_sum_aligned(r, pa, a->e, pb, b->e);
+        c2d_dd_sum_aligned(r, pa, a->e, pb, b->e);
     }
 }
 
@@ -182,7 +182,7 @@ static void c2d_toia_t_sum(c2d_dx *r, const c2d_dx *a, const c2d_dx *b)
  * the smallest positive time 2^(eb - 3 MANT) below which nothing is
  * resolved (bisection of [0, b] then reaches every scale in a few dozen
  * steps; the Newton phase does the rest). */
-static void c2d_toia_t_mid(c2d_dx *m, const c2d_dx *a, const c2d_dx *b)
+static void c2d_toia_t_mid(c2d_dd *m, const c2d_dd *a, const c2d_dd *b)
 {
     int ea = a->h == 0 ? b->e - 4 * C2D_R_MANT : a->e;
     if (a->h != 0 && b->e - a->e <= 1) {
@@ -190,10 +190,10 @@ static void c2d_toia_t_mid(c2d_dx *m, const c2d_dx *a, const c2d_dx *b)
         int k = b->e - a->e; /* 0 or 1 */
         h = c2d_two_sum(c2d_scale2(a->h, -k), b->h, &l);
         l += c2d_scale2(a->l, -k) + b->l;
-        c2d_dx_set(m, h, l, b->e - 1);
+        c2d_dd_set(m, h, l, b->e - 1);
         return;
     }
-    c2d_dx_set(m, (c2d_real)1.5, 0, c2d_toia_fdiv(ea + b->e, 2));
+    c2d_dd_set(m, (c2d_real)1.5, 0, c2d_toia_fdiv(ea + b->e, 2));
 }
 /* ===================================================================== */
 /* Exact sums of products (Shewchuk expansions in a sliding window)      */
@@ -222,22 +222,22 @@ static int c2d_toia_grow(c2d_real *w, int n, c2d_real b)
 /* Append sgn * x * y * 2^shift as (at most) two atoms, exactly: the
  * significands' product is hi + lo by TwoProduct (both in [1, 4) or
  * a multiple of 2^-2MANT: neither over- nor underflows). */
-static int c2d_toia_push(c2d_real *m, int *e, int n, const c2d_xf *x, const c2d_xf *y, int shift, int sgn)
+static int c2d_toia_push(c2d_real *m, int *e, int n, const c2d_ext *x, const c2d_ext *y, int shift, int sgn)
 {
     c2d_real lo, hi;
-    c2d_xf z;
+    c2d_ext z;
     if (x->m == 0 || y->m == 0) return n;
     hi = c2d_two_prod(x->m, y->m, &lo);
     if (sgn < 0) {
         hi = -hi;
         lo = -lo;
     }
-    c2d_xf_set(&z, hi, x->e + y->e + shift);
+    c2d_ext_set(&z, hi, x->e + y->e + shift);
     m[n] = z.m;
     e[n] = z.e;
     n++;
     if (lo != 0) {
-        c2d_xf_set(&z, lo, x->e + y->e + shift);
+        c2d_ext_set(&z, lo, x->e + y->e + shift);
         m[n] = z.m;
         e[n] = z.e;
         n++;
@@ -246,7 +246,7 @@ static int c2d_toia_push(c2d_real *m, int *e, int n, const c2d_xf *x, const c2d_
 }
 
 /* Append sgn * x as one atom. */
-static int c2d_toia_push1(c2d_real *m, int *e, int n, const c2d_xf *x, int sgn)
+static int c2d_toia_push1(c2d_real *m, int *e, int n, const c2d_ext *x, int sgn)
 {
     if (x->m == 0) return n;
     m[n] = sgn < 0 ? -x->m : x->m;
@@ -268,7 +268,7 @@ static int c2d_toia_push1(c2d_real *m, int *e, int n, const c2d_xf *x, int sgn)
  * Works in place: the window's atoms are moved to the front and the
  * expansion grows over them (after reading atom j it has at most j + 1
  * components), the others behind.  The atoms are overwritten. */
-C2D_COLD int c2d_toia_xsum(c2d_real *m, int *e, int n, c2d_real *hi, c2d_real *lo, int *k_out)
+C2D_COLD int c2d_toia_ext_sum(c2d_real *m, int *e, int n, c2d_real *hi, c2d_real *lo, int *k_out)
 {
     for (;;) {
         int i, j, k = 0, nw = 0, top = 0, found = 0;
@@ -321,8 +321,8 @@ C2D_COLD int c2d_toia_xsum(c2d_real *m, int *e, int n, c2d_real *hi, c2d_real *l
         }
         /* the window's components become atoms again, the rest follow */
         for (i = 0; i < k; i++) {
-            c2d_xf z;
-            c2d_xf_set(&z, m[i], top);
+            c2d_ext z;
+            c2d_ext_set(&z, m[i], top);
             m[i] = z.m;
             e[i] = z.e;
         }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* real_fast.h - template: the branch-free fast path of a collision, shared
- * by the scalar calls and the batch kernel.  Needs real_bits.h first.
+/* real/collide/fast.h - template: the branch-free fast path of a collision, shared
+ * by the scalar calls and the batch kernel.  Needs real/arith/bits.h first.
  *
  * THE FORMULA (docs/METHOD.md derives it)
  *   With n any vector from a towards b, d = (vb - va).n, weights
@@ -160,7 +160,7 @@ static inline int c2d_quick_wall(const c2d_pair *p, c2d_real *fa, c2d_real *fb)
 }
 
 /* OK (out written) or SEPARATING when the accept test decides; AXIS when
- * the normal has a zero component (real_axis.h); ACCURATE for a valid pair
+ * the normal has a zero component (real/collide/axis.h); ACCURATE for a valid pair
  * inside the window whose d cancels (the double-double tier's case); else
  * GENERAL: the caller then asks the fast path (c2d_fast) as before. */
 C2D_HOT c2d_verdict c2d_quick(const c2d_pair *p, c2d_real e1, c2d_real *out)

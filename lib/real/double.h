@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* real_double.h - binary64's parameters and the shared templates (real_*.h,
+/* real/double.h - binary64's parameters and the shared templates (real/,
  * derivations there) instantiated for them: what lib/double.c builds its
  * public functions on, and what a white-box test includes to reach the
  * internals.  Needs internal.h first. */
@@ -29,35 +29,17 @@
 #if defined(__FP_FAST_FMA) && defined(__GNUC__)
 #define C2D_R_FMA __builtin_fma /* TwoProduct in one instruction; same bits */
 #elif defined(C2D_DISPATCH)
-#define C2D_R_FUSED __builtin_fma /* TwoProduct by FMA where run-time dispatch finds it (real_exact.h) */
+#define C2D_R_FUSED __builtin_fma /* TwoProduct by FMA where run-time dispatch finds it (real/arith/exact.h) */
 #endif
 #define C2D_R_EXP_K 900      /* fast window: |products| summed in [2^-900, 2^900] */
 #define C2D_R_EXP_KAPPA2 41  /* tier-2 d trusted if it cancels by at most 2^41 */
 #define C2D_R_WINDOW 600     /* exact-sum window, binades */
 #define C2D_R_MARGIN 70      /* window sum must dominate the rest by 2^70 */
 
-#define C2D_R_QUICK 200        /* front end's window: [2^-200, 2^200] (real_fast.h) */
+#define C2D_R_QUICK 200        /* front end's window: [2^-200, 2^200] (real/collide/fast.h) */
 
-#define C2D_R_TOI_WINDOW 100   /* time of impact unscaled within [2^-100, 2^100] (real_toi.h) */
+#define C2D_R_TOI_WINDOW 100   /* time of impact unscaled within [2^-100, 2^100] (real/toi.h) */
 
-#include "real_bits.h"
-#include "real_exact.h"
-#include "real_sign.h"
-#include "real_round.h"
-#include "real_fast.h"
-#include "real_general.h"
-#include "real_collide.h"
-#include "real_axis.h"
-#include "real_batch.h"
-#include "real_toi.h"
-#include "real_dd.h"
-#include "real_rough.h"
-#include "real_toia_num.h"
-#include "real_toia_problem.h"
-#include "real_toia_eval.h"
-#include "real_toia_newton.h"
-#include "real_toia_turns.h"
-#include "real_toia_scan.h"
-#include "real_toia.h"
+#include "instance.h"
 
 #endif /* C2D_REAL_DOUBLE_H */

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* real_axis.h - template: impacts whose normal lies on an axis, every
- * output correctly rounded.  Needs real_collide.h, real_sign.h and
- * real_round.h first.
+/* real/collide/axis.h - template: impacts whose normal lies on an axis, every
+ * output correctly rounded.  Needs real/collide/collide.h, real/arith/sign.h and
+ * real/arith/round.h first.
  *
  * WHY
  *   Walls and rails are axis-aligned far more often than not, and a row of
@@ -25,28 +25,28 @@
  * CHEAP WHEN IT CAN BE
  *   Equal masses at e = 1: a swap.  A wall at e = 1: 2 ub - ua, one
  *   rounding.  A wall at rest: -e ua, one rounding; at e = 0, ub itself.
- *   Otherwise the filter of real_round.h first: the result in double
+ *   Otherwise the filter of real/arith/round.h first: the result in double
  *   length, ua' = ua + mb J and ub' = ub - ma J with the impulse per unit
  *   mass J = (1 + e)(ub - ua) / (ma + mb) computed once for both, kept when
  *   its error bound keeps it clear of every rounding boundary.  Only where it
  *   is not are numerator and denominator formed as exact sums of products
- *   (real_sign.h) and the quotient rounded once (real_round.h).
+ *   (real/arith/sign.h) and the quotient rounded once (real/arith/round.h).
  */
 #ifndef C2D_REAL_AXIS_H
 #define C2D_REAL_AXIS_H
 
 /* atom[n..] += sign x y z exactly: x y as two extended parts (TwoProduct on
  * the significands, so nothing over- or underflows), each times z. */
-static int c2d_push_triple(c2d_xf *atom, int n, c2d_real x, c2d_real y, c2d_real z, int sign)
+static int c2d_push_triple(c2d_ext *atom, int n, c2d_real x, c2d_real y, c2d_real z, int sign)
 {
-    c2d_xf xx, yy, zz, hi, lo;
+    c2d_ext xx, yy, zz, hi, lo;
     c2d_real l, h;
-    c2d_xf_set(&xx, sign < 0 ? -x : x, 0);
-    c2d_xf_set(&yy, y, 0);
-    c2d_xf_set(&zz, z, 0);
+    c2d_ext_set(&xx, sign < 0 ? -x : x, 0);
+    c2d_ext_set(&yy, y, 0);
+    c2d_ext_set(&zz, z, 0);
     h = c2d_two_prod(xx.m, yy.m, &l);
-    c2d_xf_set(&hi, h, xx.e + yy.e);
-    c2d_xf_set(&lo, l, xx.e + yy.e);
+    c2d_ext_set(&hi, h, xx.e + yy.e);
+    c2d_ext_set(&lo, l, xx.e + yy.e);
     n = c2d_push_product(atom, n, hi, zz);
     return c2d_push_product(atom, n, lo, zz);
 }
@@ -56,14 +56,14 @@ static int c2d_push_triple(c2d_xf *atom, int n, c2d_real x, c2d_real y, c2d_real
  * finite. */
 static void c2d_axis_pair(c2d_real *u2, c2d_real u, c2d_real v, c2d_real mine, c2d_real theirs, c2d_real e)
 {
-    c2d_xf num[16], den[2]; /* four triple products, four atoms each */
+    c2d_ext num[16], den[2]; /* four triple products, four atoms each */
     int n = 0;
     n = c2d_push_triple(num, n, u, mine, 1, 1);
     n = c2d_push_triple(num, n, v, theirs, 1, 1);
     n = c2d_push_triple(num, n, e, theirs, v, 1);
     n = c2d_push_triple(num, n, e, theirs, u, -1);
-    c2d_xf_set(&den[0], mine, 0);
-    c2d_xf_set(&den[1], theirs, 0);
+    c2d_ext_set(&den[0], mine, 0);
+    c2d_ext_set(&den[1], theirs, 0);
     c2d_round_quotient(u2, num, n, den, 2);
 }
 
@@ -71,7 +71,7 @@ static void c2d_axis_pair(c2d_real *u2, c2d_real u, c2d_real v, c2d_real mine, c
  * at v. */
 static void c2d_axis_wall(c2d_real *u2, c2d_real u, c2d_real v, c2d_real e)
 {
-    c2d_xf num[12], den[1];
+    c2d_ext num[12], den[1];
     int n = 0;
     if (e == 1 && c2d_abs(v) <= C2D_R_MAX / 2) {
         *u2 = 2 * v - u; /* 2v exact: one rounding */
@@ -89,7 +89,7 @@ static void c2d_axis_wall(c2d_real *u2, c2d_real u, c2d_real v, c2d_real e)
     n = c2d_push_triple(num, n, v, 1, 1, 1);
     n = c2d_push_triple(num, n, e, v, 1, 1);
     n = c2d_push_triple(num, n, e, u, 1, -1);
-    c2d_xf_set(&den[0], 1, 0);
+    c2d_ext_set(&den[0], 1, 0);
     c2d_round_quotient(u2, num, n, den, 1);
 }
 

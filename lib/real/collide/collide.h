@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* real_collide.h - template: c2d_collide and c2d_collide_normal, the three
- * tiers chained.  Needs real_bits.h, real_exact.h, real_fast.h and
- * real_general.h first (and real_axis.h after).
+/* real/collide/collide.h - template: c2d_collide and c2d_collide_normal, the three
+ * tiers chained.  Needs real/arith/bits.h, real/arith/exact.h, real/collide/fast.h and
+ * real/collide/general.h first (and real/collide/axis.h after).
  *
  * THE TIERS
- *   1. The fast path (real_fast.h): plain arithmetic, branch-free, when every
+ *   1. The fast path (real/collide/fast.h): plain arithmetic, branch-free, when every
  *      intermediate is provably safe and d cancels by at most 4x.
  *   2. Tier 2: inputs valid and inside the window, but d cancels.  The
  *      normal is taken exactly (n = nh + nl, the TwoSum of the position
@@ -13,7 +13,7 @@
  *      one ulp of d plus u^2 of the terms.  Trusted when it kept
  *      C2D_R_EXP_KAPPA2 bits through the cancellation (k <= 2^KAPPA2 |d|);
  *      the rest of the formula is the fast path's (c2d_finish) on that d.
- *   3. The general path (real_general.h): exact d, extended exponents.
+ *   3. The general path (real/collide/general.h): exact d, extended exponents.
  *   All three evaluate the same formula, so results are continuous across
  *   the tier boundaries.
  *
@@ -111,7 +111,7 @@ C2D_COLD c2d_status c2d_collide_slow(c2d_real_body *a, c2d_real_body *b, c2d_rea
     if (c2d_abs(a->pos.x) + c2d_abs(a->pos.y) + c2d_abs(b->pos.x) + c2d_abs(b->pos.y) >= c2d_pow2(C2D_R_EMAX - 2)) {
         /* Near the top of the range the difference may overflow: go general
          * with the exact difference carried in extended form. */
-        c2d_xf xh[2], xl[2];
+        c2d_ext xh[2], xl[2];
         c2d_exact_diff(b->pos.x, a->pos.x, &xh[0], &xl[0]);
         c2d_exact_diff(b->pos.y, a->pos.y, &xh[1], &xl[1]);
         return c2d_general(a, b, xh, xl, restitution);
@@ -129,7 +129,7 @@ C2D_COLD c2d_status c2d_collide_accurate(c2d_real_body *a, c2d_real_body *b, c2d
     return c2d_resolve(a, b, &nh, &nl, restitution);
 }
 
-/* Axis-aligned impacts, correctly rounded: real_axis.h. */
+/* Axis-aligned impacts, correctly rounded: real/collide/axis.h. */
 C2D_COLD c2d_status c2d_axis_impact(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *given, int axis, int sign,
                                     c2d_real restitution);
 
@@ -217,7 +217,7 @@ C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, con
     return c2d_cancelling_as(a, b, &nh, &nl, restitution, 0);
 }
 
-/* c2d_collide: the input-only front end (real_fast.h), else the fallback. */
+/* c2d_collide: the input-only front end (real/collide/fast.h), else the fallback. */
 static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
 {
     c2d_real out[4];

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* real_toia_problem.h - template: the time of impact under acceleration,
+/* real/toia/problem.h - template: the time of impact under acceleration,
  * part 2 of 7: the problem (exact differences d0, v, a, the radius) and the
- * exact signs at t = 0, degree-2 polynomials in the inputs.  See real_toia.h. */
+ * exact signs at t = 0, degree-2 polynomials in the inputs.  See real/toia/solve.h. */
 #ifndef C2D_REAL_TOIA_PROBLEM_H
 #define C2D_REAL_TOIA_PROBLEM_H
 /* ===================================================================== */
@@ -10,9 +10,9 @@
 
 /* The exact part (hi: j = 0, lo: j = 1) of input difference k (0
  * position, 1 velocity, 2 acceleration) along axis i, as an extended number. */
-C2D_COLD void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_xf *x)
+C2D_COLD void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_ext *x)
 {
-    c2d_xf hi, lo;
+    c2d_ext hi, lo;
     if (k == 0) {
         c2d_exact_diff(i == 0 ? c->bb->pos.x : c->bb->pos.y, i == 0 ? c->ba->pos.x : c->ba->pos.y, &hi, &lo);
     } else if (k == 1) {
@@ -20,7 +20,7 @@ C2D_COLD void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_xf *
     } else {
         c2d_exact_diff(i == 0 ? c->ab->x : c->ab->y, i == 0 ? c->aa->x : c->aa->y, &hi, &lo);
     }
-    c2d_xf_copy(x, j == 0 ? &hi : &lo);
+    c2d_ext_copy(x, j == 0 ? &hi : &lo);
 }
 
 /* One vector's exact difference x1 - x0 (per axis hi + lo, halved first
@@ -72,7 +72,7 @@ static void c2d_toia_load(c2d_toia_ctx *c, const c2d_real_body *a, const c2d_rea
     c2d_toia_load_vec(c, 0, b->pos.x, a->pos.x, b->pos.y, a->pos.y);
     c2d_toia_load_vec(c, 1, b->vel.x, a->vel.x, b->vel.y, a->vel.y);
     c2d_toia_load_vec(c, 2, ab->x, aa->x, ab->y, aa->y);
-    c2d_xf_set(&c->r, radius_sum, 0);
+    c2d_ext_set(&c->r, radius_sum, 0);
 }
 
 /* ===================================================================== */
@@ -87,7 +87,7 @@ static int c2d_toia_push_dot(const c2d_toia_ctx *c, c2d_real *m, int *e, int n, 
     for (i = 0; i < 2; i++)
         for (j = 0; j < 2; j++)
             for (k = 0; k < 2; k++) {
-                c2d_xf x, y;
+                c2d_ext x, y;
                 c2d_toia_part(c, kx, i, j, &x);
                 c2d_toia_part(c, ky, i, k, &y);
                 n = c2d_toia_push(m, e, n, &x, &y, 0, sgn);
@@ -112,7 +112,7 @@ C2D_COLD int c2d_toia_sign0(c2d_toia_ctx *c, int which)
     } else {
         n = c2d_toia_push_dot(c, m, e, n, 1, 2, 1);
     }
-    (void)c2d_toia_xsum(m, e, n, &hi, &lo, &k);
+    (void)c2d_toia_ext_sum(m, e, n, &hi, &lo, &k);
     return c2d_toia_sgn(hi);
 }
 /* ===================================================================== */

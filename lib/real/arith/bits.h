@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* real_bits.h - template: the floating type's bits, exact powers of two, and
+/* real/arith/bits.h - template: the floating type's bits, exact powers of two, and
  * extended-exponent numbers.  Included once by double.c and by float.c after
  * they define the type's parameters:
  *   C2D_R_TYPE, C2D_R_BITS_TYPE   the type and an unsigned integer as wide
@@ -8,9 +8,9 @@
  *   C2D_R_MANT, C2D_R_EBIAS, C2D_R_EMAX, C2D_R_EMIN, C2D_R_MAX   the format
  *   C2D_R_SQRT(x)                 square root (__builtin_ on gcc)
  *   C2D_R_FABS(x)                 |x|, optional (__builtin_fabs on gcc)
- *   C2D_R_SPLIT, C2D_R_FMA        for TwoProduct (real_exact.h); FMA optional
+ *   C2D_R_SPLIT, C2D_R_FMA        for TwoProduct (real/arith/exact.h); FMA optional
  *   C2D_R_EXP_K, C2D_R_EXP_KAPPA2, C2D_R_WINDOW, C2D_R_MARGIN   window sizes
- * The other real_*.h headers use the names declared here.
+ * The other real/ headers use the names declared here.
  *
  * WHY
  *   Robustness over the whole range needs exact powers of two (scaling is
@@ -102,11 +102,11 @@ static inline int c2d_finite4(c2d_real a, c2d_real b, c2d_real c, c2d_real d)
 
 /* An extended-exponent number m * 2^e, |m| in [1, 2) or m == 0: nothing
  * a collision can produce over- or underflows in this form. */
-typedef struct c2d_xf { c2d_real m; int e; } c2d_xf;
+typedef struct c2d_ext { c2d_real m; int e; } c2d_ext;
 
-static c2d_xf c2d_xf_make(c2d_real m, int e)
+static c2d_ext c2d_ext_make(c2d_real m, int e)
 {
-    c2d_xf r;
+    c2d_ext r;
     if (m == 0) {
         r.m = 0;
         r.e = 0;
@@ -118,11 +118,11 @@ static c2d_xf c2d_xf_make(c2d_real m, int e)
     return r;
 }
 
-static c2d_real c2d_xf_value(c2d_xf x) { return c2d_scale2(x.m, x.e); }
+static c2d_real c2d_ext_value(c2d_ext x) { return c2d_scale2(x.m, x.e); }
 
 /* *dst = src field by field: a struct assignment compiles to a memcpy call
  * at -Os on small cores, and the library must need no C library. */
-static void c2d_xf_copy(c2d_xf *dst, const c2d_xf *src)
+static void c2d_ext_copy(c2d_ext *dst, const c2d_ext *src)
 {
     dst->m = src->m;
     dst->e = src->e;

@@ -1,45 +1,45 @@
 /* SPDX-License-Identifier: MIT */
-/* real_toia_newton.h - template: the time of impact under acceleration,
+/* real/toia/newton.h - template: the time of impact under acceleration,
  * part 4 of 7: extended arithmetic for the bounds, plain Newton in a local
  * frame, the double-length polish and bisection on certified signs.  See
- * real_toia.h. */
+ * real/toia/solve.h. */
 #ifndef C2D_REAL_TOIA_NEWTON_H
 #define C2D_REAL_TOIA_NEWTON_H
 /* Extended-number arithmetic for the bounds                             */
 /* ===================================================================== */
 
 /* *r = a + b (one rounding). */
-static void c2d_toia_x_add(c2d_xf *r, const c2d_xf *a, const c2d_xf *b)
+static void c2d_toia_ext_add(c2d_ext *r, const c2d_ext *a, const c2d_ext *b)
 {
     int k;
     if (a->m == 0) {
-        c2d_xf_copy(r, b);
+        c2d_ext_copy(r, b);
         return;
     }
     if (b->m == 0) {
-        c2d_xf_copy(r, a);
+        c2d_ext_copy(r, a);
         return;
     }
     k = a->e - b->e;
     if (k > C2D_R_MANT + 3) {
-        c2d_xf_copy(r, a);
+        c2d_ext_copy(r, a);
     } else if (k < -(C2D_R_MANT + 3)) {
-        c2d_xf_copy(r, b);
+        c2d_ext_copy(r, b);
     } else if (k >= 0) {
-        c2d_xf_set(r, a->m + c2d_scale2(b->m, -k), a->e);
+        c2d_ext_set(r, a->m + c2d_scale2(b->m, -k), a->e);
     } else {
-        c2d_xf_set(r, c2d_scale2(a->m, k) + b->m, b->e);
+        c2d_ext_set(r, c2d_scale2(a->m, k) + b->m, b->e);
     }
 }
 
 /* sign(a - b) of two extended numbers, with a relative slack of
  * 2^(4 - MANT) counted against the claim (returns 0 when closer). */
-static int c2d_toia_x_cmp(const c2d_xf *a, const c2d_xf *b)
+static int c2d_toia_ext_cmp(const c2d_ext *a, const c2d_ext *b)
 {
-    c2d_xf nb, d;
+    c2d_ext nb, d;
     nb.m = -b->m;
     nb.e = b->e;
-    c2d_toia_x_add(&d, a, &nb);
+    c2d_toia_ext_add(&d, a, &nb);
     if (d.m == 0) return 0;
     {
         int top = a->m == 0 ? b->e : (b->m == 0 ? a->e : c2d_toia_imax(a->e, b->e));
@@ -49,13 +49,13 @@ static int c2d_toia_x_cmp(const c2d_xf *a, const c2d_xf *b)
 }
 
 /* The time difference a - b as an extended number. */
-static void c2d_toia_t_diff(c2d_xf *d, const c2d_dx *a, const c2d_dx *b)
+static void c2d_toia_t_diff(c2d_ext *d, const c2d_dd *a, const c2d_dd *b)
 {
-    c2d_dx w;
-    c2d_dx_copy(&w, a);
+    c2d_dd w;
+    c2d_dd_copy(&w, a);
     c2d_toia_t_add(&w, -b->h, b->e);
     c2d_toia_t_add(&w, -b->l, b->e);
-    c2d_xf_set(d, w.h + w.l, w.e);
+    c2d_ext_set(d, w.h + w.l, w.e);
 }
 
 /* ===================================================================== */
@@ -186,7 +186,7 @@ static c2d_real c2d_toia_newton0(const c2d_toia_frame *fr, int which, c2d_real a
 }
 
 /* Local time of t in the frame 2^kt. */
-static c2d_real c2d_toia_t_local(const c2d_dx *t, int kt)
+static c2d_real c2d_toia_t_local(const c2d_dd *t, int kt)
 {
     if (t->h == 0) return 0;
     return c2d_scale2(t->h + t->l, t->e - kt);
@@ -203,7 +203,7 @@ static c2d_real c2d_toia_t_local(const c2d_dx *t, int kt)
  * Returns 1 when the last step fell below 2^-bits t or the value
  * reached its noise level (the root is then within the evaluation's
  * resolution), 0 when it did not converge. */
-C2D_COLD int c2d_toia_polish(c2d_toia_ctx *c, c2d_dx *t, int which, const c2d_dx *lo, const c2d_dx *hi,
+C2D_COLD int c2d_toia_polish(c2d_toia_ctx *c, c2d_dd *t, int which, const c2d_dd *lo, const c2d_dd *hi,
                            int bits)
 {
     c2d_toia_ev ev;
@@ -231,11 +231,11 @@ C2D_COLD int c2d_toia_polish(c2d_toia_ctx *c, c2d_dx *t, int which, const c2d_dx
         num = -q->v / (which == C2D_TOIA_QF ? 2 * dq->v : dq->v);
         de = q->e - dq->e;
         {
-            c2d_xf st, nx;
-            c2d_xf_set(&st, num, de);
+            c2d_ext st, nx;
+            c2d_ext_set(&st, num, de);
             c2d_toia_t_add(t, num, de);
-            if (c2d_toia_t_cmp(t, lo) < 0) c2d_dx_copy(t, lo);
-            if (c2d_toia_t_cmp(t, hi) > 0) c2d_dx_copy(t, hi);
+            if (c2d_toia_t_cmp(t, lo) < 0) c2d_dd_copy(t, lo);
+            if (c2d_toia_t_cmp(t, hi) > 0) c2d_dd_copy(t, hi);
             if (st.m == 0 || st.e < t->e - bits) return 1;
             /* Newton's error after this step is at most (max|phi''| /
              * 2 min|phi'|) step^2; with phi''/phi' estimated here (x 4 for
@@ -243,7 +243,7 @@ C2D_COLD int c2d_toia_polish(c2d_toia_ctx *c, c2d_dx *t, int which, const c2d_dx
              * t when the step was small: no second evaluation needed */
             if (which != C2D_TOIA_QH && st.e < t->e - C2D_R_MANT / 2 && ev.q[which + 2].v != 0) {
                 /* |phi''/phi'| = |h / g| for f (f'' = 2h, f' = 2g), |hp / h| for g */
-                c2d_xf_set(&nx, 4 * c2d_abs(ev.q[which + 2].v / dq->v) * st.m * st.m,
+                c2d_ext_set(&nx, 4 * c2d_abs(ev.q[which + 2].v / dq->v) * st.m * st.m,
                                ev.q[which + 2].e - dq->e + 2 * st.e);
                 if (nx.m == 0 || nx.e < t->e - bits) return 1;
             }
@@ -259,11 +259,11 @@ C2D_COLD int c2d_toia_polish(c2d_toia_ctx *c, c2d_dx *t, int which, const c2d_dx
  * otherwise; stops at the root's resolution (a sign tier 3 cannot certify,
  * or a bracket or step below 2^-2MANT of t).  For the cases the plain
  * frame cannot represent (heavy cancellation, extreme magnitudes). */
-C2D_COLD void c2d_toia_rootx(c2d_toia_ctx *c, c2d_dx *lo, c2d_dx *hi, int which, int sa, c2d_dx *out)
+C2D_COLD void c2d_toia_root_ext(c2d_toia_ctx *c, c2d_dd *lo, c2d_dd *hi, int which, int sa, c2d_dd *out)
 {
     c2d_toia_ev ev;
-    c2d_dx t, tn;
-    c2d_xf w, prev;
+    c2d_dd t, tn;
+    c2d_ext w, prev;
     int it, done = 0;
     prev.m = 0;
     prev.e = 0;
@@ -276,23 +276,23 @@ C2D_COLD void c2d_toia_rootx(c2d_toia_ctx *c, c2d_dx *lo, c2d_dx *hi, int which,
         if (s == 0) {
             done = 1; /* at the root, to the evaluation's resolution */
         } else {
-            if (s == sa) c2d_dx_copy(lo, &t);
-            else c2d_dx_copy(hi, &t);
+            if (s == sa) c2d_dd_copy(lo, &t);
+            else c2d_dd_copy(hi, &t);
             c2d_toia_t_diff(&w, hi, lo);
             if (w.m == 0 || w.e < hi->e - 2 * C2D_R_MANT) done = 1;
         }
         q = &ev.q[which];
         dq = &ev.q[which + 1];
         if (done == 0 && dq->v != 0) {
-            c2d_xf st;
-            c2d_xf_set(&st, -q->v / (which == C2D_TOIA_QF ? 2 * dq->v : dq->v), q->e - dq->e);
-            c2d_dx_copy(&tn, &t);
+            c2d_ext st;
+            c2d_ext_set(&st, -q->v / (which == C2D_TOIA_QF ? 2 * dq->v : dq->v), q->e - dq->e);
+            c2d_dd_copy(&tn, &t);
             c2d_toia_t_add(&tn, st.m, st.e);
             if (c2d_toia_t_cmp(&tn, lo) > 0 && c2d_toia_t_cmp(&tn, hi) < 0 &&
                 (prev.m == 0 || st.e < prev.e || (st.e == prev.e && c2d_abs(st.m) < c2d_abs(prev.m)))) {
                 newton = 1;
-                c2d_xf_copy(&prev, &st);
-                c2d_dx_copy(&t, &tn);
+                c2d_ext_copy(&prev, &st);
+                c2d_dd_copy(&t, &tn);
                 if (st.e < t.e - 2 * C2D_R_MANT) done = 1;
             }
         }
@@ -301,7 +301,7 @@ C2D_COLD void c2d_toia_rootx(c2d_toia_ctx *c, c2d_dx *lo, c2d_dx *hi, int which,
             c2d_toia_t_mid(&t, lo, hi);
         }
     }
-    c2d_dx_copy(out, &t);
+    c2d_dd_copy(out, &t);
 }
 
 /* The root of phi (f: which 0, g: 1) in [lo, hi], where phi has sign sa at
@@ -309,26 +309,26 @@ C2D_COLD void c2d_toia_rootx(c2d_toia_ctx *c, c2d_dx *lo, c2d_dx *hi, int which,
  * frame, then double-length polish; the certified search (rootx) when the
  * frame cannot represent the problem or its values drown in cancellation
  * or the polish does not converge. */
-C2D_COLD void c2d_toia_root(c2d_toia_ctx *c, const c2d_dx *lo, const c2d_dx *hi, int which, int sa,
-                          c2d_dx *out)
+C2D_COLD void c2d_toia_root(c2d_toia_ctx *c, const c2d_dd *lo, const c2d_dd *hi, int which, int sa,
+                          c2d_dd *out)
 {
     c2d_toia_frame fr;
-    c2d_dx a, b;
+    c2d_dd a, b;
     int kt = hi->e + 1, ok = 0;
     c2d_real width;
-    c2d_dx_copy(&a, lo);
-    c2d_dx_copy(&b, hi);
+    c2d_dd_copy(&a, lo);
+    c2d_dd_copy(&b, hi);
     if (c2d_toia_frame_set(&fr, c, kt) != 0) {
         c2d_real x =
             c2d_toia_newton0(&fr, which, c2d_toia_t_local(lo, kt), c2d_toia_t_local(hi, kt), sa, &ok, &width);
         if (ok != 0) {
-            c2d_dx_set(out, x, 0, kt);
-            if (c2d_toia_t_cmp(out, lo) < 0) c2d_dx_copy(out, lo);
-            if (c2d_toia_t_cmp(out, hi) > 0) c2d_dx_copy(out, hi);
+            c2d_dd_set(out, x, 0, kt);
+            if (c2d_toia_t_cmp(out, lo) < 0) c2d_dd_copy(out, lo);
+            if (c2d_toia_t_cmp(out, hi) > 0) c2d_dd_copy(out, hi);
             if (c2d_toia_polish(c, out, which, lo, hi, C2D_R_MANT + 3) != 0) return;
         }
     }
-    c2d_toia_rootx(c, &a, &b, which, sa, out);
+    c2d_toia_root_ext(c, &a, &b, which, sa, out);
     (void)c2d_toia_polish(c, out, which, &a, &b, C2D_R_MANT + 3);
 }
 /* ===================================================================== */

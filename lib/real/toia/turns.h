@@ -1,20 +1,20 @@
 /* SPDX-License-Identifier: MIT */
-/* real_toia_turns.h - template: the time of impact under acceleration,
+/* real/toia/turns.h - template: the time of impact under acceleration,
  * part 5 of 7: the turning points of f (roots of g, bracketed, with f's
- * value there) and of g (the roots of the quadratic h).  See real_toia.h. */
+ * value there) and of g (the roots of the quadratic h).  See real/toia/solve.h. */
 #ifndef C2D_REAL_TOIA_TURNS_H
 #define C2D_REAL_TOIA_TURNS_H
 /* Turning points of f: brackets of the roots of g and f's value there   */
 /* ===================================================================== */
 
-static void c2d_toia_x_mul(c2d_xf *r, const c2d_xf *a, const c2d_xf *b)
+static void c2d_toia_ext_mul(c2d_ext *r, const c2d_ext *a, const c2d_ext *b)
 {
-    c2d_xf_set(r, a->m * b->m, a->e + b->e);
+    c2d_ext_set(r, a->m * b->m, a->e + b->e);
 }
 
 /* val > 0 with a margin of 2^(4 - MANT) of scale (>= 0): a decision that
  * survives the few roundings the bound arithmetic made. */
-static int c2d_toia_x_clear(const c2d_xf *val, const c2d_xf *scale)
+static int c2d_toia_ext_clear(const c2d_ext *val, const c2d_ext *scale)
 {
     if (!(val->m > 0)) return 0;
     if (scale->m == 0) return 1;
@@ -32,41 +32,41 @@ static int c2d_toia_x_clear(const c2d_xf *val, const c2d_xf *scale)
  * 0 if neither. */
 C2D_COLD int c2d_toia_fturn(const c2d_toia_br *br, int dir, const c2d_toia_fg *center)
 {
-    c2d_xf w, x, y, z;
+    c2d_ext w, x, y, z;
     int i, res = 0;
     c2d_toia_t_diff(&w, &br->hi, &br->lo);
     w.m = c2d_abs(w.m);
     for (i = 0; i < 3; i++) {
         const c2d_toia_fg *ev = i == 0 ? &br->elo : (i == 1 ? &br->ehi : center);
-        c2d_xf f, r, tg, lo, hi;
+        c2d_ext f, r, tg, lo, hi;
         if (ev == NULL) continue;
-        c2d_xf_set(&f, ev->f.v, ev->f.e);
-        c2d_xf_set(&r, ev->f.r, ev->f.e);
+        c2d_ext_set(&f, ev->f.v, ev->f.e);
+        c2d_ext_set(&r, ev->f.r, ev->f.e);
         tg.m = 0;
         tg.e = 0;
         if (i < 2) {
-            c2d_xf_set(&x, c2d_abs(ev->g.v) + ev->g.r, ev->g.e + 1);
-            c2d_toia_x_mul(&tg, &x, &w);
+            c2d_ext_set(&x, c2d_abs(ev->g.v) + ev->g.r, ev->g.e + 1);
+            c2d_toia_ext_mul(&tg, &x, &w);
         }
         /* lo = f - r - (dir > 0 ? tg : 0), hi = f + r + (dir < 0 ? tg : 0);
          * each candidate judged against its own rounding scale |f| + r + tg */
         x.m = -r.m;
         x.e = r.e;
-        c2d_toia_x_add(&lo, &f, &x);
-        c2d_toia_x_add(&hi, &f, &r);
+        c2d_toia_ext_add(&lo, &f, &x);
+        c2d_toia_ext_add(&hi, &f, &r);
         y.m = -tg.m;
         y.e = tg.e;
-        if (dir > 0) c2d_toia_x_add(&lo, &lo, &y);
-        else c2d_toia_x_add(&hi, &hi, &tg);
+        if (dir > 0) c2d_toia_ext_add(&lo, &lo, &y);
+        else c2d_toia_ext_add(&hi, &hi, &tg);
         z.m = c2d_abs(f.m);
         z.e = f.e;
-        c2d_toia_x_add(&z, &z, &r);
-        c2d_toia_x_add(&z, &z, &tg);
+        c2d_toia_ext_add(&z, &z, &r);
+        c2d_toia_ext_add(&z, &z, &tg);
         /* a point value bounds a minimum from above only, a maximum from below */
-        if (!(i == 2 && dir > 0) && c2d_toia_x_clear(&lo, &z) != 0) res = 1;
+        if (!(i == 2 && dir > 0) && c2d_toia_ext_clear(&lo, &z) != 0) res = 1;
         x.m = -hi.m;
         x.e = hi.e;
-        if (!(i == 2 && dir < 0) && c2d_toia_x_clear(&x, &z) != 0) res = -1;
+        if (!(i == 2 && dir < 0) && c2d_toia_ext_clear(&x, &z) != 0) res = -1;
     }
     return res;
 }
@@ -74,8 +74,8 @@ C2D_COLD int c2d_toia_fturn(const c2d_toia_br *br, int dir, const c2d_toia_fg *c
 /* The plain estimate of g's root in (x, y) (Newton in a local frame): 1 with
  * *r and the exponent *dw of 4 of its uncertainties, 0 if the frame's
  * values are not trustworthy there. */
-C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, int dir,
-                                         c2d_dx *r, int *dw)
+C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, int dir,
+                                         c2d_dd *r, int *dw)
 {
     c2d_toia_frame fr;
     c2d_real width = 0, xr;
@@ -83,7 +83,7 @@ C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, 
     if (c2d_toia_frame_set(&fr, c, kt) == 0) return 0;
     xr = c2d_toia_newton0(&fr, C2D_TOIA_QG, c2d_toia_t_local(x, kt), c2d_toia_t_local(y, kt), -dir, &ok, &width);
     if (ok == 0) return 0;
-    c2d_dx_set(r, xr, 0, kt);
+    c2d_dd_set(r, xr, 0, kt);
     *dw = r->e - C2D_R_MANT + 4;
     if (width > 0 && c2d_ilogb(width) + kt + 3 > *dw) *dw = c2d_ilogb(width) + kt + 3;
     return 1;
@@ -91,13 +91,13 @@ C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, 
 
 /* The exponent of 4 times the double-length Newton step on g at r plus
  * its noise, at least dw. */
-C2D_COLD int c2d_toia_gstep(c2d_toia_ctx *c, const c2d_dx *r, int dw)
+C2D_COLD int c2d_toia_gstep(c2d_toia_ctx *c, const c2d_dd *r, int dw)
 {
     c2d_toia_ev ev;
     c2d_toia_e2(c, r, &ev);
     if (ev.q[C2D_TOIA_QH].v != 0) {
-        c2d_xf st;
-        c2d_xf_set(&st, (c2d_abs(ev.q[C2D_TOIA_QG].v) + ev.q[C2D_TOIA_QG].r) / c2d_abs(ev.q[C2D_TOIA_QH].v),
+        c2d_ext st;
+        c2d_ext_set(&st, (c2d_abs(ev.q[C2D_TOIA_QG].v) + ev.q[C2D_TOIA_QG].r) / c2d_abs(ev.q[C2D_TOIA_QH].v),
                        ev.q[C2D_TOIA_QG].e - ev.q[C2D_TOIA_QH].e);
         if (st.m != 0 && st.e + 3 > dw) dw = st.e + 3;
     }
@@ -107,8 +107,8 @@ C2D_COLD int c2d_toia_gstep(c2d_toia_ctx *c, const c2d_dx *r, int dw)
 /* The double-length estimate of g's root in (x, y) (certified search and
  * Newton), with the exponent *dw of its uncertainty (at least 16 ulp of the
  * working format). */
-C2D_COLD void c2d_toia_gdd(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, int dir,
-                                       c2d_dx *r, int *dw)
+C2D_COLD void c2d_toia_gdd(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, int dir,
+                                       c2d_dd *r, int *dw)
 {
     c2d_toia_root(c, x, y, C2D_TOIA_QG, -dir, r);
     *dw = c2d_toia_gstep(c, r, r->e - C2D_R_MANT + 4);
@@ -120,10 +120,10 @@ C2D_COLD void c2d_toia_gdd(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, in
  * g at the estimate +- 4 uncertainties (widening 64-fold: up to twice for
  * the plain estimate, three times for the other); at worst the piece
  * itself.  f and g are evaluated at both ends. */
-C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, int dir,
+C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, int dir,
                                             c2d_toia_br *br)
 {
-    c2d_dx r;
+    c2d_dd r;
     int k, dw = 0, pass = 1;
     if (c2d_toia_gplain(c, x, y, dir, &r, &dw) != 0) pass = 0;
     for (; pass < 2; pass++) {
@@ -131,12 +131,12 @@ C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *
         if (pass == 1) c2d_toia_gdd(c, x, y, dir, &r, &dw);
         if (pass == 0) widenings = 2;
         for (k = 0; k < widenings; k++) {
-            c2d_dx_copy(&br->lo, &r);
+            c2d_dd_copy(&br->lo, &r);
             c2d_toia_t_add(&br->lo, -1, dw);
-            if (c2d_toia_t_cmp(&br->lo, x) < 0) c2d_dx_copy(&br->lo, x);
-            c2d_dx_copy(&br->hi, &r);
+            if (c2d_toia_t_cmp(&br->lo, x) < 0) c2d_dd_copy(&br->lo, x);
+            c2d_dd_copy(&br->hi, &r);
             c2d_toia_t_add(&br->hi, 1, dw);
-            if (c2d_toia_t_cmp(&br->hi, y) > 0) c2d_dx_copy(&br->hi, y);
+            if (c2d_toia_t_cmp(&br->hi, y) > 0) c2d_dd_copy(&br->hi, y);
             c2d_toia_probe_fg(c, &br->lo, 1, &br->elo);
             if (br->elo.sg == -dir) {
                 c2d_toia_probe_fg(c, &br->hi, 1, &br->ehi);
@@ -145,8 +145,8 @@ C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *
             dw += 6;
         }
     }
-    c2d_dx_copy(&br->lo, x);
-    c2d_dx_copy(&br->hi, y);
+    c2d_dd_copy(&br->lo, x);
+    c2d_dd_copy(&br->hi, y);
     c2d_toia_probe_fg(c, &br->lo, 1, &br->elo);
     c2d_toia_probe_fg(c, &br->hi, 1, &br->ehi);
 }
@@ -154,25 +154,25 @@ C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *
 /* Tighten a bracket whose f-decision was a tie: double-length Newton on g
  * from its middle, certified signs (tiers 2-3) at +- 4 steps, and a tier-3
  * value of f at the center (*ct). */
-C2D_COLD void c2d_toia_tighten(c2d_toia_ctx *c, c2d_toia_br *br, int dir, c2d_dx *ct,
+C2D_COLD void c2d_toia_tighten(c2d_toia_ctx *c, c2d_toia_br *br, int dir, c2d_dd *ct,
                                            c2d_toia_fg *center)
 {
-    c2d_dx lo, hi;
+    c2d_dd lo, hi;
     c2d_toia_fg elo, ehi;
     int dw;
     c2d_toia_t_mid(ct, &br->lo, &br->hi);
     (void)c2d_toia_polish(c, ct, C2D_TOIA_QG, &br->lo, &br->hi, 2 * C2D_R_MANT + 2);
     dw = c2d_toia_gstep(c, ct, ct->e - 2 * C2D_R_MANT + 2);
-    c2d_dx_copy(&lo, ct);
+    c2d_dd_copy(&lo, ct);
     c2d_toia_t_add(&lo, -1, dw);
-    c2d_dx_copy(&hi, ct);
+    c2d_dd_copy(&hi, ct);
     c2d_toia_t_add(&hi, 1, dw);
     if (c2d_toia_t_cmp(&lo, &br->lo) > 0 && c2d_toia_t_cmp(&hi, &br->hi) < 0) {
         c2d_toia_probe_fg(c, &lo, 2, &elo);
         c2d_toia_probe_fg(c, &hi, 2, &ehi);
         if (elo.sg == -dir && ehi.sg == dir) {
-            c2d_dx_copy(&br->lo, &lo);
-            c2d_dx_copy(&br->hi, &hi);
+            c2d_dd_copy(&br->lo, &lo);
+            c2d_dd_copy(&br->hi, &hi);
             c2d_toia_fg_copy(&br->elo, &elo);
             c2d_toia_fg_copy(&br->ehi, &ehi);
         }
@@ -186,7 +186,7 @@ static int c2d_toia_push_cross(const c2d_toia_ctx *c, c2d_real *m, int *e, int n
     int j, k;
     for (j = 0; j < 2; j++)
         for (k = 0; k < 2; k++) {
-            c2d_xf x, y;
+            c2d_ext x, y;
             c2d_toia_part(c, kx, 0, j, &x);
             c2d_toia_part(c, ky, 1, k, &y);
             n = c2d_toia_push(m, e, n, &x, &y, 0, 1);
@@ -209,9 +209,9 @@ C2D_COLD int c2d_toia_lin_min(c2d_toia_ctx *c)
     c2d_real m[C2D_TOIA_ATOMS], xh, xl, vh, vl, ah = 0, al = 0, bh, bl, rh, rl, qh, ql, sa, sb, bound;
     int e[C2D_TOIA_ATOMS], n, kx, kv, ex, ev, ea, eb, E;
     n = c2d_toia_push_cross(c, m, e, 0, 0, 1);
-    ex = c2d_toia_xsum(m, e, n, &xh, &xl, &kx);
+    ex = c2d_toia_ext_sum(m, e, n, &xh, &xl, &kx);
     n = c2d_toia_push_dot(c, m, e, 0, 1, 1, 1);
-    ev = c2d_toia_xsum(m, e, n, &vh, &vl, &kv);
+    ev = c2d_toia_ext_sum(m, e, n, &vh, &vl, &kv);
     if (xh != 0) ah = c2d_toia_dmul(xh, xl, xh, xl, &al);
     ea = 2 * ex;
     rh = c2d_two_prod(c->r.m, c->r.m, &rl);
@@ -236,7 +236,7 @@ C2D_COLD int c2d_toia_collinear(c2d_toia_ctx *c)
     for (i = 0; i < 3; i++)
         for (j = i + 1; j < 3; j++) {
             n = c2d_toia_push_cross(c, m, e, 0, i, j);
-            (void)c2d_toia_xsum(m, e, n, &hi, &lo, &k);
+            (void)c2d_toia_ext_sum(m, e, n, &hi, &lo, &k);
             if (hi != 0) return 0;
         }
     return 1;
@@ -263,8 +263,8 @@ C2D_COLD int c2d_toia_crosses(c2d_toia_ctx *c, const c2d_toia_br *br)
  * (no contact).  On -1, *neg = a time in the piece's bracket where f < 0 is
  * certified, or NULL when no representable time has f < 0 (a contact
  * shorter than the time resolution): then *ct is the minimum's location. */
-C2D_COLD int c2d_toia_fmin(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, c2d_toia_br *br,
-                                       c2d_dx *ct, c2d_toia_fg *center, const c2d_dx **neg)
+C2D_COLD int c2d_toia_fmin(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, c2d_toia_br *br,
+                                       c2d_dd *ct, c2d_toia_fg *center, const c2d_dd **neg)
 {
     int d, tight = 0;
     *neg = NULL;
@@ -314,15 +314,15 @@ C2D_COLD int c2d_toia_fmin(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, c2
  * never holds, g is within S of 0 at its extremum: the tie value kind (g
  * touching 0 from below at a maximum, from above at a minimum: no sign
  * change) is returned.  *sf = f's sign at s if tier 1 certified it. */
-C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dx *s, int kind, int *sf, int *tied)
+C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dd *s, int kind, int *sf, int *tied)
 {
     c2d_toia_ev ev;
-    c2d_xf h2, H, P, D, S, G, x, y;
+    c2d_ext h2, H, P, D, S, G, x, y;
     int tier;
     *sf = 0;
     *tied = 0;
     /* h'' = 3 |a|^2, rounded up */
-    c2d_xf_set(&h2,
+    c2d_ext_set(&h2,
                    3 * (c->m[2][0] * c->m[2][0] + c->m[2][1] * c->m[2][1]) * (1 + c2d_pow2(3 - C2D_R_MANT)),
                    2 * c->ex[2]);
     for (tier = 1; tier <= 3; tier++) {
@@ -331,9 +331,9 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dx *s, int kind, int *sf, 
             if (c2d_abs(ev.q[C2D_TOIA_QF].v) > ev.q[C2D_TOIA_QF].r) *sf = c2d_toia_sgn(ev.q[C2D_TOIA_QF].v);
         } else {
             if (tier == 2) {
-                c2d_dx lo, hi;
-                c2d_dx_copy(&lo, s);
-                c2d_dx_copy(&hi, s);
+                c2d_dd lo, hi;
+                c2d_dd_copy(&lo, s);
+                c2d_dd_copy(&hi, s);
                 c2d_toia_t_add(&lo, -1, s->e - 8);
                 c2d_toia_t_add(&hi, 1, s->e - 8);
                 (void)c2d_toia_polish(c, s, C2D_TOIA_QH, &lo, &hi, 2 * C2D_R_MANT);
@@ -345,22 +345,22 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dx *s, int kind, int *sf, 
         if (!(c2d_abs(ev.q[C2D_TOIA_QHP].v) > ev.q[C2D_TOIA_QHP].r) ||
             c2d_toia_sgn(ev.q[C2D_TOIA_QHP].v) != kind)
             continue;
-        c2d_xf_set(&H, c2d_abs(ev.q[C2D_TOIA_QH].v) + ev.q[C2D_TOIA_QH].r, ev.q[C2D_TOIA_QH].e);
-        c2d_xf_set(&P, c2d_abs(ev.q[C2D_TOIA_QHP].v) - ev.q[C2D_TOIA_QHP].r, ev.q[C2D_TOIA_QHP].e);
+        c2d_ext_set(&H, c2d_abs(ev.q[C2D_TOIA_QH].v) + ev.q[C2D_TOIA_QH].r, ev.q[C2D_TOIA_QH].e);
+        c2d_ext_set(&P, c2d_abs(ev.q[C2D_TOIA_QHP].v) - ev.q[C2D_TOIA_QHP].r, ev.q[C2D_TOIA_QHP].e);
         /* the root exists within D unless h(s) may be positive (same sign as
          * h''): then P^2 >= 2 h'' H is needed (with slack) */
         if (!(ev.q[C2D_TOIA_QH].v + ev.q[C2D_TOIA_QH].r < 0)) {
-            c2d_toia_x_mul(&x, &P, &P);
-            c2d_toia_x_mul(&y, &h2, &H);
+            c2d_toia_ext_mul(&x, &P, &P);
+            c2d_toia_ext_mul(&y, &h2, &H);
             y.e += 1;
-            if (H.m != 0 && c2d_toia_x_cmp(&x, &y) <= 0) continue;
+            if (H.m != 0 && c2d_toia_ext_cmp(&x, &y) <= 0) continue;
         }
         /* D = 2 H / P, S = H D (rounded up by the slack in the test) */
-        c2d_xf_set(&D, 2 * H.m / P.m, H.e - P.e);
-        c2d_toia_x_mul(&S, &H, &D);
+        c2d_ext_set(&D, 2 * H.m / P.m, H.e - P.e);
+        c2d_toia_ext_mul(&S, &H, &D);
         S.m *= 1 + c2d_pow2(4 - C2D_R_MANT);
-        c2d_xf_set(&G, c2d_abs(ev.q[C2D_TOIA_QG].v) - ev.q[C2D_TOIA_QG].r, ev.q[C2D_TOIA_QG].e);
-        if (G.m > 0 && c2d_toia_x_cmp(&G, &S) > 0) return c2d_toia_sgn(ev.q[C2D_TOIA_QG].v);
+        c2d_ext_set(&G, c2d_abs(ev.q[C2D_TOIA_QG].v) - ev.q[C2D_TOIA_QG].r, ev.q[C2D_TOIA_QG].e);
+        if (G.m > 0 && c2d_toia_ext_cmp(&G, &S) > 0) return c2d_toia_sgn(ev.q[C2D_TOIA_QG].v);
     }
     *tied = 1;
     return kind;
@@ -369,33 +369,33 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dx *s, int kind, int *sf, 
 /* x.y (+ z.w) for input differences, as a double-length number: the exact
  * sum of the exact products when exact != 0, else from the hi parts in
  * plain arithmetic (a hint; relative error a few u unless it cancels). */
-static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dx *r);
+static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dd *r);
 
 /* An exact sum of products (atoms) as a double-length number. */
-static void c2d_toia_t_xsum(c2d_dx *r, c2d_real *m, int *e, int n)
+static void c2d_toia_t_ext_sum(c2d_dd *r, c2d_real *m, int *e, int n)
 {
     c2d_real hi, lo;
-    int k, ex = c2d_toia_xsum(m, e, n, &hi, &lo, &k);
-    c2d_dx_set(r, hi, lo, ex);
+    int k, ex = c2d_toia_ext_sum(m, e, n, &hi, &lo, &k);
+    c2d_dd_set(r, hi, lo, ex);
 }
 
-static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dx *r)
+static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dd *r)
 {
     if (exact != 0) {
         c2d_real m[C2D_TOIA_ATOMS];
         int e[C2D_TOIA_ATOMS], n = c2d_toia_push_dot(c, m, e, 0, kx, ky, sgn);
         if (kz >= 0) n = c2d_toia_push_dot(c, m, e, n, kz, kw, sgn);
-        c2d_toia_t_xsum(r, m, e, n);
+        c2d_toia_t_ext_sum(r, m, e, n);
     } else {
-        c2d_dx p, q;
-        c2d_dx_set(&p, c->nz[kx] * c->nz[ky] != 0 ? (c2d_real)sgn * (c->m[kx][0] * c->m[ky][0] + c->m[kx][1] * c->m[ky][1]) : 0,
+        c2d_dd p, q;
+        c2d_dd_set(&p, c->nz[kx] * c->nz[ky] != 0 ? (c2d_real)sgn * (c->m[kx][0] * c->m[ky][0] + c->m[kx][1] * c->m[ky][1]) : 0,
                        0, c->ex[kx] + c->ex[ky]);
         if (kz >= 0) {
-            c2d_dx_set(&q, c->nz[kz] * c->nz[kw] != 0 ? (c2d_real)sgn * (c->m[kz][0] * c->m[kw][0] + c->m[kz][1] * c->m[kw][1]) : 0,
+            c2d_dd_set(&q, c->nz[kz] * c->nz[kw] != 0 ? (c2d_real)sgn * (c->m[kz][0] * c->m[kw][0] + c->m[kz][1] * c->m[kw][1]) : 0,
                            0, c->ex[kz] + c->ex[kw]);
             c2d_toia_t_sum(r, &p, &q);
         } else {
-            c2d_dx_copy(r, &p);
+            c2d_dd_copy(r, &p);
         }
     }
 }
@@ -413,50 +413,50 @@ static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int s
  * and w is accurate to its own precision.  Returns 0 if there is no real
  * root to report.  exact = 0: the coefficients from the hi parts (cheap
  * hints); 1: from exact sums (when the cheap ones did not certify). */
-C2D_COLD int c2d_toia_hroots(c2d_toia_ctx *c, const c2d_toia_ev *at_m, int exact, c2d_dx *rm,
-                                         c2d_dx *rp)
+C2D_COLD int c2d_toia_hroots(c2d_toia_ctx *c, const c2d_toia_ev *at_m, int exact, c2d_dd *rm,
+                                         c2d_dd *rp)
 {
-    c2d_dx a2, beta, gamma, x, y, sq;
+    c2d_dd a2, beta, gamma, x, y, sq;
     c2d_toia_dotq(c, 2, 2, -1, -1, 1, exact, &a2);
     c2d_toia_dotq(c, 1, 2, -1, -1, 1, exact, &x);
-    c2d_dx_div(&beta, &x, &a2);
+    c2d_dd_div(&beta, &x, &a2);
     c2d_toia_dotq(c, 1, 1, 0, 2, 1, exact, &x);
-    c2d_dx_div(&gamma, &x, &a2);
-    c2d_dx_set(&y, (c2d_real)2 / (c2d_real)3, 0, 0); /* 2/3 to double length is enough for a hint */
-    c2d_dx_mul(&gamma, &gamma, &y);
+    c2d_dd_div(&gamma, &x, &a2);
+    c2d_dd_set(&y, (c2d_real)2 / (c2d_real)3, 0, 0); /* 2/3 to double length is enough for a hint */
+    c2d_dd_mul(&gamma, &gamma, &y);
     if (at_m != NULL && beta.h < 0 && gamma.h > 0) {
         /* vertex form: w^2 = -2 h(m) / (3 |a|^2) */
-        c2d_dx_set(&x, -2 * at_m->q[C2D_TOIA_QH].v, 0, at_m->q[C2D_TOIA_QH].e);
-        c2d_dx_set(&y, 3, 0, 0);
-        c2d_dx_mul(&y, &y, &a2);
-        c2d_dx_div(&x, &x, &y);
+        c2d_dd_set(&x, -2 * at_m->q[C2D_TOIA_QH].v, 0, at_m->q[C2D_TOIA_QH].e);
+        c2d_dd_set(&y, 3, 0, 0);
+        c2d_dd_mul(&y, &y, &a2);
+        c2d_dd_div(&x, &x, &y);
         if (!(x.h > 0)) return 0;
-        c2d_dx_sqrt(&sq, &x);
-        c2d_dx_copy(&x, &beta);
-        c2d_dx_negate(&x);
+        c2d_dd_sqrt(&sq, &x);
+        c2d_dd_copy(&x, &beta);
+        c2d_dd_negate(&x);
         c2d_toia_t_sum(rp, &x, &sq); /* m + w */
         /* m - w may cancel: the product of the roots is gamma */
-        c2d_dx_div(rm, &gamma, rp);
+        c2d_dd_div(rm, &gamma, rp);
         return 1;
     }
-    c2d_dx_mul(&x, &beta, &beta);
-    c2d_dx_copy(&y, &gamma);
-    c2d_dx_negate(&y);
+    c2d_dd_mul(&x, &beta, &beta);
+    c2d_dd_copy(&y, &gamma);
+    c2d_dd_negate(&y);
     c2d_toia_t_sum(&x, &x, &y);
     if (!(x.h > 0)) return 0;
-    c2d_dx_sqrt(&sq, &x);
-    if (beta.h > 0) c2d_dx_negate(&sq);
-    c2d_dx_copy(&x, &beta);
-    c2d_dx_negate(&x);
+    c2d_dd_sqrt(&sq, &x);
+    if (beta.h > 0) c2d_dd_negate(&sq);
+    c2d_dd_copy(&x, &beta);
+    c2d_dd_negate(&x);
     c2d_toia_t_sum(&x, &x, &sq); /* -beta - sgn(beta) sqrt: no cancellation */
     if (x.h == 0) return 0;
-    c2d_dx_div(&y, &gamma, &x);
+    c2d_dd_div(&y, &gamma, &x);
     if (beta.h > 0) {
-        c2d_dx_copy(rm, &x);
-        c2d_dx_copy(rp, &y);
+        c2d_dd_copy(rm, &x);
+        c2d_dd_copy(rp, &y);
     } else {
-        c2d_dx_copy(rp, &x);
-        c2d_dx_copy(rm, &y);
+        c2d_dd_copy(rp, &x);
+        c2d_dd_copy(rm, &y);
     }
     return 1;
 }

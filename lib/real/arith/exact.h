@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* real_exact.h - template: exact floating-point arithmetic.  Needs
- * real_bits.h first.
+/* real/arith/exact.h - template: exact floating-point arithmetic.  Needs
+ * real/arith/bits.h first.
  *
  * ERROR-FREE TRANSFORMS
  *   For floating a, b (no overflow), s = fl(a + b) and the rounding error
@@ -21,7 +21,7 @@
  *   decided exactly whatever the cancellation.
  *
  * WINDOWED EXACT SUM
- *   Terms are extended numbers (real_bits.h) whose exponents may span far
+ *   Terms are extended numbers (real/arith/bits.h) whose exponents may span far
  *   more than one format can hold.  Terms within C2D_R_WINDOW binades of the
  *   largest are scaled into one window and summed exactly; if that partial
  *   sum is at least 2^(C2D_R_MARGIN - C2D_R_WINDOW) of the window's top, the
@@ -59,7 +59,7 @@ static c2d_real c2d_two_prod(c2d_real a, c2d_real b, c2d_real *err)
     return p;
 }
 
-/* TwoProduct for code dispatched at run time (real_collide.h): with
+/* TwoProduct for code dispatched at run time (real/collide/collide.h): with
  * fused != 0, the error from a fused multiply-add, which only a caller
  * compiled for a target with FMA and chosen because the CPU has it may ask
  * for (C2D_R_FUSED, defined under C2D_DISPATCH); otherwise c2d_two_prod.
@@ -97,7 +97,7 @@ enum { C2D_ATOMS = 40 }; /* terms of an exact sum, at most */
 
 /* Exact sum of up to C2D_ATOMS/2 extended numbers, returned rounded to an
  * extended number (error below 2^-C2D_R_MANT relative; the sign is exact). */
-static c2d_xf c2d_exact_sum(c2d_xf *atom, int n)
+static c2d_ext c2d_exact_sum(c2d_ext *atom, int n)
 {
     c2d_real ex[C2D_ATOMS];
     for (;;) {
@@ -105,36 +105,36 @@ static c2d_xf c2d_exact_sum(c2d_xf *atom, int n)
         c2d_real approx = 0;
         for (i = 0; i < n; i++)
             if (atom[i].m != 0 && atom[i].e > emax) emax = atom[i].e;
-        if (emax == C2D_NO_EXP) return c2d_xf_make(0, 0);
+        if (emax == C2D_NO_EXP) return c2d_ext_make(0, 0);
         for (i = 0; i < n; i++) {
             if (atom[i].m == 0) continue;
             if (atom[i].e >= emax - C2D_R_WINDOW) {
                 k = c2d_grow(ex, k, c2d_scale2(atom[i].m, atom[i].e - emax));
             } else {
-                c2d_xf_copy(&atom[rest++], &atom[i]);
+                c2d_ext_copy(&atom[rest++], &atom[i]);
             }
         }
         for (i = 0; i < k; i++) approx += ex[i];
         if (rest == 0 || (approx != 0 && c2d_ilogb(approx) > C2D_R_MARGIN - C2D_R_WINDOW))
-            return c2d_xf_make(approx, emax);
-        for (i = 0; i < k; i++) atom[rest++] = c2d_xf_make(ex[i], emax);
+            return c2d_ext_make(approx, emax);
+        for (i = 0; i < k; i++) atom[rest++] = c2d_ext_make(ex[i], emax);
         n = rest;
     }
 }
 
 /* Append the exact product x * y of two extended numbers as two atoms. */
-static int c2d_push_product(c2d_xf *atom, int n, c2d_xf x, c2d_xf y)
+static int c2d_push_product(c2d_ext *atom, int n, c2d_ext x, c2d_ext y)
 {
     c2d_real lo, hi = c2d_two_prod(x.m, y.m, &lo);
-    atom[n++] = c2d_xf_make(hi, x.e + y.e);
-    atom[n++] = c2d_xf_make(lo, x.e + y.e);
+    atom[n++] = c2d_ext_make(hi, x.e + y.e);
+    atom[n++] = c2d_ext_make(lo, x.e + y.e);
     return n;
 }
 
 /* The exact difference x1 - x0 as (hi + lo) * 2^e, hi and lo as extended
  * numbers: halving first when the difference could overflow (exact for the
  * large operand, and what the small one loses is far below hi). */
-static void c2d_exact_diff(c2d_real x1, c2d_real x0, c2d_xf *hi, c2d_xf *lo)
+static void c2d_exact_diff(c2d_real x1, c2d_real x0, c2d_ext *hi, c2d_ext *lo)
 {
     int e = 0;
     c2d_real h, l;
@@ -144,8 +144,8 @@ static void c2d_exact_diff(c2d_real x1, c2d_real x0, c2d_xf *hi, c2d_xf *lo)
         e = 1;
     }
     h = c2d_two_sum(x1, -x0, &l);
-    *hi = c2d_xf_make(h, e);
-    *lo = c2d_xf_make(l, e);
+    *hi = c2d_ext_make(h, e);
+    *lo = c2d_ext_make(l, e);
 }
 
 /* r.(nh + nl) for r = vb - va as a double-double: exact differences and

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* real_rough.h - template: c2d_collide_rough, the impact of two rough disks
+/* real/rough.h - template: c2d_collide_rough, the impact of two rough disks
  * with friction and spin (Walton's model of rough inelastic disks).
- * Needs real_collide.h, real_sign.h and real_dd.h first.
+ * Needs real/collide/collide.h, real/arith/sign.h and real/arith/dd.h first.
  *
  * THE MODEL
  *   n^ = n/|n| from a towards b, t^ = (-n^y, n^x) (n^ turned a quarter
@@ -33,7 +33,7 @@
  *
  * ACCURACY
  *   gt vanishes for rolling contact however fast the disks move, so it is
- *   computed in double length (real_dd.h) from exact sums: (vb - va).(-ny, nx)
+ *   computed in double length (real/arith/dd.h) from exact sums: (vb - va).(-ny, nx)
  *   and wa ra + wb rb exactly, |n| to u^2, gt to u |gt| + O(u^2) of the
  *   speeds.  Each output is then the normal result plus the tangential change
  *   rounded once: within c2d_collide's bound plus 2 ulp of the body's scale.
@@ -64,40 +64,40 @@ static void c2d_disk_body(c2d_real_body *body, const c2d_real_disk *d)
 
 /* r = x / y, or 0 when y is infinite (an immovable body's inverse mass, a
  * spin that never changes). */
-static void c2d_dx_ratio(c2d_dx *r, const c2d_dx *x, c2d_real y)
+static void c2d_dd_ratio(c2d_dd *r, const c2d_dd *x, c2d_real y)
 {
-    c2d_dx dy;
+    c2d_dd dy;
     if (y > C2D_R_MAX) {
-        c2d_dx_of(r, 0);
+        c2d_dd_of(r, 0);
         return;
     }
-    c2d_dx_of(&dy, y);
-    c2d_dx_div(r, x, &dy);
+    c2d_dd_of(&dy, y);
+    c2d_dd_div(r, x, &dy);
 }
 
 /* r = x * y for a floating y. */
-static void c2d_dx_scale(c2d_dx *r, const c2d_dx *x, c2d_real y)
+static void c2d_dd_scale(c2d_dd *r, const c2d_dd *x, c2d_real y)
 {
-    c2d_dx dy;
-    c2d_dx_of(&dy, y);
-    c2d_dx_mul(r, x, &dy);
+    c2d_dd dy;
+    c2d_dd_of(&dy, y);
+    c2d_dd_mul(r, x, &dy);
 }
 
 /* The contact's geometry and slip, in double length. */
 typedef struct c2d_rough_contact {
-    c2d_dx t[2];   /* t^ = (-ny, nx) / |n| */
-    c2d_dx gn, gt; /* normal and tangential slip speeds */
+    c2d_dd t[2];   /* t^ = (-ny, nx) / |n| */
+    c2d_dd gn, gt; /* normal and tangential slip speeds */
 } c2d_rough_contact;
 
 /* n (exact, hi + lo per axis, extended) and vb - va likewise. */
-static void c2d_rough_vectors(c2d_xf n[2][2], c2d_xf r[2][2], const c2d_real_disk *a, const c2d_real_disk *b,
+static void c2d_rough_vectors(c2d_ext n[2][2], c2d_ext r[2][2], const c2d_real_disk *a, const c2d_real_disk *b,
                               const c2d_real_vec *normal)
 {
     if (normal != NULL) {
-        c2d_xf_set(&n[0][0], normal->x, 0);
-        c2d_xf_set(&n[1][0], normal->y, 0);
-        c2d_xf_set(&n[0][1], 0, 0);
-        c2d_xf_set(&n[1][1], 0, 0);
+        c2d_ext_set(&n[0][0], normal->x, 0);
+        c2d_ext_set(&n[1][0], normal->y, 0);
+        c2d_ext_set(&n[0][1], 0, 0);
+        c2d_ext_set(&n[1][1], 0, 0);
     } else {
         c2d_exact_diff(b->pos.x, a->pos.x, &n[0][0], &n[0][1]);
         c2d_exact_diff(b->pos.y, a->pos.y, &n[1][0], &n[1][1]);
@@ -109,97 +109,97 @@ static void c2d_rough_vectors(c2d_xf n[2][2], c2d_xf r[2][2], const c2d_real_dis
 static void c2d_rough_contact_of(c2d_rough_contact *c, const c2d_real_disk *a, const c2d_real_disk *b,
                                  const c2d_real_vec *normal)
 {
-    c2d_xf n[2][2], r[2][2];
+    c2d_ext n[2][2], r[2][2];
     c2d_acc acc;
-    c2d_dx len, x, y;
+    c2d_dd len, x, y;
     c2d_rough_vectors(n, r, a, b, normal);
     c2d_acc_clear(&acc); /* |n| */
     c2d_acc_pair_product(&acc, n[0], n[0], 1);
     c2d_acc_pair_product(&acc, n[1], n[1], 1);
-    c2d_dx_of_acc(&x, &acc);
-    c2d_dx_sqrt(&len, &x);
+    c2d_dd_of_acc(&x, &acc);
+    c2d_dd_sqrt(&len, &x);
     c2d_acc_clear(&acc); /* gn = (vb - va).n / |n| */
     c2d_acc_pair_product(&acc, r[0], n[0], 1);
     c2d_acc_pair_product(&acc, r[1], n[1], 1);
-    c2d_dx_of_acc(&x, &acc);
-    c2d_dx_div(&c->gn, &x, &len);
+    c2d_dd_of_acc(&x, &acc);
+    c2d_dd_div(&c->gn, &x, &len);
     c2d_acc_clear(&acc); /* gt = (vb - va).(-ny, nx) / |n| - (wa ra + wb rb) */
     c2d_acc_pair_product(&acc, r[1], n[0], 1);
     c2d_acc_pair_product(&acc, r[0], n[1], -1);
-    c2d_dx_of_acc(&x, &acc);
-    c2d_dx_div(&x, &x, &len);
+    c2d_dd_of_acc(&x, &acc);
+    c2d_dd_div(&x, &x, &len);
     c2d_acc_clear(&acc);
     c2d_acc_product_of(&acc, a->spin, a->radius, 1);
     c2d_acc_product_of(&acc, b->spin, b->radius, 1);
-    c2d_dx_of_acc(&y, &acc);
-    c2d_dx_add(&c->gt, &x, &y, -1);
-    c2d_dx_set(&x, n[1][0].m, 0, n[1][0].e); /* t^ = (-ny, nx) / |n| */
-    c2d_dx_set(&y, n[1][1].m, 0, n[1][1].e);
-    c2d_dx_add(&x, &x, &y, 1);
-    c2d_dx_negate(&x);
-    c2d_dx_div(&c->t[0], &x, &len);
-    c2d_dx_set(&x, n[0][0].m, 0, n[0][0].e);
-    c2d_dx_set(&y, n[0][1].m, 0, n[0][1].e);
-    c2d_dx_add(&x, &x, &y, 1);
-    c2d_dx_div(&c->t[1], &x, &len);
+    c2d_dd_of_acc(&y, &acc);
+    c2d_dd_add(&c->gt, &x, &y, -1);
+    c2d_dd_set(&x, n[1][0].m, 0, n[1][0].e); /* t^ = (-ny, nx) / |n| */
+    c2d_dd_set(&y, n[1][1].m, 0, n[1][1].e);
+    c2d_dd_add(&x, &x, &y, 1);
+    c2d_dd_negate(&x);
+    c2d_dd_div(&c->t[0], &x, &len);
+    c2d_dd_set(&x, n[0][0].m, 0, n[0][0].e);
+    c2d_dd_set(&y, n[0][1].m, 0, n[0][1].e);
+    c2d_dd_add(&x, &x, &y, 1);
+    c2d_dd_div(&c->t[1], &x, &len);
 }
 
 /* jt = the tangential impulse: sticking, or sliding on Coulomb's cone. */
-static void c2d_rough_impulse(c2d_dx *jt, const c2d_rough_contact *c, const c2d_real_disk *a, const c2d_real_disk *b,
+static void c2d_rough_impulse(c2d_dd *jt, const c2d_rough_contact *c, const c2d_real_disk *a, const c2d_real_disk *b,
                               const c2d_real_surface *s)
 {
-    c2d_dx one, ia, ib, ka, kb, mn_inv, mt_inv, x, cone;
-    c2d_dx_of(&one, 1);
-    c2d_dx_ratio(&ia, &one, a->mass); /* 1/ma, 1/mb, ra^2/Ia, rb^2/Ib */
-    c2d_dx_ratio(&ib, &one, b->mass);
-    c2d_dx_of(&x, a->radius);
-    c2d_dx_scale(&x, &x, a->radius);
-    c2d_dx_ratio(&ka, &x, a->inertia);
-    c2d_dx_of(&x, b->radius);
-    c2d_dx_scale(&x, &x, b->radius);
-    c2d_dx_ratio(&kb, &x, b->inertia);
-    c2d_dx_add(&mn_inv, &ia, &ib, 1);
-    c2d_dx_add(&x, &ka, &kb, 1);
-    c2d_dx_add(&mt_inv, &mn_inv, &x, 1);
-    c2d_dx_scale(&x, &c->gt, 1 + s->tangential_restitution); /* sticking: -(1 + beta) gt mt */
-    c2d_dx_div(jt, &x, &mt_inv);
-    c2d_dx_negate(jt);
+    c2d_dd one, ia, ib, ka, kb, mn_inv, mt_inv, x, cone;
+    c2d_dd_of(&one, 1);
+    c2d_dd_ratio(&ia, &one, a->mass); /* 1/ma, 1/mb, ra^2/Ia, rb^2/Ib */
+    c2d_dd_ratio(&ib, &one, b->mass);
+    c2d_dd_of(&x, a->radius);
+    c2d_dd_scale(&x, &x, a->radius);
+    c2d_dd_ratio(&ka, &x, a->inertia);
+    c2d_dd_of(&x, b->radius);
+    c2d_dd_scale(&x, &x, b->radius);
+    c2d_dd_ratio(&kb, &x, b->inertia);
+    c2d_dd_add(&mn_inv, &ia, &ib, 1);
+    c2d_dd_add(&x, &ka, &kb, 1);
+    c2d_dd_add(&mt_inv, &mn_inv, &x, 1);
+    c2d_dd_scale(&x, &c->gt, 1 + s->tangential_restitution); /* sticking: -(1 + beta) gt mt */
+    c2d_dd_div(jt, &x, &mt_inv);
+    c2d_dd_negate(jt);
     if (s->friction > C2D_R_MAX) return; /* mu = INFINITY: never slides */
-    c2d_dx_scale(&x, &c->gn, -(1 + s->restitution)); /* the cone: mu Jn = mu (1 + e) (-gn) mn */
-    c2d_dx_scale(&x, &x, s->friction);
-    c2d_dx_div(&cone, &x, &mn_inv);
-    if (!c2d_dx_abs_greater(jt, &cone)) return;
+    c2d_dd_scale(&x, &c->gn, -(1 + s->restitution)); /* the cone: mu Jn = mu (1 + e) (-gn) mn */
+    c2d_dd_scale(&x, &x, s->friction);
+    c2d_dd_div(&cone, &x, &mn_inv);
+    if (!c2d_dd_abs_greater(jt, &cone)) return;
     jt->h = cone.h; /* field by field: no memcpy */
     jt->l = cone.l;
     jt->e = cone.e;
-    if (c2d_dx_sign(&c->gt) > 0) c2d_dx_negate(jt);
+    if (c2d_dd_sign(&c->gt) > 0) c2d_dd_negate(jt);
 }
 
 /* x + dv, rounded once; x itself when nothing changes (so -0 stays -0). */
-static c2d_real c2d_plus(c2d_real x, const c2d_dx *dv)
+static c2d_real c2d_plus(c2d_real x, const c2d_dd *dv)
 {
-    c2d_dx sum;
+    c2d_dd sum;
     if (dv->h == 0) return x;
-    c2d_dx_of(&sum, x);
-    c2d_dx_add(&sum, &sum, dv, 1);
-    return c2d_dx_value(&sum);
+    c2d_dd_of(&sum, x);
+    c2d_dd_add(&sum, &sum, dv, 1);
+    return c2d_dd_value(&sum);
 }
 
 /* The velocity and spin changes of one disk under the impulse sign * jt t^
  * at the contact, applied on top of the normal result v: out = {vx, vy, w}. */
-static void c2d_rough_apply(c2d_real *out, const c2d_real_vec *v, const c2d_real_disk *d, const c2d_dx *jt, int sign,
+static void c2d_rough_apply(c2d_real *out, const c2d_real_vec *v, const c2d_real_disk *d, const c2d_dd *jt, int sign,
                             const c2d_rough_contact *c)
 {
-    c2d_dx dv, x;
-    c2d_dx_ratio(&dv, jt, d->mass);
-    if (sign < 0) c2d_dx_negate(&dv);
-    c2d_dx_mul(&x, &dv, &c->t[0]);
+    c2d_dd dv, x;
+    c2d_dd_ratio(&dv, jt, d->mass);
+    if (sign < 0) c2d_dd_negate(&dv);
+    c2d_dd_mul(&x, &dv, &c->t[0]);
     out[0] = c2d_plus(v->x, &x);
-    c2d_dx_mul(&x, &dv, &c->t[1]);
+    c2d_dd_mul(&x, &dv, &c->t[1]);
     out[1] = c2d_plus(v->y, &x);
-    c2d_dx_scale(&x, jt, d->radius); /* both spins: -r Jt / I */
-    c2d_dx_ratio(&x, &x, d->inertia);
-    c2d_dx_negate(&x);
+    c2d_dd_scale(&x, jt, d->radius); /* both spins: -r Jt / I */
+    c2d_dd_ratio(&x, &x, d->inertia);
+    c2d_dd_negate(&x);
     out[2] = c2d_plus(d->spin, &x);
 }
 
@@ -209,7 +209,7 @@ C2D_COLD c2d_status c2d_rough_tangential(c2d_real_disk *a, c2d_real_disk *b, con
                                          const c2d_real_surface *s)
 {
     c2d_rough_contact c;
-    c2d_dx jt;
+    c2d_dd jt;
     c2d_real oa[3], ob[3];
     c2d_rough_contact_of(&c, a, b, normal);
     c2d_rough_impulse(&jt, &c, a, b, s);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* real_toia_eval.h - template: the time of impact under acceleration,
+/* real/toia/eval.h - template: the time of impact under acceleration,
  * part 3 of 7: f, g, h at a time with certified error bounds, three tiers
- * (plain, double length, exact).  See real_toia.h. */
+ * (plain, double length, exact).  See real/toia/solve.h. */
 #ifndef C2D_REAL_TOIA_EVAL_H
 #define C2D_REAL_TOIA_EVAL_H
 /* Evaluation with certified error bounds, three tiers                   */
@@ -15,7 +15,7 @@
  * relative to the largest is covered by the floor): sc[0] for d0, sc[1]
  * for v t / th, sc[2] for a t^2 / th^2 (the 1/2 included), sc[3] for v,
  * sc[4] for a t / th.  Zero vectors and t = 0 give factor 0. */
-static void c2d_toia_scales(c2d_toia_ctx *c, const c2d_dx *t, int *E, int *E1, c2d_real *sc)
+static void c2d_toia_scales(c2d_toia_ctx *c, const c2d_dd *t, int *E, int *E1, c2d_real *sc)
 {
     int have = 0, e = 0, e1 = 0, have1 = 0, k;
     const int ht = t->h != 0, te = t->e;
@@ -140,7 +140,7 @@ static void c2d_toia_fgpart(c2d_toia_ctx *c, const c2d_real *d, const c2d_real *
  * its own four roundings (4u (|d|^2 + R^2)); g, h, hp likewise.  The
  * constants are rounded up generously (bounds are themselves computed in
  * floating point). */
-static void c2d_toia_e1(c2d_toia_ctx *c, const c2d_dx *t, c2d_toia_ev *o)
+static void c2d_toia_e1(c2d_toia_ctx *c, const c2d_dd *t, c2d_toia_ev *o)
 {
     const c2d_real u = c2d_pow2(-C2D_R_MANT - 1), fl = c2d_pow2(C2D_R_EMIN + 4);
     c2d_real sc[5], d[2], d1[2], dl[2], dl1[2], tm = t->h;
@@ -236,7 +236,7 @@ static void c2d_toia_finish2(c2d_toia_ctx *c, const c2d_real *dh, const c2d_real
  * products (t^2, a t^2) and the three are added twice: |d - d~| <=
  * 16 u^2 s + floor (u^2 s for the lo parts below the common scale, 4 u^2 per
  * operation, rounded up); d' with 12 u^2. */
-C2D_COLD void c2d_toia_e2(c2d_toia_ctx *c, const c2d_dx *t, c2d_toia_ev *o)
+C2D_COLD void c2d_toia_e2(c2d_toia_ctx *c, const c2d_dd *t, c2d_toia_ev *o)
 {
     const c2d_real u = c2d_pow2(-C2D_R_MANT - 1), fl = c2d_pow2(C2D_R_EMIN + 4);
     c2d_real sc[5], dh[2], dlo[2], dl[2], d1h[2], d1lo[2], dl1[2], t2h, t2l, th = t->h, tl = t->l;
@@ -271,7 +271,7 @@ C2D_COLD void c2d_toia_e2(c2d_toia_ctx *c, const c2d_dx *t, c2d_toia_ev *o)
 }
 
 /* Tier 3: d and d' at the working-precision time th 2^te EXACTLY (sums of
- * exact products of the exact differences, c2d_toia_xsum), rounded to
+ * exact products of the exact differences, c2d_toia_ext_sum), rounded to
  * double length with relative error (k + 3) u^2; then the double-length
  * correction d += d'(th) tl + a tl^2 / 2, d' += a tl for the low part of t.
  * The bound on d is therefore relative to |d| itself (plus the correction's
@@ -281,16 +281,16 @@ C2D_COLD void c2d_toia_e2(c2d_toia_ctx *c, const c2d_dx *t, c2d_toia_ev *o)
 /* One component, exactly: d_i(th) (which 0: 2 + 4 + 8 atoms at most) or
  * d'_i(th) (1: 2 + 4), rounded to double length: (*h + *l) 2^return,
  * relative error (2k + 2) u^2 with k returned in *k. */
-C2D_COLD int c2d_toia_dcomp(c2d_toia_ctx *c, const c2d_dx *t, int i, int which, c2d_real *h,
+C2D_COLD int c2d_toia_dcomp(c2d_toia_ctx *c, const c2d_dd *t, int i, int which, c2d_real *h,
                                         c2d_real *l, int *k)
 {
     c2d_real m[C2D_TOIA_DATOMS], lo, hi;
     int e[C2D_TOIA_DATOMS], j, n = 0;
-    c2d_xf T, T2[2], q;
-    c2d_xf_set(&T, t->h, t->e);
+    c2d_ext T, T2[2], q;
+    c2d_ext_set(&T, t->h, t->e);
     hi = c2d_two_prod(t->h, t->h, &lo);
-    c2d_xf_set(&T2[0], hi, 2 * t->e);
-    c2d_xf_set(&T2[1], lo, 2 * t->e);
+    c2d_ext_set(&T2[0], hi, 2 * t->e);
+    c2d_ext_set(&T2[1], lo, 2 * t->e);
     for (j = 0; j < 2; j++) {
         if (which == 0) {
             c2d_toia_part(c, 0, i, j, &q);
@@ -307,10 +307,10 @@ C2D_COLD int c2d_toia_dcomp(c2d_toia_ctx *c, const c2d_dx *t, int i, int which, 
             n = c2d_toia_push(m, e, n, &q, &T, 0, 1);
         }
     }
-    return c2d_toia_xsum(m, e, n, h, l, k);
+    return c2d_toia_ext_sum(m, e, n, h, l, k);
 }
 
-C2D_COLD void c2d_toia_dexact(c2d_toia_ctx *c, const c2d_dx *t, c2d_real *dh, c2d_real *dlo,
+C2D_COLD void c2d_toia_dexact(c2d_toia_ctx *c, const c2d_dd *t, c2d_real *dh, c2d_real *dlo,
                                           c2d_real *dl, c2d_real *d1h, c2d_real *d1lo, c2d_real *dl1, int *Eout,
                                           int *E1out)
 {
@@ -392,7 +392,7 @@ C2D_COLD void c2d_toia_dexact(c2d_toia_ctx *c, const c2d_dx *t, c2d_real *dh, c2
     *E1out = E1;
 }
 
-C2D_COLD void c2d_toia_e3(c2d_toia_ctx *c, const c2d_dx *t, c2d_toia_ev *o)
+C2D_COLD void c2d_toia_e3(c2d_toia_ctx *c, const c2d_dd *t, c2d_toia_ev *o)
 {
     c2d_real dh[2], dlo[2], dl[2], d1h[2], d1lo[2], dl1[2];
     int E, E1;
@@ -406,7 +406,7 @@ C2D_COLD void c2d_toia_e3(c2d_toia_ctx *c, const c2d_dx *t, c2d_toia_ev *o)
  * `need` (mask of C2D_TOIA_M*) is uncertain; o->s[] gets each needed
  * quantity's certified sign (0 only if tier 3 could not certify it: the
  * tie cases of the contract), o->q[] the values of the last tier used. */
-C2D_COLD void c2d_toia_probe(c2d_toia_ctx *c, const c2d_dx *t, int need, int from, c2d_toia_ev *o)
+C2D_COLD void c2d_toia_probe(c2d_toia_ctx *c, const c2d_dd *t, int need, int from, c2d_toia_ev *o)
 {
     int tier, k, sg[4];
     for (k = 0; k < 4; k++) sg[k] = 0;
@@ -435,7 +435,7 @@ C2D_COLD void c2d_toia_probe(c2d_toia_ctx *c, const c2d_dx *t, int need, int fro
 /* probe, keeping f and g and their signs (a bracket end).  Records are
  * copied field by field: a struct assignment may become a memcpy call, and
  * the library must need no C library. */
-C2D_COLD void c2d_toia_probe_fg(c2d_toia_ctx *c, const c2d_dx *t, int from, c2d_toia_fg *o)
+C2D_COLD void c2d_toia_probe_fg(c2d_toia_ctx *c, const c2d_dd *t, int from, c2d_toia_fg *o)
 {
     c2d_toia_ev ev;
     c2d_toia_probe(c, t, C2D_TOIA_MF | C2D_TOIA_MG, from, &ev);

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* real_float.h - binary32's parameters and the shared templates (real_*.h,
+/* real/float.h - binary32's parameters and the shared templates (real/,
  * derivations there) instantiated for them: what lib/float.c builds its
  * public functions on, and what a white-box test includes to reach the
  * internals.  Needs internal.h first. */
@@ -28,35 +28,17 @@
 #if defined(__FP_FAST_FMAF) && defined(__GNUC__)
 #define C2D_R_FMA __builtin_fmaf /* TwoProduct in one instruction; same bits */
 #elif defined(C2D_DISPATCH)
-#define C2D_R_FUSED __builtin_fmaf /* TwoProduct by FMA where run-time dispatch finds it (real_exact.h) */
+#define C2D_R_FUSED __builtin_fmaf /* TwoProduct by FMA where run-time dispatch finds it (real/arith/exact.h) */
 #endif
 #define C2D_R_EXP_K 90       /* fast window: |products| summed in [2^-90, 2^90] */
 #define C2D_R_EXP_KAPPA2 12  /* tier-2 d trusted if it cancels by at most 2^12 */
 #define C2D_R_WINDOW 72      /* exact-sum window, binades */
 #define C2D_R_MARGIN 36      /* window sum must dominate the rest by 2^36 */
 
-#define C2D_R_QUICK 20        /* front end's window: [2^-20, 2^20] (real_fast.h) */
+#define C2D_R_QUICK 20        /* front end's window: [2^-20, 2^20] (real/collide/fast.h) */
 
-#define C2D_R_TOI_WINDOW 12   /* time of impact unscaled within [2^-12, 2^12] (real_toi.h) */
+#define C2D_R_TOI_WINDOW 12   /* time of impact unscaled within [2^-12, 2^12] (real/toi.h) */
 
-#include "real_bits.h"
-#include "real_exact.h"
-#include "real_sign.h"
-#include "real_round.h"
-#include "real_fast.h"
-#include "real_general.h"
-#include "real_collide.h"
-#include "real_axis.h"
-#include "real_batch.h"
-#include "real_toi.h"
-#include "real_dd.h"
-#include "real_rough.h"
-#include "real_toia_num.h"
-#include "real_toia_problem.h"
-#include "real_toia_eval.h"
-#include "real_toia_newton.h"
-#include "real_toia_turns.h"
-#include "real_toia_scan.h"
-#include "real_toia.h"
+#include "instance.h"
 
 #endif /* C2D_REAL_FLOAT_H */

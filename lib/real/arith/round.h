@@ -1,14 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* real_round.h - template: correctly rounded quotients of exact sums, and
+/* real/arith/round.h - template: correctly rounded quotients of exact sums, and
  * the cheap filter in front of them.
- * Needs real_bits.h, real_exact.h and real_sign.h first.
+ * Needs real/arith/bits.h, real/arith/exact.h and real/arith/sign.h first.
  *
  * THE PROBLEM
  *   Where an exact answer is representable, or its nearest representable
  *   value is what the user should get (an axis-aligned impact: a swap, a
  *   sign flip against a wall), the result must be N / D rounded once, with N
  *   and D polynomials in the inputs.  Both are exact sums of products of
- *   extended numbers (real_sign.h), so the question is only which of two
+ *   extended numbers (real/arith/sign.h), so the question is only which of two
  *   adjacent representable values is nearer.
  *
  * THE FILTER (Ziv's strategy)
@@ -78,10 +78,10 @@
 #define C2D_REAL_ROUND_H
 
 /* acc += sign * x. */
-static void c2d_acc_add(c2d_acc *acc, const c2d_xf *x, int sign)
+static void c2d_acc_add(c2d_acc *acc, const c2d_ext *x, int sign)
 {
-    c2d_xf one;
-    c2d_xf_set(&one, 1, 0);
+    c2d_ext one;
+    c2d_ext_set(&one, 1, 0);
     c2d_acc_product(acc, x, &one, sign);
 }
 
@@ -100,37 +100,37 @@ static c2d_real c2d_next(c2d_real x, int dir)
 }
 
 /* acc = R = N - q D, exactly. */
-static void c2d_remainder(c2d_acc *acc, const c2d_xf *num, int nn, const c2d_xf *den, int nd, c2d_real q)
+static void c2d_remainder(c2d_acc *acc, const c2d_ext *num, int nn, const c2d_ext *den, int nd, c2d_real q)
 {
-    c2d_xf xq;
+    c2d_ext xq;
     int i;
     c2d_acc_clear(acc);
-    c2d_xf_set(&xq, q, 0);
+    c2d_ext_set(&xq, q, 0);
     for (i = 0; i < nn; i++) c2d_acc_add(acc, &num[i], 1);
     for (i = 0; i < nd; i++) c2d_acc_product(acc, &xq, &den[i], -1);
 }
 
 /* The sign of R = N - q D. */
-static int c2d_remainder_sign(const c2d_xf *num, int nn, const c2d_xf *den, int nd, c2d_real q)
+static int c2d_remainder_sign(const c2d_ext *num, int nn, const c2d_ext *den, int nd, c2d_real q)
 {
     c2d_acc acc;
-    c2d_xf r;
+    c2d_ext r;
     c2d_remainder(&acc, num, nn, den, nd, q);
     c2d_acc_value(&r, &acc);
-    return c2d_xf_sign(&r);
+    return c2d_ext_sign(&r);
 }
 
 /* The sign of |R| - h D, with R = N - q D of sign r_sign and h half the gap
  * |q - q_other| between q and a neighbour (a power of two: exact). */
-static int c2d_beyond_half(const c2d_xf *num, int nn, const c2d_xf *den, int nd, c2d_real q, c2d_real q_other,
+static int c2d_beyond_half(const c2d_ext *num, int nn, const c2d_ext *den, int nd, c2d_real q, c2d_real q_other,
                            int r_sign)
 {
     c2d_acc acc;
-    c2d_xf h, s;
+    c2d_ext h, s;
     int i;
-    c2d_xf_set(&h, q_other, 0);
-    c2d_xf_set(&s, q, 0);
-    c2d_xf_add(&h, &h, &s, -1);
+    c2d_ext_set(&h, q_other, 0);
+    c2d_ext_set(&s, q, 0);
+    c2d_ext_add(&h, &h, &s, -1);
     h.m = c2d_abs(h.m);
     h.e -= 1;
     c2d_remainder(&acc, num, nn, den, nd, q);
@@ -138,15 +138,15 @@ static int c2d_beyond_half(const c2d_xf *num, int nn, const c2d_xf *den, int nd,
         for (i = 0; i < acc.n; i++) acc.atom[i].m = -acc.atom[i].m;
     for (i = 0; i < nd; i++) c2d_acc_product(&acc, &h, &den[i], -1);
     c2d_acc_value(&s, &acc);
-    return c2d_xf_sign(&s);
+    return c2d_ext_sign(&s);
 }
 
 /* *r = (sum of num[0..nn)) / (sum of den[0..nd)), den's sum > 0, correctly
  * rounded, ties to even, Inf beyond the largest finite value. */
-static void c2d_round_quotient(c2d_real *r, const c2d_xf *num, int nn, const c2d_xf *den, int nd)
+static void c2d_round_quotient(c2d_real *r, const c2d_ext *num, int nn, const c2d_ext *den, int nd)
 {
     c2d_acc acc;
-    c2d_xf nv, dv, qx;
+    c2d_ext nv, dv, qx;
     c2d_real q;
     int i, step, decided = 0;
     c2d_acc_clear(&acc);
@@ -159,7 +159,7 @@ static void c2d_round_quotient(c2d_real *r, const c2d_xf *num, int nn, const c2d
         *r = 0;
         return;
     }
-    c2d_xf_div(&qx, &nv, &dv);
+    c2d_ext_div(&qx, &nv, &dv);
     q = c2d_scale2(qx.m, qx.e);
     if (!(q - q == 0)) q = q > 0 ? C2D_R_MAX : -C2D_R_MAX; /* the steps decide overflow exactly */
     /* q starts within a few ulp; each step moves one ulp towards N / D. */

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* real_toia_scan.h - template: the time of impact under acceleration,
+/* real/toia/scan.h - template: the time of impact under acceleration,
  * part 6 of 7: the certified fast paths, the pieces of (0, T) on which g is
- * monotone, and the scan over them.  See real_toia.h. */
+ * monotone, and the scan over them.  See real/toia/solve.h. */
 #ifndef C2D_REAL_TOIA_SCAN_H
 #define C2D_REAL_TOIA_SCAN_H
 /* Fast paths: certified shortcuts for the common cases                  */
@@ -136,16 +136,16 @@ static int c2d_toia_gneg(const c2d_toia_frame *fr, c2d_real T)
  *     it and g < 0 on [0, x2], f decreases to a unique root in (0, x2):
  *     that is the contact.
  * Returns 1 (contact in *out), 0 (none), -1 (not decided here). */
-C2D_COLD int c2d_toia_fast(c2d_toia_ctx *c, const c2d_dx *T, int t_is_h, c2d_dx *out)
+C2D_COLD int c2d_toia_fast(c2d_toia_ctx *c, const c2d_dd *T, int t_is_h, c2d_dd *out)
 {
     c2d_toia_frame fr;
     c2d_toia_ev ev;
-    c2d_dx z, x2;
+    c2d_dd z, x2;
     c2d_real tl, x, dphi, noise;
     int kt = T->e + 1, it, settled = 0;
     if (c2d_toia_frame_set(&fr, c, kt) == 0) return -1;
     tl = c2d_toia_t_local(T, kt);
-    c2d_dx_set(&z, 0, 0, 0);
+    c2d_dd_set(&z, 0, 0, 0);
     if (c2d_toia_gneg(&fr, tl) != 0) {
         c2d_toia_probe(c, T, C2D_TOIA_MF, 1, &ev);
         if (ev.s[C2D_TOIA_QF] > 0) return 0;
@@ -177,12 +177,12 @@ C2D_COLD int c2d_toia_fast(c2d_toia_ctx *c, const c2d_dx *T, int t_is_h, c2d_dx 
         (void)c2d_toia_e0(&fr, C2D_TOIA_QF, x, &dphi, &noise);
         if (dphi < 0 && 16 * noise / -dphi > w) w = 16 * noise / -dphi;
         if (!(x + w <= tl)) return -1;
-        c2d_dx_set(&x2, x + w, 0, kt);
+        c2d_dd_set(&x2, x + w, 0, kt);
     }
     c2d_toia_probe(c, &x2, C2D_TOIA_MF, 1, &ev);
     if (ev.s[C2D_TOIA_QF] >= 0) return -1;
     if (c2d_toia_gneg(&fr, c2d_toia_t_local(&x2, kt)) == 0) return -1;
-    c2d_dx_set(out, x, 0, kt);
+    c2d_dd_set(out, x, 0, kt);
     if (c2d_toia_polish(c, out, C2D_TOIA_QF, &z, &x2, C2D_R_MANT + 3) == 0) c2d_toia_root(c, &z, &x2, C2D_TOIA_QF, 1, out);
     return 1;
 }
@@ -194,13 +194,13 @@ C2D_COLD int c2d_toia_fast(c2d_toia_ctx *c, const c2d_dx *T, int t_is_h, c2d_dx 
 /* The vertex -v.a / |a|^2 of h (where h' = 3 d'.a vanishes), in double
  * length (from exact sums if exact, else from the hi parts); returns an
  * exponent dm with |*mt - m| <= 2^dm. */
-C2D_COLD int c2d_toia_vertex(c2d_toia_ctx *c, int exact, c2d_dx *mt)
+C2D_COLD int c2d_toia_vertex(c2d_toia_ctx *c, int exact, c2d_dd *mt)
 {
-    c2d_dx a2, va;
+    c2d_dd a2, va;
     c2d_real rel;
     c2d_toia_dotq(c, 2, 2, -1, -1, 1, exact, &a2);
     c2d_toia_dotq(c, 1, 2, -1, -1, -1, exact, &va);
-    c2d_dx_div(mt, &va, &a2);
+    c2d_dd_div(mt, &va, &a2);
     if (mt->h == 0) return C2D_R_EMIN - C2D_R_MANT;
     if (exact != 0) return mt->e - 2 * C2D_R_MANT + 3; /* 8 u^2 relative */
     /* from the hi parts: 4u of sum |v_i a_i| / |v.a| (cancellation) + 4u */
@@ -223,12 +223,12 @@ C2D_COLD int c2d_toia_vertex(c2d_toia_ctx *c, int exact, c2d_dx *mt)
  * uncertain h(m) is a near-double root of h: g then has an inflection
  * with g' ~ 0 and no usable split (the wiggle of g there is at most
  * (2/3)|h(m)| sqrt(2|h(m)|/h''), inside the band). */
-C2D_COLD int c2d_toia_splits_x(c2d_toia_ctx *c, const c2d_dx *T, const int *s0, c2d_dx *bt,
+C2D_COLD int c2d_toia_splits_ext(c2d_toia_ctx *c, const c2d_dd *T, const int *s0, c2d_dd *bt,
                                             int *bs, int *bf, int exact, int *tied)
 {
     const int sh = s0[2] != 0 ? s0[2] : (s0[3] != 0 ? s0[3] : 1);
     const int shp = s0[3] != 0 ? s0[3] : 1;
-    c2d_dx rr[2];
+    c2d_dd rr[2];
     c2d_toia_ev ev;
     int n = 0, want_m = 0, want_p = 0, k, ok, t1;
     *tied = 0;
@@ -242,12 +242,12 @@ C2D_COLD int c2d_toia_splits_x(c2d_toia_ctx *c, const c2d_dx *T, const int *s0, 
          * h(m~) >= min h = h(m) >= h(m~) - (h''/2) 2^2dm, so only a margin
          * of (3/2)|a|^2 2^2dm above 0 proves h > 0 everywhere; the cheap
          * vertex is retried exactly (*tied) when it cannot decide */
-        c2d_dx mt, mlo, mhi;
+        c2d_dd mt, mlo, mhi;
         int dm = c2d_toia_vertex(c, exact, &mt);
         if (!(mt.h > 0)) return 0;
-        c2d_dx_copy(&mlo, &mt);
+        c2d_dd_copy(&mlo, &mt);
         c2d_toia_t_add(&mlo, -1, dm);
-        c2d_dx_copy(&mhi, &mt);
+        c2d_dd_copy(&mhi, &mt);
         c2d_toia_t_add(&mhi, 1, dm);
         if (exact == 0 && c2d_toia_t_cmp(&mlo, T) < 0 && c2d_toia_t_cmp(&mhi, T) >= 0) {
             *tied = 1; /* is the vertex before T?  not from the hints */
@@ -259,12 +259,12 @@ C2D_COLD int c2d_toia_splits_x(c2d_toia_ctx *c, const c2d_dx *T, const int *s0, 
             want_m = 1;
             ok = c2d_toia_hroots(c, NULL, exact, &rr[0], &rr[1]);
         } else {
-            c2d_xf hm, mg;
+            c2d_ext hm, mg;
             c2d_toia_probe(c, &mt, C2D_TOIA_MH, 2, &ev);
-            c2d_xf_set(&hm, ev.q[C2D_TOIA_QH].v - ev.q[C2D_TOIA_QH].r, ev.q[C2D_TOIA_QH].e);
-            c2d_xf_set(&mg, (c2d_real)1.5 * (c->m[2][0] * c->m[2][0] + c->m[2][1] * c->m[2][1]) * 2,
+            c2d_ext_set(&hm, ev.q[C2D_TOIA_QH].v - ev.q[C2D_TOIA_QH].r, ev.q[C2D_TOIA_QH].e);
+            c2d_ext_set(&mg, (c2d_real)1.5 * (c->m[2][0] * c->m[2][0] + c->m[2][1] * c->m[2][1]) * 2,
                            2 * c->ex[2] + 2 * dm);
-            if (ev.s[C2D_TOIA_QH] > 0 && c2d_toia_x_cmp(&hm, &mg) > 0) return 0; /* h > 0 throughout */
+            if (ev.s[C2D_TOIA_QH] > 0 && c2d_toia_ext_cmp(&hm, &mg) > 0) return 0; /* h > 0 throughout */
             if (ev.s[C2D_TOIA_QH] >= 0) {
                 /* not proven: a near-double root of h (a tie) with the exact
                  * vertex, or the hints were not good enough */
@@ -278,11 +278,11 @@ C2D_COLD int c2d_toia_splits_x(c2d_toia_ctx *c, const c2d_dx *T, const int *s0, 
     }
     if (ok == 0) return 0;
     for (k = 0; k < 2; k++) {
-        c2d_dx lo, hi;
+        c2d_dd lo, hi;
         if ((k == 0 ? want_m : want_p) == 0 || !(rr[k].h > 0)) continue;
-        c2d_dx_copy(&bt[n], &rr[k]);
-        c2d_dx_set(&lo, bt[n].h, bt[n].l, bt[n].e - 1);
-        c2d_dx_set(&hi, bt[n].h, bt[n].l, bt[n].e + 1);
+        c2d_dd_copy(&bt[n], &rr[k]);
+        c2d_dd_set(&lo, bt[n].h, bt[n].l, bt[n].e - 1);
+        c2d_dd_set(&hi, bt[n].h, bt[n].l, bt[n].e + 1);
         (void)c2d_toia_polish(c, &bt[n], C2D_TOIA_QH, &lo, &hi, 2 * C2D_R_MANT);
         if (!(bt[n].h > 0) || c2d_toia_t_cmp(&bt[n], T) >= 0) continue;
         if (n > 0 && c2d_toia_t_cmp(&bt[n], &bt[n - 1]) <= 0) continue;
@@ -295,11 +295,11 @@ C2D_COLD int c2d_toia_splits_x(c2d_toia_ctx *c, const c2d_dx *T, const int *s0, 
 
 /* The splits from cheap hints, again from exact ones if a sliver could not
  * be certified (the hints may have missed the roots under cancellation). */
-C2D_COLD int c2d_toia_splits(c2d_toia_ctx *c, const c2d_dx *T, const int *s0, c2d_dx *bt, int *bs,
+C2D_COLD int c2d_toia_splits(c2d_toia_ctx *c, const c2d_dd *T, const int *s0, c2d_dd *bt, int *bs,
                                          int *bf)
 {
-    int tied = 0, n = c2d_toia_splits_x(c, T, s0, bt, bs, bf, 0, &tied);
-    if (tied != 0) n = c2d_toia_splits_x(c, T, s0, bt, bs, bf, 1, &tied);
+    int tied = 0, n = c2d_toia_splits_ext(c, T, s0, bt, bs, bf, 0, &tied);
+    if (tied != 0) n = c2d_toia_splits_ext(c, T, s0, bt, bs, bf, 1, &tied);
     return n;
 }
 
@@ -312,8 +312,8 @@ C2D_COLD int c2d_toia_splits(c2d_toia_ctx *c, const c2d_dx *T, const int *s0, c2
  * from receding to approaching; or a tie: f touches 0 from below, and
  * enters at once either way) with *out = c; else 0 with *l = a point of
  * the bracket where f > 0 is certified, the new decreasing stretch's start. */
-C2D_COLD int c2d_toia_fmax(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, c2d_dx *l,
-                                       c2d_dx *out)
+C2D_COLD int c2d_toia_fmax(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, c2d_dd *l,
+                                       c2d_dd *out)
 {
     c2d_toia_br br;
     c2d_toia_gbracket(c, x, y, -1, &br);
@@ -322,31 +322,31 @@ C2D_COLD int c2d_toia_fmax(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y, c2
         (void)c2d_toia_polish(c, out, C2D_TOIA_QG, &br.lo, &br.hi, C2D_R_MANT + 3);
         return 1;
     }
-    c2d_dx_copy(l, br.ehi.sf > 0 ? &br.hi : &br.lo);
+    c2d_dd_copy(l, br.ehi.sf > 0 ? &br.hi : &br.lo);
     return 0;
 }
 
 /* At a minimum of f in (x, y): 1 with *out = the contact time (the root of
  * f in [l, c]), 0 when f(c) > 0 or a graze tie. */
-C2D_COLD int c2d_toia_atmin(c2d_toia_ctx *c, const c2d_dx *x, const c2d_dx *y,
-                                        const c2d_dx *l, c2d_dx *out)
+C2D_COLD int c2d_toia_atmin(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y,
+                                        const c2d_dd *l, c2d_dd *out)
 {
     c2d_toia_br br;
     c2d_toia_fg center;
-    c2d_dx ct;
-    const c2d_dx *neg;
-    c2d_dx_set(&ct, 0, 0, 0);
+    c2d_dd ct;
+    const c2d_dd *neg;
+    c2d_dd_set(&ct, 0, 0, 0);
     if (c2d_toia_fmin(c, x, y, &br, &ct, &center, &neg) >= 0) return 0;
     if (neg != NULL) {
         c2d_toia_root(c, l, neg, C2D_TOIA_QF, 1, out);
     } else { /* shorter than the time resolution: at the minimum */
-        c2d_dx_copy(out, &ct);
+        c2d_dd_copy(out, &ct);
     }
     return 1;
 }
 
 /* The signs of f, g and h at T (certified as needed for f and g). */
-C2D_COLD void c2d_toia_signs_at(c2d_toia_ctx *c, const c2d_dx *T, int *sf, int *sg, int *sh)
+C2D_COLD void c2d_toia_signs_at(c2d_toia_ctx *c, const c2d_dd *T, int *sf, int *sg, int *sh)
 {
     c2d_toia_ev ev;
     c2d_toia_probe(c, T, C2D_TOIA_MF | C2D_TOIA_MG, 1, &ev);
@@ -371,24 +371,24 @@ C2D_COLD void c2d_toia_signs_at(c2d_toia_ctx *c, const c2d_dx *T, int *sf, int *
  *   - at T = horizon while decreasing: f(T) < 0 entry, a tie entry at ~T.
  * T is the horizon or a bound on the roots of g (beyond it g > 0: f
  * increases and nothing can enter). */
-C2D_COLD c2d_toia_verdict c2d_toia_scan(c2d_toia_ctx *c, const c2d_dx *T, int t_is_h, const int *s0,
-                                                    int sg0, c2d_dx *out)
+C2D_COLD c2d_toia_verdict c2d_toia_scan(c2d_toia_ctx *c, const c2d_dd *T, int t_is_h, const int *s0,
+                                                    int sg0, c2d_dd *out)
 {
-    c2d_dx bt[4], l;
+    c2d_dd bt[4], l;
     int bs[4], bf[4], nb, i, dec, sg, sh;
-    c2d_dx_set(&bt[0], 0, 0, 0);
+    c2d_dd_set(&bt[0], 0, 0, 0);
     bs[0] = sg0;
     bf[0] = s0[0];
     nb = 1 + c2d_toia_splits(c, T, s0, &bt[1], &bs[1], &bf[1]);
-    c2d_dx_copy(&bt[nb], T);
+    c2d_dd_copy(&bt[nb], T);
     c2d_toia_signs_at(c, T, &bf[nb], &sg, &sh);
     /* a tie of g at T: the sign g takes just after T if g(T) = 0 */
     bs[nb] = sg != 0 ? sg : (sh != 0 ? sh : 1);
     nb++;
     dec = bs[0] < 0;
-    c2d_dx_set(&l, 0, 0, 0);
+    c2d_dd_set(&l, 0, 0, 0);
     for (i = 0; i + 1 < nb; i++) {
-        const c2d_dx *x = &bt[i], *y = &bt[i + 1];
+        const c2d_dd *x = &bt[i], *y = &bt[i + 1];
         if (bs[i] == bs[i + 1]) {
             if (dec != 0 && bf[i + 1] < 0) {
                 c2d_toia_root(c, &l, y, C2D_TOIA_QF, 1, out);

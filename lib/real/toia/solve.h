@@ -1,13 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* real_toia.h - template: c2d_time_of_impact_accel, the time of impact of
+/* real/toia/solve.h - template: c2d_time_of_impact_accel, the time of impact of
  * two disks moving with constant accelerations, part 7 of 7 (the entry);
- * parts 1-6 in real_toia_num.h, _problem.h, _eval.h, _newton.h, _turns.h,
+ * parts 1-6 in real/toia/num.h, _problem.h, _eval.h, _newton.h, _turns.h,
  * _scan.h, included before it in that order.  The including translation
  * unit provides c2d_real, c2d_real_bits, c2d_real_body, c2d_real_vec,
  * C2D_R_MANT, C2D_R_EMAX, C2D_R_EMIN, C2D_R_MAX, C2D_R_SQRT(x), c2d_status,
  * and the static helpers c2d_abs, c2d_pow2, c2d_scale2, c2d_ilogb,
- * c2d_two_sum, c2d_two_prod, c2d_finite4 (as in lib/real_bits.h and
- * lib/real_exact.h), and C2D_COLD (internal.h).  Everything defined here is
+ * c2d_two_sum, c2d_two_prod, c2d_finite4 (as in lib/real/arith/bits.h and
+ * lib/real/arith/exact.h), and C2D_COLD (internal.h).  Everything defined here is
  * static and named c2d_toia_*; no macros.  The entry point is c2d_toia_solve
  * (at the end); nothing else is meant to be called.
  *
@@ -67,7 +67,7 @@
  *     tier 2  double length (~16u^2 of the terms),
  *     tier 3  d(t), d'(t) EXACT (sums of exact products of the exact input
  *             differences, Shewchuk expansions in a sliding exponent window,
- *             c2d_toia_xsum) rounded to double length: the error is then
+ *             c2d_toia_ext_sum) rounded to double length: the error is then
  *             ~(2k + 4)u^2 of |d| itself, not of the terms that cancel in it.
  *   (u = 2^-(MANT+1).)  Each tier computes in units of powers of two chosen
  *   per evaluation from the terms' exponents, so nothing over- or
@@ -107,7 +107,7 @@
  *   heavy cancellation) until the step is below 2^-(MANT+3) t or the value
  *   is within its error bound; where the plain frame cannot represent the
  *   problem, a certified bisection/Newton in extended time takes over
- *   (c2d_toia_rootx).  The result is within ~0.5 ulp(t) plus the time one
+ *   (c2d_toia_root_ext).  The result is within ~0.5 ulp(t) plus the time one
  *   rounding of |d| is worth at the approach speed (see NOTES.md).
  *
  * FAST PATHS (certified shortcuts for common cases, c2d_toia_fast)
@@ -195,14 +195,14 @@ static int c2d_toia_bound(c2d_toia_ctx *c)
 }
 
 /* The path keeps clear of the disk on [0, T] (hull test in a frame). */
-C2D_COLD int c2d_toia_clear(c2d_toia_ctx *c, const c2d_dx *T)
+C2D_COLD int c2d_toia_clear(c2d_toia_ctx *c, const c2d_dd *T)
 {
     c2d_toia_frame fr;
     return c2d_toia_frame_set(&fr, c, T->e + 1) != 0 && c2d_toia_hull_clear(&fr, c2d_toia_t_local(T, T->e + 1)) != 0;
 }
 
 /* The contact time to the working format: RANGE beyond it; within [0, H]. */
-static c2d_status c2d_toia_out(const c2d_dx *out, c2d_real horizon, c2d_real *t)
+static c2d_status c2d_toia_out(const c2d_dd *out, c2d_real horizon, c2d_real *t)
 {
     c2d_real v = c2d_toia_t_value(out);
     if (!(v <= C2D_R_MAX)) return C2D_RANGE;
@@ -216,7 +216,7 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
                                  const c2d_real_vec *acc_b, c2d_real radius_sum, c2d_real horizon, c2d_real *t)
 {
     c2d_toia_ctx c;
-    c2d_dx T, out;
+    c2d_dd T, out;
     int s0[4], sg0, eb, t_is_h;
     if (a == NULL || b == NULL || acc_a == NULL || acc_b == NULL || t == NULL) return C2D_INVALID;
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y) || !c2d_finite4(a->vel.x, a->vel.y, b->vel.x, b->vel.y) ||
@@ -236,8 +236,8 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
     if (horizon == 0) return C2D_SEPARATING;
     eb = c2d_toia_bound(&c);
     t_is_h = horizon <= C2D_R_MAX && c2d_ilogb(horizon) < eb;
-    if (t_is_h != 0) c2d_dx_set(&T, horizon, 0, 0);
-    else c2d_dx_set(&T, 1, 0, eb);
+    if (t_is_h != 0) c2d_dd_set(&T, horizon, 0, 0);
+    else c2d_dd_set(&T, 1, 0, eb);
     if (s0[0] > 0 && sg0 < 0) { /* separated and approaching: the common case */
         int fast = c2d_toia_fast(&c, &T, t_is_h, &out);
         if (fast == 0) return C2D_SEPARATING;

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* real_batch.h - template: c2d_collide_batch over structure-of-arrays pairs.
- * Needs real_collide.h (and what it needs) first.
+/* real/collide/batch.h - template: c2d_collide_batch over structure-of-arrays pairs.
+ * Needs real/collide/collide.h (and what it needs) first.
  *
  * HOW IT STAYS BIT-IDENTICAL TO THE SCALAR CALL
  *   Pairs are taken in blocks of C2D_BLOCK.  A full block runs the scalar
- *   call's input-only accept test (real_fast.h, "front end") for every lane
+ *   call's input-only accept test (real/collide/fast.h, "front end") for every lane
  *   in a loop with a fixed trip count and no branches, which the compiler
  *   vectorises: the test and the arithmetic it accepts are the very
  *   operations of c2d_quick, so an accepted lane has the scalar call's bits,
