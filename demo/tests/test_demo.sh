@@ -5,14 +5,53 @@
 set -u
 BIN=$1
 PNG_CHECK=$2
+DEMO=$(cd "$(dirname "$0")/.." && pwd)
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-passed=0
-failed=0
+c2d_tally_name=test_demo
+. "$DEMO/../tests/harness/tally.sh"
 
-ok() { passed=$((passed + 1)); echo "ok - $1"; }
-not_ok() { failed=$((failed + 1)); echo "FAIL - $1"; }
-check() { if [ "$2" = 0 ]; then ok "$1"; else not_ok "$1"; fi; }
+# check WHAT STATUS: counts one result (tally.sh); "ok - WHAT" when it passed
+check() { if [ "$2" = 0 ]; then c2d_passed; echo "ok - $1"; else c2d_failed "$1"; fi; }
+
+# --- the layers (demo/demo.mk): pool/ (the simulation) <- game/ (8-ball) <-
+# app/ (the program); tests/ test pool/ and game/.  Every include of ours
+# names its layer ("pool/sim.h"; collide2d.h aside) and a layer includes only
+# itself and the layers below it; pool/, game/ and tests/ use no SDL (they
+# are compiled and linked without it).
+# layer_check LAYER "ALLOWED LAYERS" SDL(yes|no): prints each violation, and
+# "LAYER: F files, I includes"
+layer_check() {
+    layer=$1 allowed=$2 sdl=$3
+    set --
+    for f in "$DEMO/$layer"/*.h "$DEMO/$layer"/*.cpp; do
+        if [ -f "$f" ]; then set -- "$@" "$f"; fi
+    done
+    awk -v layer="$layer" -v allowed=" $allowed " -v sdl="$sdl" -v demo="$DEMO/" '
+        function bad(why) { printf "    %s:%d: %s: %s\n", substr(FILENAME, length(demo) + 1), FNR, why, $0; found = 1 }
+        FNR == 1 { files++ }
+        /^[ \t]*#[ \t]*include/ {
+            includes++
+            t = $0
+            sub(/^[ \t]*#[ \t]*include[ \t]*/, "", t)
+            quote = substr(t, 1, 1)
+            name = substr(t, 2)
+            sub(/[">].*$/, "", name)
+            top = name
+            if (!sub(/\/.*$/, "", top)) top = ""
+            if (top ~ /^(pool|game|app|tests|tools)$/) { if (index(allowed, " " top " ") == 0) bad("includes from " top "/") }
+            else if (quote == "\"" && name != "collide2d.h") bad("an include of ours without its layer")
+            if (sdl == "no" && name ~ /SDL/) bad("SDL")
+        }
+        sdl == "no" && /SDL_[A-Za-z]/ && !/^[ \t]*#[ \t]*include/ { bad("SDL") }
+        END { printf "    %s: %d files, %d includes\n", layer, files, includes; exit (found || files == 0 || includes == 0) }
+    ' "$@" < /dev/null
+}
+layer_check pool "pool" no; check "pool/: no SDL, includes only pool/" $?
+layer_check game "game pool" no; check "game/: no SDL, includes only game/ and pool/" $?
+layer_check app "app game pool" yes; check "app/: includes only app/, game/ and pool/" $?
+layer_check tests "game pool" no; check "tests/: no SDL, includes only game/ and pool/" $?
+[ -z "$(ls "$DEMO"/*.h "$DEMO"/*.cpp 2>/dev/null)" ]; check "every source of the demo is in a layer" $?
 
 # json_get FILE KEY: the value of a scalar key of the one-line JSON object
 json_get() { sed -n "s/.*\"$2\":\([^,}]*\).*/\1/p" "$1"; }
@@ -62,8 +101,8 @@ check "trace has a header and a row per frame" $?
 bad() {
     "$BIN" --headless "$@" > "$TMP/out" 2> "$TMP/err"
     status=$?
-    if [ "$status" = 2 ] && [ -s "$TMP/err" ] && [ ! -s "$TMP/out" ]; then ok "bad input exits 2: $*"
-    else not_ok "bad input exits 2: $* (status $status)"; fi
+    if [ "$status" = 2 ] && [ -s "$TMP/err" ] && [ ! -s "$TMP/out" ]; then c2d_passed; echo "ok - bad input exits 2: $*"
+    else c2d_failed "bad input exits 2: $* (status $status)"; fi
 }
 bad --no-such-flag
 bad --seconds abc
@@ -266,5 +305,4 @@ bad --game 8ball --scene elastic
 bad --game 8ball --seconds 10
 bad --game practice
 
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+c2d_summary

@@ -64,10 +64,12 @@ ShotFacts facts(int first_hit, std::vector<int> potted, bool rail) {
 void fouls() {
     const std::vector<Ball> full = table_with(all_but({}));
     bool scratch = true, no_hit = true, wrong = true, eight_first = true, no_rail = true, legal_miss = true;
+    int cases = 0;
     for (int turn = 0; turn < 2; ++turn)
         for (Group g : {Group::Solids, Group::Stripes})
             for (int n = 1; n <= 15; ++n) {
                 if (n == 8) continue;
+                ++cases;
                 const bool mine = group_of(n) == g;
                 GameState s = after_break(g, turn);
                 Verdict v = apply_shot(s, facts(n, {0}, true), full);
@@ -86,6 +88,7 @@ void fouls() {
                 v = apply_shot(s, facts(8, {n}, true), full);
                 eight_first = eight_first && v.foul == Foul::WrongBallFirst && s.open() && s.turn == 1 - turn;
             }
+    check(cases == 2 * 2 * 14, "fouls: every case ran (2 players x 2 groups x the 14 balls but the 8)");
     check(scratch, "a scratch is a foul after any first contact: turn passes, ball in hand");
     check(no_hit, "hitting no ball is a foul: turn passes, ball in hand");
     check(wrong, "each of the opponent's balls first is a foul, for either group and player");
@@ -98,14 +101,17 @@ void fouls() {
 // assigns the group of the first ball that fell
 void groups() {
     bool open_after_break = true, assigned = true, continued = true;
+    int firsts = 0, seconds = 0;
     for (int n = 1; n <= 15; ++n) {
         if (n == 8) continue;
+        ++firsts;
         const std::vector<Ball> full = table_with(all_but({}));
         GameState s;
         Verdict v = apply_shot(s, facts(1, {n}, true), full);
         open_after_break = open_after_break && s.open() && v.keeps_turn && !s.breaking && s.turn == 0;
         for (int second = 1; second <= 15; ++second) {
             if (second == 8 || second == n) continue;
+            ++seconds;
             GameState t = after_break(Group::Open, 1);
             v = apply_shot(t, facts(second, {n, second}, false), full);
             assigned = assigned && v.group_assigned && t.group[1] == group_of(n) && t.group[0] != group_of(n) &&
@@ -113,6 +119,7 @@ void groups() {
             continued = continued && v.keeps_turn && t.turn == 1 && v.foul == Foul::None;
         }
     }
+    check(firsts == 14 && seconds == 14 * 13, "groups: every case ran (14 balls first, each with the 13 others second)");
     check(open_after_break, "every ball potted on the break keeps the table open and the breaker at the table");
     check(assigned, "the first legal pot assigns the first fallen ball's group, the other to the opponent");
     check(continued, "a legal pot keeps the shooter at the table");
