@@ -6,27 +6,39 @@
 #   make test-demo   the demo's tests (part of `make test`)
 #   make demo-plots  regenerate docs/energy.png, docs/gas_histogram.png,
 #                    docs/shot_path.png
-# Screenshots are compressed PNGs written with libpng (demo/png.cpp); the
+# Screenshots are compressed PNGs written with libpng (demo/app/png.cpp); the
 # tests' checker reads them back with libpng's reader.
+#
+# The layers, each its own target, each using only the ones above it here:
+#   demo/pool/   the simulation: table, ball motion, engines, checker, the run
+#                and the shot seam; no SDL           -> $(B)/demo/libpool.a
+#   demo/game/   8-ball: rules, the computer opponent, a match; no SDL
+#                                                    -> $(B)/demo/libgame.a
+#   demo/app/    the program: command line, headless runner, the window and
+#                its drawing, aiming aids, panel, sound, PNG -> $(B)/billiards
+#   demo/tests/  test_physics (pool), test_game (game), test_demo.sh (the
+#                program, and the layering), png_check
+#   demo/tools/  plots.sh (make demo-plots)
+# Includes name their layer (-Idemo: #include "pool/sim.h"), so a layer's
+# dependencies show in its include lines; test_demo.sh checks them.  Header
+# dependencies come from the compiler (-MMD -MP, the .d files next to the
+# objects).
 
-DEMO_DEPS := libbox2d-dev libsdl2-dev
+DEMO_DEPS := libbox2d-dev libsdl2-dev libpng-dev
 DEMO_TEST_DEPS := xvfb xauth libpng-dev
 DEMO_PLOT_DEPS := gnuplot-nox
-# the simulation (no SDL): scene, table, ball motion, engines, checker, the
-# run and the shot seam; test_physics links these alone
-DEMO_SIM_SRC := demo/scene.cpp demo/table.cpp demo/motion.cpp demo/exact_engine.cpp demo/broadphase.cpp demo/slow_contact.cpp demo/box2d_engine.cpp demo/checker.cpp demo/sim.cpp demo/cradle.cpp
-# 8-ball: rules, the computer opponent, a headless game (issue 11, part C)
-DEMO_SIM_SRC += demo/rules.cpp demo/opponent.cpp demo/game.cpp
-DEMO_SRC := demo/main.cpp demo/cli.cpp $(DEMO_SIM_SRC) demo/render.cpp demo/png.cpp
-DEMO_HDR := demo/cli.h demo/scene.h demo/table.h demo/motion.h demo/model.h demo/events.h demo/engine.h demo/exact_engine.h demo/broadphase.h demo/event_queue.h demo/slow_contact.h demo/box2d_engine.h demo/checker.h demo/sim.h demo/cradle.h demo/render.h demo/png.h
-DEMO_HDR += demo/rules.h demo/opponent.h demo/game.h
-# the window: software drawing, aiming aids, panel, sound (issue 11, part B)
-DEMO_SRC += demo/canvas.cpp demo/font.cpp demo/engine_view.cpp demo/draw_table.cpp demo/draw_balls.cpp demo/aim.cpp demo/hud.cpp demo/audio.cpp
-DEMO_HDR += demo/canvas.h demo/font.h demo/view.h demo/engine_view.h demo/draw_table.h demo/draw_balls.h demo/aim.h demo/hud.h demo/audio.h
-DEMO_DEPS += libpng-dev
-DEMO_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SRC))
+
+DEMO_POOL_SRC := $(wildcard demo/pool/*.cpp)
+DEMO_GAME_SRC := $(wildcard demo/game/*.cpp)
+DEMO_APP_SRC := $(wildcard demo/app/*.cpp)
+DEMO_POOL_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_POOL_SRC))
+DEMO_GAME_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_GAME_SRC))
+DEMO_APP_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_APP_SRC))
+DEMO_TEST_OBJ := $(B)/demo/tests/test_physics.o $(B)/demo/tests/test_game.o $(B)/demo/tests/png_check.o
+DEMO_POOL_LIB := $(B)/demo/libpool.a
+DEMO_GAME_LIB := $(B)/demo/libgame.a
 DEMO_BIN := $(B)/billiards
-DEMO_CXXFLAGS = $(CXXFLAGS) -std=c++17 -Wall -Wextra -ffp-contract=off -Iinclude $(SAN_FLAGS)
+DEMO_CXXFLAGS = $(CXXFLAGS) -std=c++17 -Wall -Wextra -ffp-contract=off -Iinclude -Idemo $(SAN_FLAGS) -MMD -MP
 
 .PHONY: demo-deps demo-test-deps demo-plots test-demo
 
@@ -36,13 +48,34 @@ demo-deps:
 demo-test-deps: demo-deps
 	@sh scripts/deps.sh $(DEMO_TEST_DEPS)
 
+# pool/ and game/ are compiled without SDL's flags
+$(B)/demo/pool/%.o: demo/pool/%.cpp | demo-deps
+	@mkdir -p $(@D)
+	$(CXX) $(DEMO_CXXFLAGS) -c $< -o $@
+
+$(B)/demo/game/%.o: demo/game/%.cpp | demo-deps
+	@mkdir -p $(@D)
+	$(CXX) $(DEMO_CXXFLAGS) -c $< -o $@
+
 # sdl2-config runs in the recipe, after demo-deps has installed it
-$(B)/demo/%.o: demo/%.cpp $(DEMO_HDR) $(LIB_HDR) | demo-deps
+$(B)/demo/app/%.o: demo/app/%.cpp | demo-deps
 	@mkdir -p $(@D)
 	$(CXX) $(DEMO_CXXFLAGS) $$(sdl2-config --cflags) -c $< -o $@
 
-$(DEMO_BIN): $(DEMO_OBJ) $(STATIC)
-	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $(DEMO_OBJ) $(STATIC) -lbox2d $$(sdl2-config --libs) -lpng -lm
+$(B)/demo/tests/%.o: demo/tests/%.cpp | demo-test-deps
+	@mkdir -p $(@D)
+	$(CXX) $(DEMO_CXXFLAGS) -c $< -o $@
+
+$(DEMO_POOL_LIB): $(DEMO_POOL_OBJ)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(DEMO_GAME_LIB): $(DEMO_GAME_OBJ)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(DEMO_BIN): $(DEMO_APP_OBJ) $(DEMO_GAME_LIB) $(DEMO_POOL_LIB) $(STATIC)
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lbox2d $$(sdl2-config --libs) -lpng -lm
 
 demo: $(DEMO_BIN)
 	$(DEMO_BIN) --headless --screenshot $(B)/billiards.png
@@ -51,25 +84,26 @@ demo: $(DEMO_BIN)
 play: $(DEMO_BIN)
 	$(DEMO_BIN)
 
-$(B)/png_check: demo/png_check.cpp | demo-test-deps
-	@mkdir -p $(@D)
-	$(CXX) $(DEMO_CXXFLAGS) -o $@ $< -lpng
+$(B)/png_check: $(B)/demo/tests/png_check.o
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lpng
 
 # The pool model against the textbook laws, and 1,000 random shots
-$(B)/test_physics: demo/test_physics.cpp $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SIM_SRC)) $(STATIC) $(DEMO_HDR)
-	$(CXX) $(DEMO_CXXFLAGS) -o $@ $< $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SIM_SRC)) $(STATIC) -lbox2d -lm
+$(B)/test_physics: $(B)/demo/tests/test_physics.o $(DEMO_POOL_LIB) $(STATIC)
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lbox2d -lm
 
 # 8-ball: the rules on constructed shots, and computer-versus-computer games
-$(B)/test_game: demo/test_game.cpp $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SIM_SRC)) $(STATIC) $(DEMO_HDR)
-	$(CXX) $(DEMO_CXXFLAGS) -o $@ $< $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_SIM_SRC)) $(STATIC) -lbox2d -lm
+$(B)/test_game: $(B)/demo/tests/test_game.o $(DEMO_GAME_LIB) $(DEMO_POOL_LIB) $(STATIC)
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lbox2d -lm
 
 test-demo: $(DEMO_BIN) $(B)/png_check $(B)/test_physics $(B)/test_game | demo-test-deps
 	$(B)/test_physics
 	$(B)/test_game
-	sh demo/test_demo.sh $(DEMO_BIN) $(B)/png_check
+	sh demo/tests/test_demo.sh $(DEMO_BIN) $(B)/png_check
 
 demo-plots: $(DEMO_BIN)
 	@sh scripts/deps.sh $(DEMO_PLOT_DEPS)
-	sh demo/plots.sh $(DEMO_BIN) docs
+	sh demo/tools/plots.sh $(DEMO_BIN) docs
+
+-include $(patsubst %.o,%.d,$(DEMO_POOL_OBJ) $(DEMO_GAME_OBJ) $(DEMO_APP_OBJ) $(DEMO_TEST_OBJ))
 
 TEST_TARGETS += test-demo

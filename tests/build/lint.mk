@@ -6,7 +6,7 @@
 #   make lint-cppcheck   cppcheck 2.10, any finding is an error
 # lib/ is checked as written, one translation unit at a time (each
 # double.c / float.c instance includes the real/ templates).
-# The demo part runs only when demo/*.cpp exist; it is C++17 against Debian's
+# The demo part runs only when demo/*/*.cpp exist; it is C++17 against Debian's
 # Box2D and SDL2 headers, taken as system headers (their own macros are
 # not ours to lint).  Each prints "lint-NAME: N passed, N failed" (one per
 # source file; tests/harness/tally.sh).
@@ -15,8 +15,8 @@ LINT_DEPS := clang-tidy-14 cppcheck
 LINT_DEMO_DEPS := libbox2d-dev libsdl2-dev libpng-dev
 LINT_DIR := $(B)/lint
 LINT_LIB_FLAGS := -std=c99 -ffp-contract=off -Iinclude
-LINT_DEMO_SRC = $(wildcard demo/*.cpp)
-LINT_DEMO_FLAGS := -std=c++17 -ffp-contract=off -Iinclude -isystem /usr/include/SDL2 -D_REENTRANT
+LINT_DEMO_SRC = $(wildcard demo/*/*.cpp)
+LINT_DEMO_FLAGS := -std=c++17 -ffp-contract=off -Iinclude -Idemo -isystem /usr/include/SDL2 -D_REENTRANT
 
 .PHONY: lint-deps lint-tidy lint-cppcheck
 
@@ -41,7 +41,7 @@ lint-cppcheck: lint-deps
 	  c2d_check $$f $(CPPCHECK) --std=c99 --language=c -Iinclude -Ilib -UC2D_HEADER $$f; \
 	done; \
 	for f in $(LINT_DEMO_SRC); do \
-	  c2d_check $$f $(CPPCHECK) --std=c++17 --language=c++ -Iinclude -I/usr/include/SDL2 -D_REENTRANT $$f; \
+	  c2d_check $$f $(CPPCHECK) --std=c++17 --language=c++ -Iinclude -Idemo -I/usr/include/SDL2 -D_REENTRANT $$f; \
 	done; \
 	c2d_summary
 

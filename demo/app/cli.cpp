@@ -1,0 +1,224 @@
+/* SPDX-License-Identifier: MIT */
+// cli.cpp - see cli.h.
+#include "app/cli.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <utility>
+
+namespace demo {
+
+const char kUsage[] =
+    "usage: billiards [options]\n"
+    "  --scene break|elastic|gas|cradle  scene (default break)\n"
+    "  --response collide2d|box2d  who resolves collisions (default collide2d)\n"
+    "  --balls N                   gas: number of disks (default 1000); cradle: balls\n"
+    "                              in the row (default 5, at most 20)\n"
+    "  --place N,X,Y               put ball N (0 = cue ball, 1-15) at X,Y metres, the\n"
+    "                              surface being [0,2.54] x [0,1.27]; may repeat; only\n"
+    "                              the placed balls are on the table\n"
+    "  --seed N                    rack order / gas start (default 1)\n"
+    "  --headless                  no window (automatic without a display)\n"
+    "  --game practice|8ball       practice: clear the table (the window's default);\n"
+    "                              8ball: two players, WPA-style rules\n"
+    "  --players A,B               8ball: each human or computer (window default\n"
+    "                              human,computer; headless: computer,computer only)\n"
+    "headless only:\n"
+    "  --shot DEG,MPS[,SIDE,TOP]   cue shot, may repeat, each once the table is at rest:\n"
+    "                              angle (0 = +x, counter-clockwise), the cue ball's\n"
+    "                              speed, the tip's offset right of centre and above it\n"
+    "                              as fractions of R, sqrt(SIDE^2+TOP^2) <= 0.5\n"
+    "                              (default 0,12,0,0: the break; none with --place)\n"
+    "  --seconds S                 simulated time, 0 to 86400 (default: until rest;\n"
+    "                              60 for elastic/gas)\n"
+    "  --json                      one JSON object on stdout instead of the summary\n"
+    "  --events FILE.csv           every event: time,kind,ball,other,x,y,vx,vy,wx,wy,wz\n"
+    "  --trace FILE.csv            time, kinetic energy, momentum per frame\n"
+    "  --speeds FILE               final speeds, one per line (gas histogram)\n"
+    "  --screenshot FILE.png       final frame, rendered offscreen\n"
+    "  --screenshot-window FILE.png  final frame drawn in a real window and read back\n";
+
+namespace {
+
+[[noreturn]] void fail(const std::string &message) { throw UsageError{message}; }
+
+double parse_number(const std::string &flag, const std::string &text) {
+    errno = 0;
+    char *end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+        fail(flag + ": '" + text + "' is not a finite number");
+    return v;
+}
+
+unsigned long long parse_unsigned(const std::string &flag, const std::string &text) {
+    errno = 0;
+    char *end = nullptr;
+    const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+    if (text.empty() || text[0] == '-' || text[0] == '+' || *end != '\0' || errno == ERANGE)
+        fail(flag + ": '" + text + "' is not a non-negative integer");
+    return v;
+}
+
+// The comma-separated fields of a value.
+std::vector<std::string> fields(const std::string &text) {
+    std::vector<std::string> out;
+    size_t start = 0;
+    for (;;) {
+        const size_t comma = text.find(',', start);
+        out.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) return out;
+        start = comma + 1;
+    }
+}
+
+Shot parse_shot(const std::string &text) {
+    const std::vector<std::string> f = fields(text);
+    if (f.size() != 2 && f.size() != 4)
+        fail("--shot: expected ANGLE_DEG,SPEED_MPS[,SIDE,TOPBACK], got '" + text + "'");
+    Shot s{parse_number("--shot angle", f[0]), parse_number("--shot speed", f[1])};
+    if (!(s.speed > 0 && s.speed <= kMaxShotSpeed))
+        fail("--shot: speed must be in (0, " + std::to_string(static_cast<int>(kMaxShotSpeed)) + "] m/s");
+    if (f.size() == 4) {
+        s.side = parse_number("--shot side", f[2]);
+        s.topback = parse_number("--shot topback", f[3]);
+        if (std::hypot(s.side, s.topback) > kMaxTipOffset)
+            fail("--shot: the tip offset sqrt(SIDE^2 + TOPBACK^2) must be at most 0.5 (a miscue beyond), got '" +
+                 text + "'");
+    }
+    return s;
+}
+
+Placement parse_place(const std::string &text) {
+    const std::vector<std::string> f = fields(text);
+    if (f.size() != 3) fail("--place: expected N,X,Y, got '" + text + "'");
+    const unsigned long long n = parse_unsigned("--place ball", f[0]);
+    if (n > 15) fail("--place: ball numbers run from 0 (the cue ball) to 15, got '" + f[0] + "'");
+    return Placement{static_cast<int>(n), parse_number("--place x", f[1]), parse_number("--place y", f[2])};
+}
+
+// The option's file name in Options, for the options that name an output
+// file; nullptr for the others.
+std::string Options::*output_path(const std::string &flag) {
+    static const std::pair<const char *, std::string Options::*> paths[] = {
+        {"--screenshot", &Options::screenshot}, {"--screenshot-window", &Options::screenshot_window},
+        {"--trace", &Options::trace},           {"--speeds", &Options::speeds},
+        {"--events", &Options::events}};
+    for (const auto &p : paths)
+        if (flag == p.first) return p.second;
+    return nullptr;
+}
+
+std::string path_value(const std::string &flag, const std::string &v) {
+    if (v.empty()) fail(flag + ": empty file name");
+    return v;
+}
+
+// 8-ball plays from the rack of the break scene, its shots chosen by the
+// players: options that set up another table or other shots do not apply.
+void check_game(const Options &o) {
+    if (o.players_given && o.game != GameMode::EightBall) fail("--players only applies to --game 8ball");
+    if (o.game == GameMode::None) return;
+    if (o.config.scene != Scene::Break) fail("--game is played on the break scene's table (drop --scene)");
+    if (!o.config.placements.empty()) fail("--place does not apply to --game (the game starts from the rack)");
+    if (o.game == GameMode::Practice && o.headless) fail("--game practice is played in the window (drop --headless)");
+    if (o.game != GameMode::EightBall) return;
+    for (const std::string &flag : o.headless_only)
+        if (flag != "--json" && flag != "--screenshot")
+            fail(flag + " does not apply to --game 8ball (its shots are chosen by the players)");
+}
+
+void check_consistency(const Options &o) {
+    check_game(o);
+    const Scene scene = o.config.scene;
+    if (scene == Scene::Gas && !o.shots.empty()) fail("--shot does not apply to --scene gas");
+    if (scene == Scene::Gas && !o.config.placements.empty()) fail("--place does not apply to --scene gas");
+    if (scene != Scene::Gas && scene != Scene::Cradle && o.balls_given)
+        fail("--balls only applies to --scene gas and --scene cradle");
+    if (scene == Scene::Cradle && o.config.cradle_balls > kMaxCradleBalls)
+        fail("--balls: the cradle's row holds at most " + std::to_string(kMaxCradleBalls) + " balls");
+    if (scene == Scene::Cradle && !o.config.placements.empty()) fail("--place does not apply to --scene cradle");
+    if (!o.config.placements.empty()) {
+        const std::string error = placement_error(scene_table(scene, o.config.table), o.config.placements);
+        if (!error.empty()) fail("--place: " + error);
+        bool cue = false;
+        for (const Placement &p : o.config.placements) cue = cue || p.number == 0;
+        if (!o.shots.empty() && !cue) fail("--shot needs the cue ball on the table (--place 0,X,Y)");
+    }
+}
+
+}  // namespace
+
+Options parse(int argc, char **argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string flag = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) fail(flag + " needs a value");
+            return argv[++i];
+        };
+        auto headless_only = [&]() { o.headless_only.push_back(flag); };
+        if (flag == "--help" || flag == "-h") {
+            std::fputs(kUsage, stdout);
+            std::exit(0);
+        } else if (flag == "--scene") {
+            const std::string v = value();
+            if (v == "break") o.config.set_scene(Scene::Break);
+            else if (v == "elastic") o.config.set_scene(Scene::Elastic);
+            else if (v == "gas") o.config.set_scene(Scene::Gas);
+            else if (v == "cradle") o.config.set_scene(Scene::Cradle);
+            else fail("--scene: unknown scene '" + v + "' (break, elastic, gas or cradle)");
+        } else if (flag == "--response") {
+            const std::string v = value();
+            if (v == "collide2d") o.config.response = Response::Collide2d;
+            else if (v == "box2d") o.config.response = Response::Box2d;
+            else fail("--response: unknown response '" + v + "' (collide2d or box2d)");
+        } else if (flag == "--balls") {
+            const unsigned long long n = parse_unsigned(flag, value());
+            if (n < 1 || n > 200000) fail("--balls: must be between 1 and 200000");
+            o.config.gas_balls = o.config.cradle_balls = static_cast<int>(n);  // the scene uses its own
+            o.balls_given = true;
+        } else if (flag == "--place") {
+            o.config.placements.push_back(parse_place(value()));
+        } else if (flag == "--seed") {
+            o.config.seed = parse_unsigned(flag, value());
+        } else if (flag == "--game") {
+            const std::string v = value();
+            if (v == "practice") o.game = GameMode::Practice;
+            else if (v == "8ball") o.game = GameMode::EightBall;
+            else fail("--game: unknown game '" + v + "' (practice or 8ball)");
+        } else if (flag == "--players") {
+            const std::vector<std::string> f = fields(value());
+            if (f.size() != 2) fail("--players: expected two players, e.g. human,computer");
+            for (size_t k = 0; k < 2; ++k) {
+                if (f[k] != "human" && f[k] != "computer")
+                    fail("--players: each player is human or computer, got '" + f[k] + "'");
+                o.computer[k] = f[k] == "computer";
+            }
+            o.players_given = true;
+        } else if (flag == "--headless") {
+            o.headless = true;
+        } else if (flag == "--seconds") {
+            o.seconds = parse_number(flag, value());
+            if (o.seconds < 0 || o.seconds > 86400) fail("--seconds: must be between 0 and 86400");
+            headless_only();
+        } else if (flag == "--shot") {
+            o.shots.push_back(parse_shot(value()));
+            headless_only();
+        } else if (flag == "--json") {
+            o.json = true;
+            headless_only();
+        } else if (std::string Options::*path = output_path(flag)) {
+            o.*path = path_value(flag, value());
+            headless_only();
+        } else {
+            fail("unknown option '" + flag + "' (see --help)");
+        }
+    }
+    check_consistency(o);
+    return o;
+}
+
+}  // namespace demo

@@ -1,0 +1,23 @@
+/* SPDX-License-Identifier: MIT */
+// headless.h - a run without a window: the scene played to rest (or for
+// --seconds) with its shots, or a game of 8-ball between two computer
+// players, then what was asked for written out (the summary or JSON on
+// stdout, events, trace, speeds, screenshots).  Each returns the exit
+// status: 0, or 1 after a write error (with its message on stderr); an
+// output file that cannot be created throws UsageError before simulating.
+#ifndef C2D_DEMO_HEADLESS_H
+#define C2D_DEMO_HEADLESS_H
+
+#include "app/cli.h"
+
+namespace demo {
+
+// --scene with --shot, --place, --seconds and the output files.
+int run_scene_headless(const Options &o);
+
+// --game 8ball, --players computer,computer.
+int run_game_headless(const Options &o);
+
+}  // namespace demo
+
+#endif

@@ -1,0 +1,69 @@
+/* SPDX-License-Identifier: MIT */
+// main.cpp - the billiards demo's entry point: decides between the window
+// and a headless run (before SDL touches the video system) and runs it: the
+// game in the window (controller.h) or, headless, what was asked for
+// (headless.h).
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "app/cli.h"
+#include "app/controller.h"
+#include "app/headless.h"
+#include "app/render.h"
+#include "game/game.h"
+
+namespace {
+
+using demo::Options;
+using demo::UsageError;
+
+// Whether a window can be tried: an X or Wayland display is named.  Decided
+// before SDL initialises video, so SDL has no chance to complain first.
+bool display_named(std::string &why) {
+    const char *x = std::getenv("DISPLAY"), *wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((x && *x) || (wayland && *wayland)) {
+        // with X only, keep SDL from probing Wayland (which prints its own
+        // complaint when XDG_RUNTIME_DIR is unset)
+        if (!(wayland && *wayland)) setenv("SDL_VIDEODRIVER", "x11", 0);
+        return true;
+    }
+    why = "no display (neither DISPLAY nor WAYLAND_DISPLAY is set)";
+    return false;
+}
+
+std::string joined(const std::vector<std::string> &flags) {
+    std::string s;
+    for (const std::string &f : flags) s += (s.empty() ? "" : ", ") + f;
+    return s;
+}
+
+int run(const Options &o) {
+    std::string why;
+    if (!o.headless && display_named(why)) {
+        if (!o.headless_only.empty())
+            throw UsageError{joined(o.headless_only) + ": only for a headless run (add --headless)"};
+        if (demo::play_window(o.config, demo::Players{o.game == demo::GameMode::EightBall, {o.computer[0], o.computer[1]}}, why) == demo::WindowResult::Ok) return 0;
+    }
+    if (!o.headless) std::fprintf(stderr, "billiards: %s; running headless\n", why.c_str());
+    if (o.game == demo::GameMode::EightBall) return demo::run_game_headless(o);
+    if (o.game == demo::GameMode::Practice) throw UsageError{"--game practice is played in the window"};
+    return demo::run_scene_headless(o);
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    try {
+        const Options o = demo::parse(argc, argv);
+        return run(o);
+    } catch (const UsageError &e) {
+        std::fprintf(stderr, "billiards: %s\n", e.message.c_str());
+        return 2;
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "billiards: %s\n", e.what());
+        return 1;
+    }
+}

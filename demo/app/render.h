@@ -1,0 +1,26 @@
+/* SPDX-License-Identifier: MIT */
+// render.h - the demo's pictures: frames are drawn in software (canvas.h)
+// and shown through one SDL texture, so an offscreen screenshot (no display
+// needed), a window's screenshot and what the player sees (controller.h) are
+// the same drawing.
+#ifndef C2D_DEMO_RENDER_H
+#define C2D_DEMO_RENDER_H
+
+#include <string>
+
+#include "pool/sim.h"
+
+namespace demo {
+
+enum class WindowResult { Ok, Unavailable, Failed };
+
+// The final frame, drawn offscreen into a PNG.
+bool screenshot_offscreen(const Simulation &sim, const std::string &path, std::string &error);
+
+// Opens a real window, draws the frame there and saves what the window's
+// renderer drew.  Unavailable: no display, or no window/renderer.
+WindowResult screenshot_window(const Simulation &sim, const std::string &path, std::string &error);
+
+}  // namespace demo
+
+#endif

@@ -1,0 +1,132 @@
+/* SPDX-License-Identifier: MIT */
+// game.cpp - see game.h.  Each shot: the player's plan (ball in hand first,
+// if any), the shot played to rest, the rules' verdict; the 8 spotted again
+// if it fell on the break.  A ball in hand without the cue ball on the table
+// (a scratch) is placed by the plan.
+#include "game/game.h"
+
+namespace demo {
+
+void respot_eight(const Table &table, std::vector<Ball> &balls) {
+    for (Ball &b : balls)
+        if (b.number == 8 && !b.active) {
+            const Point p = eight_spot(table, balls);
+            b = Ball{p.x, p.y, 0, 0, 8, true};
+        }
+}
+
+GameRecord play_computer_game(const SimConfig &config, uint64_t seed) {
+    GameRecord game;
+    const Setup setup = set_up(Scene::Break, config.table, 0, config.seed);
+    std::vector<Ball> balls = setup.balls;
+    GameState state;
+    Opponent players[2] = {Opponent(config, seed), Opponent(config, seed + 1)};
+    while (!state.over() && static_cast<int>(game.shots.size()) < kMaxGameShots) {
+        ShotRecord r;
+        r.player = state.turn;
+        const Plan plan = players[state.turn].choose(state, balls);
+        if (plan.place_cue)
+            for (Ball &b : balls)
+                if (b.number == 0) b = Ball{plan.cue.x, plan.cue.y, 0, 0, 0, true};
+        r.shot = plan.shot;
+        r.placed = plan.place_cue;
+        r.cue = plan.cue;
+        r.candidates = plan.candidates;
+        r.think_seconds = plan.think_seconds;
+        const ShotOutcome out = simulate_shot(config, balls, plan.shot);
+        const ShotFacts facts = shot_facts(out.events, balls);
+        const Verdict v = apply_shot(state, facts, balls);
+        r.potted = facts.potted;
+        r.foul = v.foul;
+        r.keeps_turn = v.keeps_turn;
+        balls = out.balls;
+        if (v.respot_eight) respot_eight(setup.table, balls);
+        game.fouls += v.foul != Foul::None;
+        game.candidates += plan.candidates;
+        game.think_seconds += plan.think_seconds;
+        game.sim_seconds += out.seconds;
+        if (v.winner >= 0) game.reason = v.reason;
+        game.shots.push_back(r);
+    }
+    game.balls = balls;
+    game.winner = state.winner;
+    game.groups[0] = state.group[0];
+    game.groups[1] = state.group[1];
+    if (game.winner < 0) game.reason = "no winner after " + std::to_string(kMaxGameShots) + " shots";
+    return game;
+}
+
+Match::Match(const SimConfig &config, const Players &players)
+    : players_(players), config_(config), opponents_{Opponent(config, config.seed), Opponent(config, config.seed + 1)} {}
+
+void Match::reset() {
+    state_ = GameState{};
+    opponents_[0] = Opponent(config_, config_.seed + static_cast<uint64_t>(2 * ++plans_));
+    opponents_[1] = Opponent(config_, config_.seed + static_cast<uint64_t>(2 * plans_ + 1));
+    running_ = false;
+    last_.clear();
+}
+
+void Match::shot_started(const std::vector<Ball> &balls) {
+    before_ = balls;
+    events_.clear();
+    running_ = true;
+}
+
+void Match::add_events(const std::vector<Event> &events) {
+    if (running_) events_.insert(events_.end(), events.begin(), events.end());
+}
+
+bool Match::shot_ended(const Table &table, std::vector<Ball> &balls) {
+    if (!running_) return false;
+    running_ = false;
+    if (!eight_ball()) return false;
+    const int shooter = state_.turn;
+    const Verdict v = apply_shot(state_, shot_facts(events_, before_), before_);
+    last_ = name(shooter) + ": " + v.reason;
+    if (!v.respot_eight) return false;
+    respot_eight(table, balls);
+    last_ += "; the 8 is spotted again";
+    return true;
+}
+
+Plan Match::plan(const std::vector<Ball> &balls) {
+    const Plan p = opponents_[state_.turn].choose(state_, balls);
+    candidates_ += p.candidates;
+    think_seconds_ += p.think_seconds;
+    return p;
+}
+
+std::string Match::name(int player) const {
+    return "Player " + std::to_string(player + 1) + (computer(player) ? " (computer)" : "");
+}
+
+std::vector<std::string> Match::status(bool placing) const {
+    std::vector<std::string> lines;
+    std::string who = "8-ball   ";
+    for (int p = 0; p < 2; ++p) {
+        who += (p ? "   " : "") + name(p);
+        if (state_.group[p] != Group::Open) who += std::string(": ") + group_name(state_.group[p]);
+    }
+    if (state_.open() && !state_.breaking) who += "   (table open)";
+    lines.push_back(who);
+    if (running_) {
+        lines.push_back("> " + name(state_.turn) + (state_.breaking ? " breaks" : " shoots"));
+    } else if (!state_.over()) {
+        std::string turn = "> " + name(state_.turn) + (state_.breaking ? " to break" : " to shoot");
+        if (state_.ball_in_hand) turn += placing ? ", ball in hand: click to put the cue ball down" : ", ball in hand";
+        lines.push_back(turn);
+    }
+    if (!last_.empty()) lines.push_back(last_);
+    return lines;
+}
+
+std::string Match::result() const {
+    if (!state_.over()) return "";
+    const int w = state_.winner;
+    const std::string winner = players_.computer[0] != players_.computer[1] ? (computer(w) ? "The computer wins" : "You win")
+                                                                           : name(w) + " wins";
+    return winner + ": " + last_.substr(last_.find(": ") + 2) + ". Press R for a new game.";
+}
+
+}  // namespace demo

@@ -1,0 +1,210 @@
+/* SPDX-License-Identifier: MIT */
+// opponent.cpp - see opponent.h.  Geometry of the ghost ball: to send an
+// object ball at B towards an aim point P, the cue ball must touch it with
+// the line of centres along u = (P - B)/|P - B|, its centre then at
+// G = B - 2R u; the cue ball travelling from C along (G - C) meets it there
+// if nothing is in the way, and the cut angle is the angle between (G - C)
+// and u.  A path from A to B of a ball of radius R is clear when every other
+// ball's centre is at least 2R from the segment AB.
+#include "game/opponent.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace demo {
+
+namespace {
+
+constexpr double kMaxCutDeg = 75;
+constexpr double kWin = 1e6, kFoulScore = -1000, kUnsettled = -1e5;
+constexpr double kKeepTurn = 100, kPositionWeight = 50, kSafetyWeight = 20;
+constexpr double kAngleError = 0.25, kSpeedError = 0.04;  // degrees, fraction (uniform +-)
+constexpr double kBreakSpeed = 12;
+const double kPotSpeeds[] = {1.2, 2.0, 3.0, 4.5};
+const double kSafetySpeeds[] = {2.0, 4.0};
+struct Tip {
+    double side, topback;
+};
+const Tip kTips[] = {{0, 0}, {0, 0.35}, {0, -0.35}, {-0.3, 0}, {0.3, 0}};  // centre, follow, draw, left, right
+const double kPlaceDistances[] = {0.25, 0.45};     // ball in hand, behind the ghost ball
+
+// Where a ball aims to enter a pocket: a third of the way from the middle of
+// the mouth to the hole's centre.
+Point aim_point(const Pocket &p) {
+    const double mx = 0.5 * (p.mouth[0].x + p.mouth[1].x), my = 0.5 * (p.mouth[0].y + p.mouth[1].y);
+    return {mx + (p.x - mx) / 3, my + (p.y - my) / 3};
+}
+
+double distance_to_segment(double px, double py, double ax, double ay, double bx, double by) {
+    const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+    const double t = len2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+}
+
+// No ball but `skip_a` and `skip_b` (numbers) within 2R of the segment.
+bool clear_path(const std::vector<Ball> &balls, double ax, double ay, double bx, double by, int skip_a, int skip_b) {
+    return std::none_of(balls.begin(), balls.end(), [&](const Ball &b) {
+        return b.active && b.number != skip_a && b.number != skip_b &&
+               distance_to_segment(b.x, b.y, ax, ay, bx, by) < kBallDiameter * 1.02;
+    });
+}
+
+const Ball *cue_of(const std::vector<Ball> &balls) {
+    for (const Ball &b : balls)
+        if (b.number == 0) return &b;
+    return nullptr;
+}
+
+// A potting line: the cue ball's aim to pot `target` in a pocket.
+struct Line {
+    int target;
+    double angle_deg, cut_deg, distance;  // distance: cue ball to ghost plus ball to pocket
+    double ghost_x, ghost_y, ux, uy;      // ghost ball and the object ball's unit direction
+};
+
+// The clear potting lines from (cx, cy); lines_for_ball limits them to one
+// target (-1: every legal target).
+std::vector<Line> potting_lines(const GameState &state, const Table &table, const std::vector<Ball> &balls, double cx,
+                                double cy, bool need_cue_path) {
+    std::vector<Line> lines;
+    for (const Ball &b : balls) {
+        if (!b.active || !legal_target(state, b.number, balls)) continue;
+        for (const Pocket &p : table.pockets) {
+            const Point a = aim_point(p);
+            const double to_pocket = std::hypot(a.x - b.x, a.y - b.y);
+            if (to_pocket < 1e-9) continue;
+            const double ux = (a.x - b.x) / to_pocket, uy = (a.y - b.y) / to_pocket;
+            const double gx = b.x - kBallDiameter * ux, gy = b.y - kBallDiameter * uy;
+            const double cue_len = std::hypot(gx - cx, gy - cy);
+            if (need_cue_path && cue_len < 1e-9) continue;
+            const double cut = need_cue_path ? std::acos(std::clamp(((gx - cx) * ux + (gy - cy) * uy) / cue_len, -1.0, 1.0)) * 180 / M_PI : 0;
+            if (cut > kMaxCutDeg) continue;
+            if (!clear_path(balls, b.x, b.y, a.x, a.y, b.number, 0)) continue;
+            if (need_cue_path && !clear_path(balls, cx, cy, gx, gy, 0, b.number)) continue;
+            lines.push_back(Line{b.number, std::atan2(gy - cy, gx - cx) * 180 / M_PI, cut, cue_len + to_pocket, gx, gy, ux, uy});
+        }
+    }
+    return lines;
+}
+
+double ease(const Line &l) { return std::cos(l.cut_deg * M_PI / 180) / (1 + l.distance); }
+
+struct Candidate {
+    Shot shot;
+    bool place_cue;
+    Point cue;
+};
+
+// Every candidate from the cue ball where it is.
+std::vector<Candidate> candidates_from_cue(const GameState &state, const Table &table, const std::vector<Ball> &balls) {
+    std::vector<Candidate> out;
+    const Ball *cue = cue_of(balls);
+    if (!cue || !cue->active) return out;
+    for (const Line &l : potting_lines(state, table, balls, cue->x, cue->y, true))
+        for (double v : kPotSpeeds)
+            for (const Tip &tip : kTips) out.push_back(Candidate{Shot{l.angle_deg, v, tip.side, tip.topback}, false, {0, 0}});
+    for (const Ball &b : balls) {
+        if (!b.active || !legal_target(state, b.number, balls)) continue;
+        const double dx = b.x - cue->x, dy = b.y - cue->y, d = std::hypot(dx, dy);
+        if (d < kBallDiameter) continue;
+        const double centre = std::atan2(dy, dx) * 180 / M_PI, half = std::asin(std::min(1.0, kBallRadius / d)) * 180 / M_PI;
+        for (double offset : {0.0, -half, half})
+            for (double v : kSafetySpeeds) out.push_back(Candidate{Shot{centre + offset, v, 0, 0}, false, {0, 0}});
+    }
+    return out;
+}
+
+// Ball in hand: the cue ball straight behind each potting line.
+std::vector<Candidate> candidates_in_hand(const GameState &state, const Table &table, const std::vector<Ball> &balls) {
+    std::vector<Candidate> out;
+    std::vector<Ball> without_cue = balls;
+    for (Ball &b : without_cue)
+        if (b.number == 0) b.active = false;
+    for (const Line &l : potting_lines(state, table, without_cue, 0, 0, false))
+        for (double d : kPlaceDistances) {
+            const Point c{l.ghost_x - d * l.ux, l.ghost_y - d * l.uy};
+            if (!cue_placement_ok(table, without_cue, c.x, c.y) ||
+                !clear_path(without_cue, c.x, c.y, l.ghost_x, l.ghost_y, 0, l.target))
+                continue;
+            const double angle = std::atan2(l.uy, l.ux) * 180 / M_PI;
+            for (double v : kPotSpeeds)
+                for (const Tip &tip : kTips) out.push_back(Candidate{Shot{angle, v, tip.side, tip.topback}, true, c});
+        }
+    return out;
+}
+
+// The table with the cue ball placed at p (at rest, on the table).
+std::vector<Ball> with_cue_at(const std::vector<Ball> &balls, Point p) {
+    std::vector<Ball> out = balls;
+    for (Ball &b : out)
+        if (b.number == 0) b = Ball{p.x, p.y, 0, 0, 0, true};
+    return out;
+}
+
+}  // namespace
+
+double best_ease(const GameState &state, const Table &table, const std::vector<Ball> &balls) {
+    const Ball *cue = cue_of(balls);
+    if (!cue || !cue->active) return 0;
+    double best = 0;
+    for (const Line &l : potting_lines(state, table, balls, cue->x, cue->y, true)) best = std::max(best, ease(l));
+    return best;
+}
+
+Opponent::Opponent(const SimConfig &config, uint64_t seed)
+    : config_(config), table_(scene_table(config.scene, config.table)), rng_(seed ^ 0x6f70706f6e656e74ULL) {}
+
+Plan Opponent::choose(const GameState &state, const std::vector<Ball> &balls) {
+    const auto start = std::chrono::steady_clock::now();
+    Plan plan;
+    if (state.breaking) {
+        plan.shot = Shot{0, kBreakSpeed};
+        const Ball *cue = cue_of(balls);
+        for (const Ball &b : balls)
+            if (b.number == 1 && b.active && cue) plan.shot.angle_deg = std::atan2(b.y - cue->y, b.x - cue->x) * 180 / M_PI;
+    } else {
+        std::vector<Candidate> cands = state.ball_in_hand ? candidates_in_hand(state, table_, balls) : std::vector<Candidate>{};
+        const Ball *cue = cue_of(balls);
+        Point spot{cue ? cue->x : 0, cue ? cue->y : 0};
+        if (state.ball_in_hand && (!cue || !cue->active || !cue_placement_ok(table_, balls, spot.x, spot.y)))
+            spot = free_head_spot(table_, balls);
+        const std::vector<Ball> here = state.ball_in_hand ? with_cue_at(balls, spot) : balls;
+        for (Candidate c : candidates_from_cue(state, table_, here)) {
+            c.place_cue = state.ball_in_hand;
+            c.cue = spot;
+            cands.push_back(c);
+        }
+        // nothing at all to try (never on a legal table): roll the cue ball up the table
+        plan.shot = Shot{0, 1.0};
+        plan.place_cue = state.ball_in_hand;
+        plan.cue = spot;
+        double best = -INFINITY;
+        for (const Candidate &c : cands) {
+            const std::vector<Ball> from = c.place_cue ? with_cue_at(balls, c.cue) : balls;
+            const ShotOutcome out = simulate_shot(config_, from, c.shot);
+            GameState next = state;
+            const Verdict v = apply_shot(next, shot_facts(out.events, from), from);
+            double score;
+            if (!out.settled) score = kUnsettled;
+            else if (v.winner >= 0) score = v.winner == state.turn ? kWin : -kWin;
+            else if (v.foul != Foul::None) score = kFoulScore;
+            else if (v.keeps_turn) score = kKeepTurn + kPositionWeight * best_ease(next, table_, out.balls);
+            else score = -kSafetyWeight * best_ease(next, table_, out.balls);
+            if (score > best) {
+                best = score;
+                plan.shot = c.shot;
+                plan.place_cue = c.place_cue;
+                plan.cue = c.cue;
+                plan.score = score;
+            }
+        }
+        plan.candidates = static_cast<int>(cands.size());
+    }
+    plan.shot.angle_deg += kAngleError * (2 * rng_.uniform() - 1);
+    plan.shot.speed = std::min(kMaxShotSpeed, plan.shot.speed * (1 + kSpeedError * (2 * rng_.uniform() - 1)));
+    plan.think_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return plan;
+}
+
+}  // namespace demo

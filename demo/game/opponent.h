@@ -1,0 +1,66 @@
+/* SPDX-License-Identifier: MIT */
+// opponent.h - the computer player of 8-ball (rules.h), without SDL.  It
+// chooses a shot by playing candidate shots to rest with the same engine the
+// game uses (sim.h simulate_shot) and judging each with the same rules.
+//
+// Candidates, from the cue ball's position:
+//   pots     for each legal object ball and each pocket whose line from the
+//            ball is clear: the ghost-ball aim (the cue ball's centre at
+//            contact sits 2R behind the ball on the line from the pocket's
+//            mouth through the ball), if the cue ball's path to it is clear
+//            and the cut is under 75 degrees; at 4 speeds (1.2, 2, 3, 4.5
+//            m/s) and 5 tips (centre, follow 0.35 R, draw 0.35 R, left and
+//            right english 0.3 R)
+//   safeties straight at each legal ball's centre and at half-ball hits on
+//            either side, at 2 and 4 m/s (so a shot is found when no pot is)
+// Ball in hand: the cue ball is tried straight behind each potting line at
+// 0.25 and 0.45 m from the ghost ball (legal placements only), with the
+// pot candidates of that line.
+// Score of a candidate (higher is better): a win 1e6, a loss -1e6; a foul
+// -1000; a shot that keeps the table 100 plus 50 times the best "ease" of
+// the next shot (cos(cut) / (1 + distance), over the clear potting lines);
+// a legal shot that hands over the table minus 20 times the opponent's best
+// ease (a safety); a shot that never settles -1e5.
+// The chosen shot is played with a seeded execution error (angle +-0.25
+// degrees, speed +-4%, uniform), so a game depends on --seed only and is
+// the same on every machine.  The break: 12 m/s from the head spot at the
+// apex ball, with the same error.
+#ifndef C2D_DEMO_OPPONENT_H
+#define C2D_DEMO_OPPONENT_H
+
+#include <cstdint>
+#include <vector>
+
+#include "game/rules.h"
+#include "pool/sim.h"
+
+namespace demo {
+
+struct Plan {
+    Shot shot{0, 0};
+    bool place_cue = false;  // ball in hand: put the cue ball at cue first
+    Point cue{0, 0};
+    double score = 0;        // the candidate's score (before the execution error)
+    int candidates = 0;      // shots simulated to choose this one
+    double think_seconds = 0;  // wall time (not deterministic; for the figures only)
+};
+
+class Opponent {
+public:
+    Opponent(const SimConfig &config, uint64_t seed);
+    // The shot for the player state.turn, on the table at rest `balls`.
+    Plan choose(const GameState &state, const std::vector<Ball> &balls);
+
+private:
+    SimConfig config_;
+    Table table_;
+    Rng rng_;
+};
+
+// The ease of the best potting line for `state`'s shooter with the cue ball
+// where it is in balls (0 if none): cos(cut) / (1 + distance in m).
+double best_ease(const GameState &state, const Table &table, const std::vector<Ball> &balls);
+
+}  // namespace demo
+
+#endif

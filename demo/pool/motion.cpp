@@ -1,0 +1,120 @@
+/* SPDX-License-Identifier: MIT */
+// motion.cpp - see motion.h.
+#include "pool/motion.h"
+
+#include <cmath>
+
+namespace demo {
+
+const char *motion_name(Motion m) {
+    switch (m) {
+    case Motion::Stationary: return "stationary";
+    case Motion::Spinning: return "spinning";
+    case Motion::Sliding: return "sliding";
+    case Motion::Rolling: return "rolling";
+    default: return "pocketed";
+    }
+}
+
+Motion classify(const Ball &b) {
+    if (!b.active) return Motion::Pocketed;
+    if (b.vx - kBallRadius * b.wy != 0 || b.vy + kBallRadius * b.wx != 0) return Motion::Sliding;
+    if (b.vx != 0 || b.vy != 0) return Motion::Rolling;
+    return b.wz != 0 ? Motion::Spinning : Motion::Stationary;
+}
+
+Track make_track(const Ball &b, double t0, const Cloth &cloth, bool friction) {
+    Track k{b, t0, INFINITY, 0, 0, 0, 0, 0};
+    if (!friction || !b.active) return k;
+    const double g = cloth.gravity;
+    if (b.wz != 0) k.spin_rate = cloth.spin_deceleration();
+    switch (b.motion) {
+    case Motion::Sliding: {
+        const double ux = b.vx - kBallRadius * b.wy, uy = b.vy + kBallRadius * b.wx;
+        const double u = std::hypot(ux, uy);
+        const double dec = cloth.slide * g;
+        k.ax = -dec * ux / u;
+        k.ay = -dec * uy / u;
+        k.alpha_x = 2.5 * k.ay / kBallRadius;   // -(5/2) mu_s g u^_y / R
+        k.alpha_y = -2.5 * k.ax / kBallRadius;  //  (5/2) mu_s g u^_x / R
+        k.t_end = t0 + 2 * u / (7 * dec);
+        break;
+    }
+    case Motion::Rolling: {
+        const double v = std::hypot(b.vx, b.vy);
+        const double dec = cloth.roll * g;
+        k.ax = -dec * b.vx / v;
+        k.ay = -dec * b.vy / v;
+        k.t_end = t0 + v / dec;
+        break;
+    }
+    case Motion::Spinning: k.t_end = t0 + std::fabs(b.wz) / k.spin_rate; break;
+    default: break;
+    }
+    return k;
+}
+
+void position_at(const Track &k, double t, double &x, double &y) {
+    const double h = t - k.t0;
+    x = k.start.x + k.start.vx * h + 0.5 * k.ax * h * h;
+    y = k.start.y + k.start.vy * h + 0.5 * k.ay * h * h;
+}
+
+Ball state_at(const Track &k, double t) {
+    Ball b = k.start;
+    const double h = t - k.t0;
+    if (h == 0) return b;
+    position_at(k, t, b.x, b.y);
+    b.vx += k.ax * h;
+    b.vy += k.ay * h;
+    if (b.motion == Motion::Rolling) {
+        b.wx = -b.vy / kBallRadius;
+        b.wy = b.vx / kBallRadius;
+    } else {
+        b.wx += k.alpha_x * h;
+        b.wy += k.alpha_y * h;
+    }
+    if (k.spin_rate > 0) b.wz = std::copysign(std::fmax(0.0, std::fabs(b.wz) - k.spin_rate * h), b.wz);
+    return b;
+}
+
+void roll(Ball &b) {
+    b.wx = -b.vy / kBallRadius;
+    b.wy = b.vx / kBallRadius;
+    b.motion = b.vx != 0 || b.vy != 0 ? Motion::Rolling : b.wz != 0 ? Motion::Spinning : Motion::Stationary;
+}
+
+Ball state_after_transition(const Track &k) {
+    Ball b = state_at(k, k.t_end);
+    if (k.start.motion == Motion::Sliding) {
+        roll(b);  // u = 0
+    } else if (k.start.motion == Motion::Rolling) {
+        b.vx = b.vy = b.wx = b.wy = 0;
+        b.motion = b.wz != 0 ? Motion::Spinning : Motion::Stationary;
+    } else {
+        b.wz = 0;
+        b.motion = Motion::Stationary;
+    }
+    return b;
+}
+
+double energy(const Ball &b) {
+    if (!b.active) return 0;
+    return 0.5 * kBallMass * (b.vx * b.vx + b.vy * b.vy) +
+           0.5 * kBallInertia * (b.wx * b.wx + b.wy * b.wy + b.wz * b.wz);
+}
+
+Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback) {
+    Ball s = b;
+    const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
+    const double w = 2.5 * speed / kBallRadius;  // 5 v / (2R)
+    s.vx = speed * dx;
+    s.vy = speed * dy;
+    s.wx = -w * topback * dy;
+    s.wy = w * topback * dx;
+    s.wz = w * side;
+    s.motion = classify(s);
+    return s;
+}
+
+}  // namespace demo

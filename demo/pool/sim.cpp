@@ -1,0 +1,166 @@
+/* SPDX-License-Identifier: MIT */
+// sim.cpp - see sim.h.
+#include "pool/sim.h"
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "pool/box2d_engine.h"
+#include "pool/exact_engine.h"
+
+namespace demo {
+
+namespace {
+
+std::unique_ptr<Engine> make_engine(const SimConfig &config, const std::vector<Ball> &balls, const Table &table) {
+    if (config.response == Response::Box2d) return make_box2d_engine(balls, table, config.model);
+    // the gas's many even balls: a uniform grid finds candidates faster than
+    // Box2D's tree (broadphase.h); the pool scenes keep the tree
+    return make_exact_engine(balls, table, config.model, config.scene == Scene::Gas);
+}
+
+// The cue ball's index, or -1.
+int cue_index(const std::vector<Ball> &balls) {
+    for (size_t i = 0; i < balls.size(); ++i)
+        if (balls[i].number == 0) return static_cast<int>(i);
+    return -1;
+}
+
+// The strike, and its event.
+Event strike_cue(Engine &engine, int cue, const Shot &shot) {
+    const Ball b = strike(engine.balls()[static_cast<size_t>(cue)], shot.angle_deg * (M_PI / 180.0), shot.speed,
+                          shot.side, shot.topback);
+    engine.set_motion(cue, b);
+    return Event{engine.now(), EventKind::Strike, cue, -1, -1, b.x, b.y, b.vx, b.vy, b.wx, b.wy, b.wz,
+                 kBallMass * shot.speed};
+}
+
+}  // namespace
+
+Simulation::Simulation(const SimConfig &config) : config_(config) {
+    const int count = config.scene == Scene::Cradle ? config.cradle_balls : config.gas_balls;
+    const Setup start = set_up(config.scene, config.table, count, config.seed, config.placements);
+    table_ = start.table;
+    engine_ = make_engine(config, start.balls, table_);
+}
+
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation &&) noexcept = default;
+Simulation &Simulation::operator=(Simulation &&) noexcept = default;
+
+const std::vector<Ball> &Simulation::balls() const { return engine_->balls(); }
+
+double Simulation::time() const { return engine_->now(); }
+
+bool Simulation::cue_on_table() const {
+    const int cue = cue_index(balls());
+    return config_.scene != Scene::Gas && cue >= 0 && balls()[static_cast<size_t>(cue)].active;
+}
+
+void Simulation::shoot(const Shot &shot) {
+    if (!cue_on_table()) return;
+    strikes_.push_back(strike_cue(*engine_, cue_index(balls()), shot));
+}
+
+bool Simulation::at_rest() const {
+    for (const Ball &b : balls())
+        if (b.active && (b.vx != 0 || b.vy != 0 || b.wx != 0 || b.wy != 0 || b.wz != 0)) return false;
+    return true;
+}
+
+int Simulation::object_balls_left() const {
+    int left = 0;
+    for (const Ball &b : balls()) left += b.active && b.number != 0;
+    return left;
+}
+
+void Simulation::respot_cue() {
+    const int cue = cue_index(balls());
+    if (config_.scene == Scene::Gas || cue < 0 || balls()[static_cast<size_t>(cue)].active) return;
+    engine_->place_ball(cue, free_head_spot(table_, balls()));
+}
+
+void Simulation::set_balls(const std::vector<Ball> &balls) { engine_ = make_engine(config_, balls, table_); }
+
+double Simulation::energy() const {
+    double e = 0;
+    for (const Ball &b : balls()) e += demo::energy(b);
+    return e;
+}
+
+void Simulation::momentum(double out[2]) const {
+    out[0] = out[1] = 0;
+    for (const Ball &b : balls())
+        if (b.active) {
+            out[0] += kBallMass * b.vx;
+            out[1] += kBallMass * b.vy;
+        }
+}
+
+void Simulation::step() {
+    const std::vector<Ball> before = balls();
+    frame_log_.contacts.clear();
+    frame_log_.waypoints.clear();
+    frame_log_.events.clear();
+    engine_->step(kFrameDt, stats_, frame_log_);
+    checker_.check_frame(before, balls(), frame_log_, table_, kFrameDt, stats_);
+    frame_events_.swap(strikes_);
+    strikes_.clear();
+    frame_events_.insert(frame_events_.end(), frame_log_.events.begin(), frame_log_.events.end());
+    ++stats_.steps;
+    stats_.sim_seconds = static_cast<double>(stats_.steps) * kFrameDt;
+}
+
+namespace {
+
+ShotOutcome play(const SimConfig &config, const std::vector<Ball> &balls, const Shot *shot) {
+    const Table table = scene_table(config.scene, config.table);
+    std::unique_ptr<Engine> engine = make_engine(config, balls, table);
+    ShotOutcome out{};
+    FrameLog log;
+    const int cue = cue_index(balls);
+    if (shot && cue >= 0 && balls[static_cast<size_t>(cue)].active) out.events.push_back(strike_cue(*engine, cue, *shot));
+    const double start = engine->now();
+    out.settled = engine->settle(3600, out.stats, log);
+    out.events.insert(out.events.end(), log.events.begin(), log.events.end());
+    out.balls = engine->balls();
+    out.seconds = engine->now() - start;
+    return out;
+}
+
+}  // namespace
+
+ShotOutcome simulate_shot(const SimConfig &config, const std::vector<Ball> &balls, const Shot &shot) {
+    return play(config, balls, &shot);
+}
+
+ShotOutcome simulate_to_rest(const SimConfig &config, const std::vector<Ball> &balls) {
+    return play(config, balls, nullptr);
+}
+
+void run(Simulation &sim, Driver &driver) {
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point origin = Clock::now();
+    long paced = 0;
+    while (driver.next_frame(sim)) {
+        const bool at_rest = sim.at_rest();
+        if (at_rest) sim.respot_cue();
+        if (!driver.before_step(sim, at_rest)) return;
+        sim.step();
+        driver.after_step(sim);
+        const double pace = driver.frame_seconds();
+        if (pace <= 0) continue;
+        const Clock::time_point due = origin + std::chrono::duration_cast<Clock::duration>(
+                                                   std::chrono::duration<double>(pace * static_cast<double>(++paced)));
+        const Clock::time_point now = Clock::now();
+        if (now < due) {
+            std::this_thread::sleep_until(due);
+        } else if (now - due > std::chrono::milliseconds(250)) {
+            origin = now;
+            paced = 0;
+        }
+    }
+}
+
+}  // namespace demo
