@@ -21,6 +21,18 @@ both bodies untouched, bit for bit.
     >>> tuple(a.vel), tuple(b.vel)
     ((0.5, -0.5), (0.5, 0.5))
 
+Every argument and struct field is checked before it reaches C (the rules:
+collide2d._native).  A number is any real number but a bool (numpy's
+scalars and fractions included); a vector or a surface is its struct, its
+twin of the other precision, a sequence of exactly its numbers (a tuple, a
+list), or a 1-D numpy array of a real dtype of that length.  The wrong kind
+of thing (a string, None, a bool, a complex, a dict, a set, an iterator, a
+struct of another kind) is a TypeError; a wrong number of components or a
+number beyond the C type (2**1024, or 1e300 for float) a ValueError.  NaN
+and infinities pass: the library answers Status.INVALID where its contract
+refuses them, and an infinite mass, inertia, friction or horizon is a value.
+A struct takes every field or none (all zeros).
+
 The batch calls (collide_batch, collide_batchf) work in place on numpy
 arrays: see collide2d.batch.
 """
