@@ -21,6 +21,18 @@ both bodies untouched, bit for bit.
     >>> tuple(a.vel), tuple(b.vel)
     ((0.5, -0.5), (0.5, 0.5))
 
+Every argument and struct field is checked before it reaches C (the rules:
+collide2d._native).  A number is any real number but a bool (numpy's
+scalars and fractions included); a vector or a surface is its struct, its
+twin of the other precision, a sequence of exactly its numbers (a tuple, a
+list), or a 1-D numpy array of a real dtype of that length.  The wrong kind
+of thing (a string, None, a bool, a complex, a dict, a set, an iterator, a
+struct of another kind) is a TypeError; a wrong number of components or a
+number beyond the C type (2**1024, or 1e300 for float) a ValueError.  NaN
+and infinities pass: the library answers Status.INVALID where its contract
+refuses them, and an infinite mass, inertia, friction or horizon is a value.
+A struct takes every field or none (all zeros).
+
 The batch calls (collide_batch, collide_batchf) work in place on numpy
 arrays: see collide2d.batch.
 """
@@ -70,31 +82,32 @@ __version__ = "%d.%d.%d" % version()
 
 def status_string(status):
     """The C library's name for a status ("ok", "separating", ...); "unknown"
-    for a value outside the enum."""
-    return _native.LIB.c2d_status_string(int(status)).decode("ascii")
+    for an int outside the enum.  status: a Status or an int (numpy's too,
+    not bool) within C's int; TypeError for anything else, ValueError beyond
+    int's range (where C would truncate it)."""
+    if isinstance(status, bool) or not isinstance(status, numbers.Integral):
+        raise TypeError(f"status_string: status must be a Status or an int, not {type(status).__name__}")
+    value = int(status)
+    bits = 8 * _native.ctypes.sizeof(_native.ctypes.c_int)
+    if not -2 ** (bits - 1) <= value < 2 ** (bits - 1):
+        raise ValueError(f"status_string: status = {_native.show(value)} is beyond the range of C's int")
+    return _native.LIB.c2d_status_string(value).decode("ascii")
 
 
 # ------------------------------------------------------------ calling C
 
 def _convert(value, ctype, position, name):
-    """One argument as the C function wants it, or a TypeError saying which."""
+    """One argument as the C function wants it: TypeError for the wrong kind
+    of thing, ValueError for a wrong value (rules: collide2d._native)."""
+    where = f"{name}: argument {position}"
     if isinstance(ctype, type) and issubclass(ctype, _native.ctypes._Pointer):
         target = ctype._type_
         if not isinstance(value, target):
-            raise TypeError(f"{name}: argument {position} must be {target.__name__}, not {type(value).__name__}")
+            raise TypeError(f"{where} must be {target.__name__}, not {type(value).__name__}")
         return _native.ctypes.byref(value)
     if isinstance(ctype, type) and issubclass(ctype, _native.ctypes.Structure):
-        if isinstance(value, ctype):
-            return value
-        try:
-            return ctype(*value)
-        except (TypeError, RuntimeError, ValueError) as e:
-            fields = ", ".join(f for f, _ in ctype._fields_)
-            raise TypeError(f"{name}: argument {position} must be {ctype.__name__} or a sequence ({fields}) "
-                            f"of numbers, not {value!r}") from e
-    if not isinstance(value, numbers.Real):
-        raise TypeError(f"{name}: argument {position} must be a real number, not {type(value).__name__}")
-    return float(value)
+        return _native.struct_value(ctype, value, where)
+    return _native.real(value, ctype, where)
 
 
 def _call(cname, *args):

@@ -7,10 +7,14 @@ The library is found, in order:
      (python/collide2d/ -> ../../build/), what `make` builds;
   3. the system's (`make install`, ctypes.util.find_library).
 """
+import collections.abc
 import ctypes
 import ctypes.util
 import functools
+import math
+import numbers
 import os
+import sys
 
 _HERE = os.path.dirname(os.path.abspath(__file__))
 _IN_TREE = os.path.join(_HERE, os.pardir, os.pardir, "build", "libcollide2d.so")
@@ -41,16 +45,134 @@ def _load():
 LIB, LIB_PATH = _load()
 
 
+# ------------------------------------------------------------ validation
+# Every value that crosses into C goes through real() or struct_value():
+#   a number      any numbers.Real but bool (numpy's float and integer
+#                 scalars, fractions.Fraction included), else TypeError;
+#                 rounded to the C type; NaN and infinities pass (the library
+#                 answers C2D_INVALID wherever its contract refuses them, and
+#                 an infinite mass, inertia, friction or horizon is a value);
+#                 a finite number beyond the C type's range (2**1024, 1e300
+#                 for float) is a ValueError, never an infinity.
+#   a struct      an instance of that struct, its twin of the other precision
+#                 (the same field names; every field checked as a number), a
+#                 tuple, list or other sequence of exactly one number per
+#                 field (not str, bytes, bytearray, memoryview), or a 1-D
+#                 numpy array of a real dtype (float, int, not bool or
+#                 complex) with one element per field.  Another kind of thing
+#                 (a dict, a set, an iterator, a string, a number, a struct of
+#                 another kind) is a TypeError; a wrong number of components
+#                 or a wrong array shape a ValueError.
+
+_NOT_SEQUENCES = (str, bytes, bytearray, memoryview)
+
+
+def _kind(value):
+    return type(value).__name__
+
+
+def show(value):
+    """A short repr for error messages (a 2**20000 has no repr in 3.11)."""
+    if isinstance(value, int) and value.bit_length() > 64:
+        return f"an integer of {value.bit_length()} bits"
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def real(value, ctype, where):
+    """value as a Python float representable as `ctype` (c_double, c_float)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{where} must be a real number, not {_kind(value)}")
+    name = "double" if ctype is ctypes.c_double else "float"
+    try:
+        x = float(value)
+    except OverflowError:
+        raise ValueError(f"{where} = {show(value)} is beyond the range of {name}") from None
+    if ctype is not ctypes.c_double:
+        x = ctype(x).value  # rounded to float; beyond FLT_MAX it is inf
+    if math.isinf(x) and not value == x:  # a finite value (a float, numpy.longdouble) gone infinite
+        raise ValueError(f"{where} = {show(value)} is finite but beyond the range of {name}")
+    return x
+
+
+def _components(cls, value, where):
+    """The values of the fields of struct `cls` given as `value`, as a list."""
+    names = [f for f, _ in cls._fields_]
+    if isinstance(value, _Struct):
+        if [f for f, _ in value._fields_] != names:
+            raise TypeError(f"{where} must be {cls.__name__} or a sequence ({', '.join(names)}), "
+                            f"not {_kind(value)}")
+        return list(value._values())
+    np = sys.modules.get("numpy")
+    if np is not None and isinstance(value, np.ndarray):
+        if value.dtype.kind not in "fiu":
+            raise TypeError(f"{where} must be a {cls.__name__} or an array of real numbers, "
+                            f"not an array of dtype {value.dtype.name}")
+        if value.shape != (len(names),):
+            raise ValueError(f"{where} must be a {cls.__name__} of shape ({len(names)},) ({', '.join(names)}), "
+                             f"not {value.shape}")
+        return list(value)
+    if isinstance(value, _NOT_SEQUENCES) or not isinstance(value, collections.abc.Sequence):
+        raise TypeError(f"{where} must be {cls.__name__} or a sequence ({', '.join(names)}) of numbers, "
+                        f"not {_kind(value)}")
+    if len(value) != len(names):
+        raise ValueError(f"{where} must be a {cls.__name__} of {len(names)} components ({', '.join(names)}), "
+                         f"not {len(value)}")
+    return list(value)
+
+
+def struct_value(cls, value, where):
+    """value as an instance of the _Struct `cls` (a new one unless it is one)."""
+    if type(value) is cls:
+        return value
+    out = cls()
+    for (name, _), component in zip(cls._fields_, _components(cls, value, where)):
+        out._set(name, component, f"{where}.{name}")
+    return out
+
+
 class _Struct(ctypes.Structure):
-    """A C struct with a readable repr and equality by value; a nested struct
-    field may be given as any sequence of numbers (a tuple, a list, a numpy
-    row): Body((0, 0), (1, 0), 1.0)."""
+    """A C struct with a readable repr, equality by value, and every field
+    checked (real(), struct_value()): Body((0, 0), (1, 0), 1.0), a nested
+    struct field given as any sequence of numbers (a tuple, a list, a numpy
+    row).  Either no arguments (all fields zero, as C's {0}) or every field,
+    positionally or by name; assigning a field checks it the same way, and an
+    attribute that is not a field is an AttributeError (no silent typo)."""
 
     def __init__(self, *args, **kwargs):
-        types = dict(self._fields_)
-        args = [_nested(t, a) for (_, t), a in zip(self._fields_, args)] + list(args[len(self._fields_):])
-        kwargs = {k: _nested(types.get(k), a) for k, a in kwargs.items()}
-        super().__init__(*args, **kwargs)
+        super().__init__()
+        names = [f for f, _ in self._fields_]
+        cls = type(self).__name__
+        if len(args) > len(names):
+            raise TypeError(f"{cls}() takes {len(names)} fields ({', '.join(names)}), {len(args)} given")
+        given = dict(zip(names, args))
+        for k, a in kwargs.items():
+            if k not in names:
+                raise TypeError(f"{cls}() has no field {k!r} (fields: {', '.join(names)})")
+            if k in given:
+                raise TypeError(f"{cls}() got field {k!r} twice")
+            given[k] = a
+        if given and len(given) != len(names):
+            missing = [n for n in names if n not in given]
+            raise TypeError(f"{cls}() missing field{'s' if len(missing) > 1 else ''} {', '.join(missing)} "
+                            f"(give every field, or none for all zeros)")
+        for name in names:
+            if name in given:
+                self._set(name, given[name], f"{cls}.{name}")
+
+    def _set(self, name, value, where):
+        ctype = dict(self._fields_)[name]
+        if isinstance(ctype, type) and issubclass(ctype, _Struct):
+            value = struct_value(ctype, value, where)
+        else:
+            value = real(value, ctype, where)
+        super().__setattr__(name, value)
+
+    def __setattr__(self, name, value):
+        if name not in dict(self._fields_):
+            raise AttributeError(f"{type(self).__name__} has no field {name!r} "
+                                 f"(fields: {', '.join(f for f, _ in self._fields_)})")
+        self._set(name, value, f"{type(self).__name__}.{name}")
 
     def _values(self):
         return tuple(getattr(self, name) for name, _ in self._fields_)
@@ -63,16 +185,6 @@ class _Struct(ctypes.Structure):
         return type(self) is type(other) and self._values() == other._values()
 
     __hash__ = None
-
-
-def _nested(ctype, value):
-    """A sequence given for a struct field, as the tuple ctypes takes."""
-    if isinstance(ctype, type) and issubclass(ctype, ctypes.Structure) and not isinstance(value, ctype):
-        try:
-            return tuple(value)
-        except TypeError:
-            return value
-    return value
 
 
 def _vec2(real):

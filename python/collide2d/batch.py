@@ -18,7 +18,6 @@ layout or an overlap a ValueError; nothing is written then.
 numpy is imported on the first batch call, so the scalar API works without it.
 """
 import ctypes
-import numbers
 
 from . import _native
 
@@ -31,7 +30,9 @@ def _rows(np, fn, name, value, dtype, writeable):
         if value.ndim != 2 or value.shape[0] != 2:
             raise ValueError(f"{fn}: {name} must have shape (2, n) (rows x, y), not {value.shape}")
         rows = (value[0], value[1])
-    elif isinstance(value, (tuple, list)) and len(value) == 2:
+    elif isinstance(value, (tuple, list)):
+        if len(value) != 2:
+            raise ValueError(f"{fn}: {name} as rows must be a pair (x, y), not {len(value)} rows")
         rows = tuple(value)
     else:
         raise TypeError(f"{fn}: {name} must be a numpy array of shape (2, n) or a pair (x, y) of "
@@ -73,8 +74,7 @@ def _batch(cname, dtype, ctype, pos_a, pos_b, vel_a, vel_b, mass_a, mass_b, rest
         status = _array(np, fn, "status", status, np.intc, True)
         if len(status) != n:
             raise ValueError(f"{fn}: status has {len(status)} entries for {n} pairs")
-    if not isinstance(restitution, numbers.Real):
-        raise TypeError(f"{fn}: restitution must be a real number, not {type(restitution).__name__}")
+    restitution = _native.real(restitution, ctype, f"{fn}: restitution")
     written = [arrays[k] for k in arrays if k.startswith("vel")] + ([status] if status is not None else [])
     everything = list(arrays.values()) + ([status] if status is not None else [])
     for w in written:
@@ -89,7 +89,7 @@ def _batch(cname, dtype, ctype, pos_a, pos_b, vel_a, vel_b, mass_a, mass_b, rest
     for field, a in arrays.items():  # the C struct's field names
         setattr(pairs, field, a.ctypes.data_as(ctypes.POINTER(ctype)))
     st = status.ctypes.data_as(ctypes.POINTER(ctypes.c_int)) if status is not None else None
-    return int(c_fn(ctypes.byref(pairs), n, float(restitution), st))
+    return int(c_fn(ctypes.byref(pairs), n, restitution, st))
 
 
 def collide_batch(pos_a, pos_b, vel_a, vel_b, mass_a, mass_b, restitution, status=None):

@@ -96,9 +96,11 @@ def bad_calls(dtype):
 @pytest.mark.parametrize("v", VARIANTS)
 def test_bad_arguments_raise_and_write_nothing(v):
     dtype, batch, _, _ = v
-    for what, change, exc, message in bad_calls(dtype):
+    cases, checked = bad_calls(dtype), 0
+    for what, change, exc, message in cases:
         args = list(scene(dtype, 8)) + [1.0, np.zeros(8, np.intc)]
         change(args)
+        checked += 1
         if exc is None:  # a dtype error or an overlap, whichever applies
             with pytest.raises((TypeError, ValueError)):
                 batch(*args)
@@ -109,6 +111,7 @@ def test_bad_arguments_raise_and_write_nothing(v):
         for x, y in zip(args, before):
             if isinstance(x, np.ndarray):
                 assert x.tobytes() == y.tobytes(), what
+    assert checked == len(cases) == 17
 
 
 def test_wall_batch_matches_closed_form():
