@@ -161,8 +161,8 @@ Options parse(int argc, char **argv) {
         };
         auto headless_only = [&]() { o.headless_only.push_back(flag); };
         if (flag == "--help" || flag == "-h") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
+            o.help = true;  // the caller prints the usage; the rest is not read
+            return o;
         } else if (flag == "--scene") {
             const std::string v = value();
             if (v == "break") o.config.set_scene(Scene::Break);

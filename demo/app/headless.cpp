@@ -405,11 +405,7 @@ int demo::run_game_headless(const Options &o) {
         std::fprintf(stderr, "billiards: screenshot: %s\n", error.c_str());
         return 1;
     }
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        std::fprintf(stderr, "billiards: standard output: %s\n", std::strerror(errno ? errno : EIO));
-        return 1;
-    }
-    return 0;
+    return 0;  // main checks stdout
 }
 
 int demo::run_scene_headless(const Options &o) {
@@ -426,10 +422,5 @@ int demo::run_scene_headless(const Options &o) {
         std::fprintf(stderr, "billiards: %s\n", error.c_str());
         return 1;
     }
-    const int status = write_outputs(sim, o);
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        std::fprintf(stderr, "billiards: standard output: %s\n", std::strerror(errno ? errno : EIO));
-        return 1;
-    }
-    return status;
+    return write_outputs(sim, o);  // main checks stdout
 }

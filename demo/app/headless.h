@@ -3,7 +3,8 @@
 // --seconds) with its shots, or a game of 8-ball between two computer
 // players, then what was asked for written out (the summary or JSON on
 // stdout, events, trace, speeds, screenshots).  Each returns the exit
-// status: 0, or 1 after a write error (with its message on stderr); an
+// status: 0, or 1 after a write error to a file (with its message on
+// stderr; stdout is checked by main); an
 // output file that cannot be created throws UsageError before simulating.
 #ifndef C2D_DEMO_HEADLESS_H
 #define C2D_DEMO_HEADLESS_H

@@ -143,6 +143,29 @@ bad --events ""
 bad --events /nonexistent-dir/events.csv
 bad --screenshot /nonexistent-dir/shot.png
 
+# bad_says TEXT ARGS...: bad input exits 2, its message contains TEXT, nothing on stdout
+bad_says() {
+    text=$1
+    shift
+    "$BIN" --headless "$@" > "$TMP/out" 2> "$TMP/err"
+    status=$?
+    if [ "$status" = 2 ] && grep -q -- "$text" "$TMP/err" && [ ! -s "$TMP/out" ]; then
+        c2d_passed; echo "ok - bad input says '$text': $*"
+    else c2d_failed "bad input says '$text': $* (status $status: $(cat "$TMP/err"))"; fi
+}
+
+# --- stdout (issue 19): a failed write of --help, the summary or the JSON
+# is exit 1 with a message
+"$BIN" --help > "$TMP/out" && head -1 "$TMP/out" | grep -q '^usage: billiards'; check "--help: usage, exit 0" $?
+"$BIN" --help > /dev/full 2> "$TMP/err"
+[ $? = 1 ] && grep -q "standard output" "$TMP/err"; check "--help to a full disk: exit 1 and a message" $?
+"$BIN" --headless > /dev/full 2> "$TMP/err"
+[ $? = 1 ] && grep -q "standard output" "$TMP/err"; check "the summary to a full disk: exit 1 and a message" $?
+"$BIN" --headless --game 8ball --json > /dev/full 2> "$TMP/err"
+[ $? = 1 ] && grep -q "standard output" "$TMP/err"; check "8-ball JSON to a full disk: exit 1 and a message" $?
+"$BIN" --help >&- 2> "$TMP/err"
+[ $? = 1 ] && grep -q "standard output" "$TMP/err"; check "--help to a closed stdout: exit 1 and a message" $?
+
 # --- write errors: exit 1 and a message
 "$BIN" --headless --events /dev/full > /dev/null 2> "$TMP/err"
 [ $? = 1 ] && [ -s "$TMP/err" ]; check "a full disk for --events: exit 1 and a message" $?
