@@ -2,7 +2,10 @@
 // cli.cpp - see cli.h.
 #include "app/cli.h"
 
+#include <cctype>
 #include <cerrno>
+#include <cfloat>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -44,21 +47,55 @@ namespace {
 
 [[noreturn]] void fail(const std::string &message) { throw UsageError{message}; }
 
+// Whether a number's literal has a non-zero digit before its exponent: 0 is
+// not an underflow, 1e-400 is.
+bool nonzero_literal(const std::string &text) {
+    size_t i = text.find_first_not_of("+-");
+    const bool hex = i != std::string::npos && text.compare(i, 2, "0x") == 0;
+    if (hex || (i != std::string::npos && text.compare(i, 2, "0X") == 0)) i += 2;
+    for (; i < text.size(); ++i) {
+        const char c = text[i];
+        if (hex ? (c == 'p' || c == 'P') : (c == 'e' || c == 'E')) break;
+        if ((c >= '1' && c <= '9') || (hex && std::isxdigit(static_cast<unsigned char>(c)) && c != '0')) return true;
+    }
+    return false;
+}
+
+// A number's text is not empty and starts with no blank (strtod and strtoull
+// would skip it, and strtoull would then read " -1" as 2^64 - 1).
+void check_literal(const std::string &flag, const std::string &text) {
+    if (text.empty()) fail(flag + ": empty value (a number is needed)");
+    if (std::isspace(static_cast<unsigned char>(text[0])))
+        fail(flag + ": '" + text + "' starts with a blank (give the number alone)");
+}
+
 double parse_number(const std::string &flag, const std::string &text) {
+    check_literal(flag, text);
     errno = 0;
     char *end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-        fail(flag + ": '" + text + "' is not a finite number");
+    const bool range = errno == ERANGE;
+    if (end == text.c_str()) fail(flag + ": '" + text + "' is not a number");
+    if (*end != '\0') fail(flag + ": '" + text + "' is not a number (stray '" + std::string(end) + "' after it)");
+    if (std::isnan(v)) fail(flag + ": '" + text + "' is not a number (NaN)");
+    if (std::isinf(v) && !range) fail(flag + ": '" + text + "' is not a finite number");
+    if (std::isinf(v)) fail(flag + ": '" + text + "' overflows (the largest double is about 1.8e308)");
+    if (v == 0 && (range || nonzero_literal(text)))
+        fail(flag + ": '" + text + "' underflows (non-zero, but rounds to 0)");
+    if (v != 0 && std::fabs(v) < DBL_MIN)
+        fail(flag + ": '" + text + "' underflows (non-zero, but below 2.2e-308, the smallest normal double)");
     return v;
 }
 
 unsigned long long parse_unsigned(const std::string &flag, const std::string &text) {
+    check_literal(flag, text);
     errno = 0;
     char *end = nullptr;
     const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-    if (text.empty() || text[0] == '-' || text[0] == '+' || *end != '\0' || errno == ERANGE)
+    if (end == text.c_str() || *end != '\0' || text[0] == '+')
         fail(flag + ": '" + text + "' is not a non-negative integer");
+    if (text[0] == '-') fail(flag + ": '" + text + "' is negative (a non-negative integer is needed)");
+    if (errno == ERANGE) fail(flag + ": '" + text + "' overflows (at most " + std::to_string(ULLONG_MAX) + ")");
     return v;
 }
 

@@ -154,6 +154,30 @@ bad_says() {
     else c2d_failed "bad input says '$text': $* (status $status: $(cat "$TMP/err"))"; fi
 }
 
+# --- numbers (issue 19): underflow and overflow say so, as do a stray tail,
+# an empty value, a leading blank (strtoull read " -1" as 2^64 - 1) and a
+# negative count
+bad_says "'1e-320' underflows" --seconds 1e-320
+bad_says "'1e-400' underflows" --seconds 1e-400
+bad_says "underflows" --shot 0,1e-320
+bad_says "underflows" --place 0,1,4e-324
+bad_says "'1e400' overflows" --seconds 1e400
+bad_says "overflows" --shot -1e400,3
+bad_says "overflows" --seed 99999999999999999999
+bad_says "not a finite number" --seconds inf
+bad_says "NaN" --seconds nan
+bad_says "stray 'x'" --seconds 1.5x
+bad_says "stray ' '" --seconds "1 "
+bad_says "empty value" --seconds ""
+bad_says "empty value" --shot 0,
+bad_says "empty value" --seed ""
+bad_says "starts with a blank" --seed " -1"
+bad_says "starts with a blank" --seconds " 1"
+bad_says "negative" --seed -1
+bad_says "negative" --scene gas --balls -5
+"$BIN" --headless --seconds 0 --json > "$TMP/zero.json" && [ "$(json_get "$TMP/zero.json" steps)" = 0 ]
+check "--seconds 0 is no underflow" $?
+
 # --- stdout (issue 19): a failed write of --help, the summary or the JSON
 # is exit 1 with a message
 "$BIN" --help > "$TMP/out" && head -1 "$TMP/out" | grep -q '^usage: billiards'; check "--help: usage, exit 0" $?
