@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <utility>
 
 namespace demo {
@@ -41,7 +42,9 @@ const char kUsage[] =
     "  --trace FILE.csv            time, kinetic energy, momentum per frame\n"
     "  --speeds FILE               final speeds, one per line (gas histogram)\n"
     "  --screenshot FILE.png       final frame, rendered offscreen\n"
-    "  --screenshot-window FILE.png  final frame drawn in a real window and read back\n";
+    "  --screenshot-window FILE.png  final frame drawn in a real window and read back\n"
+    "--place and --shot may repeat; any other option taking a value may be given\n"
+    "only once; the output files must differ, and their directories exist.\n";
 
 namespace {
 
@@ -150,6 +153,9 @@ std::string Options::*output_path(const std::string &flag) {
 
 std::string path_value(const std::string &flag, const std::string &v) {
     if (v.empty()) fail(flag + ": empty file name");
+    // "--events --json" would otherwise write a file named --json
+    if (v[0] == '-')
+        fail(flag + ": '" + v + "' looks like an option, not a file name (write ./" + v + " for a file of that name)");
     return v;
 }
 
@@ -190,13 +196,27 @@ void check_consistency(const Options &o) {
 
 Options parse(int argc, char **argv) {
     Options o;
+    std::map<std::string, std::string> given;  // the options taking one value, given so far
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
+        // An option's value; --place and --shot accumulate, any other option
+        // taking a value may be given once (a second one would silently win).
         auto value = [&]() -> std::string {
             if (i + 1 >= argc) fail(flag + " needs a value");
-            return argv[++i];
+            const std::string v = argv[++i];
+            if (flag != "--place" && flag != "--shot") {
+                const auto first = given.find(flag);
+                if (first != given.end())
+                    fail(flag + " given twice ('" + first->second + "', then '" + v + "'); it takes one value");
+                given.emplace(flag, v);
+            }
+            return v;
         };
-        auto headless_only = [&]() { o.headless_only.push_back(flag); };
+        auto headless_only = [&]() {
+            for (const std::string &f : o.headless_only)
+                if (f == flag) return;  // --shot may repeat, --json too
+            o.headless_only.push_back(flag);
+        };
         if (flag == "--help" || flag == "-h") {
             o.help = true;  // the caller prints the usage; the rest is not read
             return o;

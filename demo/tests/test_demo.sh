@@ -178,6 +178,25 @@ bad_says "negative" --scene gas --balls -5
 "$BIN" --headless --seconds 0 --json > "$TMP/zero.json" && [ "$(json_get "$TMP/zero.json" steps)" = 0 ]
 check "--seconds 0 is no underflow" $?
 
+# --- repeated options (issue 19): --place and --shot accumulate, the
+# switches (--headless, --json) may repeat; any other option taking a value
+# given twice is an error naming it, and nothing is written
+for opt in "--scene break" "--response box2d" "--balls 5" "--seed 3" "--game 8ball" "--players computer,computer" \
+           "--seconds 1" "--events $TMP/twice1.csv" "--trace $TMP/twice2.csv" "--speeds $TMP/twice3.txt" \
+           "--screenshot $TMP/twice4.png" "--screenshot-window $TMP/twice5.png"; do
+    # shellcheck disable=SC2086
+    bad_says "${opt%% *} given twice" $opt $opt
+done
+[ -z "$(ls "$TMP" | grep twice)" ]; check "a repeated option writes no file" $?
+bad_says "a.png', then '$TMP/b.png'" --screenshot "$TMP/a.png" --screenshot "$TMP/b.png"
+"$BIN" --headless --headless --json --json --seconds 0 > "$TMP/out" && [ "$(wc -l < "$TMP/out")" = 1 ]
+check "switches may repeat: --headless --headless --json --json" $?
+"$BIN" --help | grep -q -- "--place and --shot may repeat"; check "--help says which options may repeat" $?
+
+# --- a file name that looks like an option (issue 19)
+bad_says "looks like an option" --events --json
+bad_says "looks like an option" --trace -
+
 # --- stdout (issue 19): a failed write of --help, the summary or the JSON
 # is exit 1 with a message
 "$BIN" --help > "$TMP/out" && head -1 "$TMP/out" | grep -q '^usage: billiards'; check "--help: usage, exit 0" $?
