@@ -44,7 +44,8 @@ std::string joined(const std::vector<std::string> &flags) {
 
 int run(const Options &o) {
     std::string why;
-    if (!o.headless && display_named(why)) {
+    const bool display = display_named(why);  // also for --headless --screenshot-window
+    if (!o.headless && display) {
         if (!o.headless_only.empty())
             throw UsageError{joined(o.headless_only) + ": only for a headless run (add --headless)"};
         if (demo::play_window(o.config, demo::Players{o.game == demo::GameMode::EightBall, {o.computer[0], o.computer[1]}}, why) == demo::WindowResult::Ok) return 0;

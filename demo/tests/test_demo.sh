@@ -193,9 +193,36 @@ bad_says "a.png', then '$TMP/b.png'" --screenshot "$TMP/a.png" --screenshot "$TM
 check "switches may repeat: --headless --headless --json --json" $?
 "$BIN" --help | grep -q -- "--place and --shot may repeat"; check "--help says which options may repeat" $?
 
-# --- a file name that looks like an option (issue 19)
+# --- outputs (issue 19): a value that looks like an option, two outputs in
+# one file
 bad_says "looks like an option" --events --json
 bad_says "looks like an option" --trace -
+bad_says "--trace and --events name the same file" --events "$TMP/same.csv" --trace "$TMP/same.csv"
+ln -s same2.csv "$TMP/link.csv" && : > "$TMP/same2.csv"
+bad_says "name the same file" --events "$TMP/same2.csv" --speeds "$TMP/link.csv"
+"$BIN" --headless --seconds 0 --events /dev/null --trace /dev/null > /dev/null; check "two outputs to /dev/null are fine" $?
+
+# --- checks before simulating (issue 19): exit 2 with nothing simulated (no
+# summary on stdout) and no file left behind, an existing one untouched
+env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --headless --screenshot-window "$TMP/nowin.png" \
+    --events "$TMP/nowin.csv" > "$TMP/out" 2> "$TMP/err"
+status=$?
+[ "$status" = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ] &&
+    [ ! -e "$TMP/nowin.png" ] && [ ! -e "$TMP/nowin.csv" ]
+check "--screenshot-window without a display: exit 2 before simulating, no files" $?
+env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
+[ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ]
+check "--screenshot-window, no display, no --headless: exit 2 before simulating" $?
+DISPLAY=:7777 "$BIN" --headless --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
+[ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ] && [ ! -e "$TMP/nowin.png" ]
+check "--screenshot-window, an unreachable display: exit 2 before simulating" $?
+echo keep > "$TMP/keep.csv"
+bad_says "--speeds: /nonexistent-dir/s.txt" --screenshot "$TMP/left.png" --trace "$TMP/keep.csv" --events "$TMP/left.csv" \
+    --speeds /nonexistent-dir/s.txt
+[ ! -e "$TMP/left.png" ] && [ ! -e "$TMP/left.csv" ] && [ "$(cat "$TMP/keep.csv")" = keep ]
+check "a failed check leaves no new file and an existing one untouched" $?
+bad_says "--screenshot: $TMP" --screenshot "$TMP"
+bad_says "--screenshot: /nonexistent-dir" --game 8ball --screenshot /nonexistent-dir/x.png
 
 # --- stdout (issue 19): a failed write of --help, the summary or the JSON
 # is exit 1 with a message
