@@ -16,6 +16,7 @@ namespace demo {
 
 const char kUsage[] =
     "usage: billiards [options]\n"
+    "  --help, -h                  this text\n"
     "  --scene break|elastic|gas|cradle  scene (default break)\n"
     "  --response collide2d|box2d  who resolves collisions (default collide2d)\n"
     "  --balls N                   gas: number of disks (default 1000); cradle: balls\n"
@@ -100,6 +101,16 @@ unsigned long long parse_unsigned(const std::string &flag, const std::string &te
     if (text[0] == '-') fail(flag + ": '" + text + "' is negative (a non-negative integer is needed)");
     if (errno == ERANGE) fail(flag + ": '" + text + "' overflows (at most " + std::to_string(ULLONG_MAX) + ")");
     return v;
+}
+
+// Whether an option takes a value (for the message that refuses --seed=3).
+bool takes_value(const std::string &flag) {
+    static const char *const options[] = {"--scene",   "--response", "--balls",  "--place",      "--seed",
+                                          "--game",    "--players",  "--seconds", "--shot",      "--events",
+                                          "--trace",   "--speeds",   "--screenshot", "--screenshot-window"};
+    for (const char *o : options)
+        if (flag == o) return true;
+    return false;
 }
 
 // The comma-separated fields of a value.
@@ -233,8 +244,9 @@ Options parse(int argc, char **argv) {
             else if (v == "box2d") o.config.response = Response::Box2d;
             else fail("--response: unknown response '" + v + "' (collide2d or box2d)");
         } else if (flag == "--balls") {
-            const unsigned long long n = parse_unsigned(flag, value());
-            if (n < 1 || n > 200000) fail("--balls: must be between 1 and 200000");
+            const std::string v = value();
+            const unsigned long long n = parse_unsigned(flag, v);
+            if (n < 1 || n > 200000) fail("--balls: must be between 1 and 200000, got '" + v + "'");
             o.config.gas_balls = o.config.cradle_balls = static_cast<int>(n);  // the scene uses its own
             o.balls_given = true;
         } else if (flag == "--place") {
@@ -258,8 +270,9 @@ Options parse(int argc, char **argv) {
         } else if (flag == "--headless") {
             o.headless = true;
         } else if (flag == "--seconds") {
-            o.seconds = parse_number(flag, value());
-            if (o.seconds < 0 || o.seconds > 86400) fail("--seconds: must be between 0 and 86400");
+            const std::string v = value();
+            o.seconds = parse_number(flag, v);
+            if (o.seconds < 0 || o.seconds > 86400) fail("--seconds: must be between 0 and 86400, got '" + v + "'");
             headless_only();
         } else if (flag == "--shot") {
             o.shots.push_back(parse_shot(value()));
@@ -271,6 +284,14 @@ Options parse(int argc, char **argv) {
             o.*path = path_value(flag, value());
             headless_only();
         } else {
+            const size_t equals = flag.find('=');
+            const std::string name = flag.substr(0, equals);
+            if (equals != std::string::npos && takes_value(name))
+                fail("'" + flag + "': give the value as the next argument (" + name + " " + flag.substr(equals + 1) + ")");
+            if (equals != std::string::npos && (name == "--headless" || name == "--json" || name == "--help"))
+                fail("'" + flag + "': " + name + " takes no value");
+            if (flag.empty() || flag[0] != '-')
+                fail("unexpected argument '" + flag + "' (the options start with --; see --help)");
             fail("unknown option '" + flag + "' (see --help)");
         }
     }

@@ -193,6 +193,16 @@ bad_says "a.png', then '$TMP/b.png'" --screenshot "$TMP/a.png" --screenshot "$TM
 check "switches may repeat: --headless --headless --json --json" $?
 "$BIN" --help | grep -q -- "--place and --shot may repeat"; check "--help says which options may repeat" $?
 
+# --- other papercuts (issue 19): --seed=3, a switch with a value, a stray
+# argument, the value out of range named
+bad_says "give the value as the next argument (--seed 3)" --seed=3
+bad_says "--json takes no value" --json=1
+bad_says "unexpected argument 'stray'" stray
+bad_says "unknown option '-x'" -x
+bad_says "got '90000'" --seconds 90000
+bad_says "got '0'" --scene gas --balls 0
+"$BIN" --help | grep -q -- "--help, -h"; check "--help lists itself" $?
+
 # --- outputs (issue 19): a value that looks like an option, two outputs in
 # one file
 bad_says "looks like an option" --events --json
