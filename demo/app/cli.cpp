@@ -2,16 +2,21 @@
 // cli.cpp - see cli.h.
 #include "app/cli.h"
 
+#include <cctype>
 #include <cerrno>
+#include <cfloat>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <utility>
 
 namespace demo {
 
 const char kUsage[] =
     "usage: billiards [options]\n"
+    "  --help, -h                  this text\n"
     "  --scene break|elastic|gas|cradle  scene (default break)\n"
     "  --response collide2d|box2d  who resolves collisions (default collide2d)\n"
     "  --balls N                   gas: number of disks (default 1000); cradle: balls\n"
@@ -38,28 +43,74 @@ const char kUsage[] =
     "  --trace FILE.csv            time, kinetic energy, momentum per frame\n"
     "  --speeds FILE               final speeds, one per line (gas histogram)\n"
     "  --screenshot FILE.png       final frame, rendered offscreen\n"
-    "  --screenshot-window FILE.png  final frame drawn in a real window and read back\n";
+    "  --screenshot-window FILE.png  final frame drawn in a real window and read back\n"
+    "--place and --shot may repeat; any other option taking a value may be given\n"
+    "only once; the output files must differ, and their directories exist.\n";
 
 namespace {
 
 [[noreturn]] void fail(const std::string &message) { throw UsageError{message}; }
 
+// Whether a number's literal has a non-zero digit before its exponent: 0 is
+// not an underflow, 1e-400 is.
+bool nonzero_literal(const std::string &text) {
+    size_t i = text.find_first_not_of("+-");
+    const bool hex = i != std::string::npos && text.compare(i, 2, "0x") == 0;
+    if (hex || (i != std::string::npos && text.compare(i, 2, "0X") == 0)) i += 2;
+    for (; i < text.size(); ++i) {
+        const char c = text[i];
+        if (hex ? (c == 'p' || c == 'P') : (c == 'e' || c == 'E')) break;
+        if ((c >= '1' && c <= '9') || (hex && std::isxdigit(static_cast<unsigned char>(c)) && c != '0')) return true;
+    }
+    return false;
+}
+
+// A number's text is not empty and starts with no blank (strtod and strtoull
+// would skip it, and strtoull would then read " -1" as 2^64 - 1).
+void check_literal(const std::string &flag, const std::string &text) {
+    if (text.empty()) fail(flag + ": empty value (a number is needed)");
+    if (std::isspace(static_cast<unsigned char>(text[0])))
+        fail(flag + ": '" + text + "' starts with a blank (give the number alone)");
+}
+
 double parse_number(const std::string &flag, const std::string &text) {
+    check_literal(flag, text);
     errno = 0;
     char *end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-        fail(flag + ": '" + text + "' is not a finite number");
+    const bool range = errno == ERANGE;
+    if (end == text.c_str()) fail(flag + ": '" + text + "' is not a number");
+    if (*end != '\0') fail(flag + ": '" + text + "' is not a number (stray '" + std::string(end) + "' after it)");
+    if (std::isnan(v)) fail(flag + ": '" + text + "' is not a number (NaN)");
+    if (std::isinf(v) && !range) fail(flag + ": '" + text + "' is not a finite number");
+    if (std::isinf(v)) fail(flag + ": '" + text + "' overflows (the largest double is about 1.8e308)");
+    if (v == 0 && (range || nonzero_literal(text)))
+        fail(flag + ": '" + text + "' underflows (non-zero, but rounds to 0)");
+    if (v != 0 && std::fabs(v) < DBL_MIN)
+        fail(flag + ": '" + text + "' underflows (non-zero, but below 2.2e-308, the smallest normal double)");
     return v;
 }
 
 unsigned long long parse_unsigned(const std::string &flag, const std::string &text) {
+    check_literal(flag, text);
     errno = 0;
     char *end = nullptr;
     const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-    if (text.empty() || text[0] == '-' || text[0] == '+' || *end != '\0' || errno == ERANGE)
+    if (end == text.c_str() || *end != '\0' || text[0] == '+')
         fail(flag + ": '" + text + "' is not a non-negative integer");
+    if (text[0] == '-') fail(flag + ": '" + text + "' is negative (a non-negative integer is needed)");
+    if (errno == ERANGE) fail(flag + ": '" + text + "' overflows (at most " + std::to_string(ULLONG_MAX) + ")");
     return v;
+}
+
+// Whether an option takes a value (for the message that refuses --seed=3).
+bool takes_value(const std::string &flag) {
+    static const char *const options[] = {"--scene",   "--response", "--balls",  "--place",      "--seed",
+                                          "--game",    "--players",  "--seconds", "--shot",      "--events",
+                                          "--trace",   "--speeds",   "--screenshot", "--screenshot-window"};
+    for (const char *o : options)
+        if (flag == o) return true;
+    return false;
 }
 
 // The comma-separated fields of a value.
@@ -113,6 +164,9 @@ std::string Options::*output_path(const std::string &flag) {
 
 std::string path_value(const std::string &flag, const std::string &v) {
     if (v.empty()) fail(flag + ": empty file name");
+    // "--events --json" would otherwise write a file named --json
+    if (v[0] == '-')
+        fail(flag + ": '" + v + "' looks like an option, not a file name (write ./" + v + " for a file of that name)");
     return v;
 }
 
@@ -153,16 +207,30 @@ void check_consistency(const Options &o) {
 
 Options parse(int argc, char **argv) {
     Options o;
+    std::map<std::string, std::string> given;  // the options taking one value, given so far
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
+        // An option's value; --place and --shot accumulate, any other option
+        // taking a value may be given once (a second one would silently win).
         auto value = [&]() -> std::string {
             if (i + 1 >= argc) fail(flag + " needs a value");
-            return argv[++i];
+            const std::string v = argv[++i];
+            if (flag != "--place" && flag != "--shot") {
+                const auto first = given.find(flag);
+                if (first != given.end())
+                    fail(flag + " given twice ('" + first->second + "', then '" + v + "'); it takes one value");
+                given.emplace(flag, v);
+            }
+            return v;
         };
-        auto headless_only = [&]() { o.headless_only.push_back(flag); };
+        auto headless_only = [&]() {
+            for (const std::string &f : o.headless_only)
+                if (f == flag) return;  // --shot may repeat, --json too
+            o.headless_only.push_back(flag);
+        };
         if (flag == "--help" || flag == "-h") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
+            o.help = true;  // the caller prints the usage; the rest is not read
+            return o;
         } else if (flag == "--scene") {
             const std::string v = value();
             if (v == "break") o.config.set_scene(Scene::Break);
@@ -176,8 +244,9 @@ Options parse(int argc, char **argv) {
             else if (v == "box2d") o.config.response = Response::Box2d;
             else fail("--response: unknown response '" + v + "' (collide2d or box2d)");
         } else if (flag == "--balls") {
-            const unsigned long long n = parse_unsigned(flag, value());
-            if (n < 1 || n > 200000) fail("--balls: must be between 1 and 200000");
+            const std::string v = value();
+            const unsigned long long n = parse_unsigned(flag, v);
+            if (n < 1 || n > 200000) fail("--balls: must be between 1 and 200000, got '" + v + "'");
             o.config.gas_balls = o.config.cradle_balls = static_cast<int>(n);  // the scene uses its own
             o.balls_given = true;
         } else if (flag == "--place") {
@@ -201,8 +270,9 @@ Options parse(int argc, char **argv) {
         } else if (flag == "--headless") {
             o.headless = true;
         } else if (flag == "--seconds") {
-            o.seconds = parse_number(flag, value());
-            if (o.seconds < 0 || o.seconds > 86400) fail("--seconds: must be between 0 and 86400");
+            const std::string v = value();
+            o.seconds = parse_number(flag, v);
+            if (o.seconds < 0 || o.seconds > 86400) fail("--seconds: must be between 0 and 86400, got '" + v + "'");
             headless_only();
         } else if (flag == "--shot") {
             o.shots.push_back(parse_shot(value()));
@@ -214,6 +284,14 @@ Options parse(int argc, char **argv) {
             o.*path = path_value(flag, value());
             headless_only();
         } else {
+            const size_t equals = flag.find('=');
+            const std::string name = flag.substr(0, equals);
+            if (equals != std::string::npos && takes_value(name))
+                fail("'" + flag + "': give the value as the next argument (" + name + " " + flag.substr(equals + 1) + ")");
+            if (equals != std::string::npos && (name == "--headless" || name == "--json" || name == "--help"))
+                fail("'" + flag + "': " + name + " takes no value");
+            if (flag.empty() || flag[0] != '-')
+                fail("unexpected argument '" + flag + "' (the options start with --; see --help)");
             fail("unknown option '" + flag + "' (see --help)");
         }
     }

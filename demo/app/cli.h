@@ -19,6 +19,7 @@ extern const char kUsage[];
 enum class GameMode { None, Practice, EightBall };
 
 struct Options {
+    bool help = false;  // --help or -h: print kUsage, nothing else
     SimConfig config;
     GameMode game = GameMode::None;
     bool players_given = false;
@@ -36,8 +37,8 @@ struct UsageError {
     std::string message;
 };
 
-// Parses and checks the command line; throws UsageError.  --help prints the
-// usage and exits 0.
+// Parses and checks the command line; throws UsageError.  --help (or -h)
+// stops the parsing there and sets help.
 Options parse(int argc, char **argv);
 
 }  // namespace demo

@@ -3,6 +3,8 @@
 // simulating, and any write error is reported (exit 1).
 #include "app/headless.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -10,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <utility>
@@ -311,12 +314,56 @@ bool write_speeds(const Simulation &sim, const std::string &path, std::string &e
     return f.close(error);
 }
 
-// Fails (exit 2) before simulating if an output file cannot be created.
-void check_writable(const std::string &path) {
-    if (path.empty()) return;
-    OutFile probe(path, "a");
-    std::string ignored;
-    probe.close(ignored);
+// Fails (exit 2) before simulating if an output file cannot be written,
+// leaving no file behind: a file it had to create is removed again.
+void check_writable(const std::string &flag, const std::string &path) {
+    int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+        ::close(fd);
+        ::unlink(path.c_str());
+        return;
+    }
+    if (errno == EEXIST) {
+        // an existing file is opened without truncating it; a FIFO without a
+        // reader (ENXIO) is left to the run
+        fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NONBLOCK);
+        if (fd >= 0) {
+            ::close(fd);
+            return;
+        }
+        if (errno == ENXIO) return;
+    }
+    throw UsageError{flag + ": " + path + ": " + std::strerror(errno)};
+}
+
+// Every check that can be made before simulating (exit 2 on failure): a
+// display for --screenshot-window, each output file writable, no two outputs
+// in the same file (a device such as /dev/null aside).
+void preflight(const Options &o) {
+    const std::pair<const char *, const std::string *> outputs[] = {
+        {"--screenshot", &o.screenshot}, {"--screenshot-window", &o.screenshot_window},
+        {"--trace", &o.trace},           {"--speeds", &o.speeds},
+        {"--events", &o.events}};
+    for (size_t i = 0; i < std::size(outputs); ++i) {
+        const std::string &a = *outputs[i].second;
+        if (a.empty()) continue;
+        struct stat sa;
+        const bool a_exists = ::stat(a.c_str(), &sa) == 0;
+        if (a_exists && S_ISCHR(sa.st_mode)) continue;
+        for (size_t k = i + 1; k < std::size(outputs); ++k) {
+            const std::string &b = *outputs[k].second;
+            struct stat sb;
+            if (!b.empty() && (a == b || (a_exists && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+                                          sa.st_ino == sb.st_ino)))
+                throw UsageError{std::string(outputs[i].first) + " and " + outputs[k].first + " name the same file ('" +
+                                 a + "'); each output needs its own"};
+        }
+    }
+    std::string why;
+    if (!o.screenshot_window.empty() && !demo::window_available(why))
+        throw UsageError{"--screenshot-window: " + why + "; --screenshot draws the picture offscreen"};
+    for (const auto &out : outputs)
+        if (!out.second->empty()) check_writable(out.first, *out.second);
 }
 
 int write_outputs(const Simulation &sim, const Options &o) {
@@ -390,7 +437,7 @@ void print_game_summary(const demo::GameRecord &g, double wall) {
 int demo::run_game_headless(const Options &o) {
     if (o.players_given && !(o.computer[0] && o.computer[1]))
         throw UsageError{"--players: a human player needs the window; headless, --game 8ball is --players computer,computer"};
-    check_writable(o.screenshot);
+    preflight(o);
     const auto start = std::chrono::steady_clock::now();
     const demo::GameRecord g = demo::play_computer_game(o.config, o.config.seed);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -405,15 +452,11 @@ int demo::run_game_headless(const Options &o) {
         std::fprintf(stderr, "billiards: screenshot: %s\n", error.c_str());
         return 1;
     }
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        std::fprintf(stderr, "billiards: standard output: %s\n", std::strerror(errno ? errno : EIO));
-        return 1;
-    }
-    return 0;
+    return 0;  // main checks stdout
 }
 
 int demo::run_scene_headless(const Options &o) {
-    for (const std::string *path : {&o.screenshot, &o.screenshot_window, &o.speeds}) check_writable(*path);
+    preflight(o);
     Recorder recorder(o);
     Simulation sim(o.config);
     const Totals t = run_headless(sim, o, recorder);
@@ -426,10 +469,5 @@ int demo::run_scene_headless(const Options &o) {
         std::fprintf(stderr, "billiards: %s\n", error.c_str());
         return 1;
     }
-    const int status = write_outputs(sim, o);
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        std::fprintf(stderr, "billiards: standard output: %s\n", std::strerror(errno ? errno : EIO));
-        return 1;
-    }
-    return status;
+    return write_outputs(sim, o);  // main checks stdout
 }

@@ -3,8 +3,10 @@
 // and a headless run (before SDL touches the video system) and runs it: the
 // game in the window (controller.h) or, headless, what was asked for
 // (headless.h).
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <string>
 #include <vector>
@@ -42,7 +44,8 @@ std::string joined(const std::vector<std::string> &flags) {
 
 int run(const Options &o) {
     std::string why;
-    if (!o.headless && display_named(why)) {
+    const bool display = display_named(why);  // also for --headless --screenshot-window
+    if (!o.headless && display) {
         if (!o.headless_only.empty())
             throw UsageError{joined(o.headless_only) + ": only for a headless run (add --headless)"};
         if (demo::play_window(o.config, demo::Players{o.game == demo::GameMode::EightBall, {o.computer[0], o.computer[1]}}, why) == demo::WindowResult::Ok) return 0;
@@ -53,12 +56,31 @@ int run(const Options &o) {
     return demo::run_scene_headless(o);
 }
 
+// Everything written to stdout (--help, the summary, --json) reaches it, or
+// the run fails: status 1 and a message, also when the run itself succeeded.
+int finish_stdout(int status) {
+    errno = 0;
+    const bool flushed = std::fflush(stdout) == 0;
+    int error = flushed ? 0 : errno;
+    if (std::ferror(stdout) && !error) error = EIO;
+    errno = 0;
+    // EBADF from the close alone: stdout was closed and nothing written to it
+    if (std::fclose(stdout) != 0 && !error && errno != EBADF) error = errno ? errno : EIO;
+    if (!error) return status;
+    std::fprintf(stderr, "billiards: standard output: %s\n", std::strerror(error));
+    return 1;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
     try {
         const Options o = demo::parse(argc, argv);
-        return run(o);
+        if (o.help) {
+            std::fputs(demo::kUsage, stdout);
+            return finish_stdout(0);
+        }
+        return finish_stdout(run(o));
     } catch (const UsageError &e) {
         std::fprintf(stderr, "billiards: %s\n", e.message.c_str());
         return 2;

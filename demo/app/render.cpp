@@ -163,6 +163,12 @@ bool screenshot_offscreen(const Simulation &sim, const std::string &path, std::s
     return write_png(path, width, height, frame.rgb(), error);
 }
 
+bool window_available(std::string &error) {
+    if (!have_display(error)) return false;
+    SDL_Quit();  // the screenshot opens its window again, after the run
+    return true;
+}
+
 WindowResult screenshot_window(const Simulation &sim, const std::string &path, std::string &error) {
     Window w;
     const WindowResult opened = open_window(sim, w, error);

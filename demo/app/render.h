@@ -17,6 +17,10 @@ enum class WindowResult { Ok, Unavailable, Failed };
 // The final frame, drawn offscreen into a PNG.
 bool screenshot_offscreen(const Simulation &sim, const std::string &path, std::string &error);
 
+// Whether a window can be opened (a display SDL can use), checked before a
+// run that ends with screenshot_window; false with the reason in error.
+bool window_available(std::string &error);
+
 // Opens a real window, draws the frame there and saves what the window's
 // renderer drew.  Unavailable: no display, or no window/renderer.
 WindowResult screenshot_window(const Simulation &sim, const std::string &path, std::string &error);

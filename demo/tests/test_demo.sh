@@ -143,6 +143,109 @@ bad --events ""
 bad --events /nonexistent-dir/events.csv
 bad --screenshot /nonexistent-dir/shot.png
 
+# bad_says TEXT ARGS...: bad input exits 2, its message contains TEXT, nothing on stdout
+bad_says() {
+    text=$1
+    shift
+    "$BIN" --headless "$@" > "$TMP/out" 2> "$TMP/err"
+    status=$?
+    if [ "$status" = 2 ] && grep -q -- "$text" "$TMP/err" && [ ! -s "$TMP/out" ]; then
+        c2d_passed; echo "ok - bad input says '$text': $*"
+    else c2d_failed "bad input says '$text': $* (status $status: $(cat "$TMP/err"))"; fi
+}
+
+# --- numbers (issue 19): underflow and overflow say so, as do a stray tail,
+# an empty value, a leading blank (strtoull read " -1" as 2^64 - 1) and a
+# negative count
+bad_says "'1e-320' underflows" --seconds 1e-320
+bad_says "'1e-400' underflows" --seconds 1e-400
+bad_says "underflows" --shot 0,1e-320
+bad_says "underflows" --place 0,1,4e-324
+bad_says "'1e400' overflows" --seconds 1e400
+bad_says "overflows" --shot -1e400,3
+bad_says "overflows" --seed 99999999999999999999
+bad_says "not a finite number" --seconds inf
+bad_says "NaN" --seconds nan
+bad_says "stray 'x'" --seconds 1.5x
+bad_says "stray ' '" --seconds "1 "
+bad_says "empty value" --seconds ""
+bad_says "empty value" --shot 0,
+bad_says "empty value" --seed ""
+bad_says "starts with a blank" --seed " -1"
+bad_says "starts with a blank" --seconds " 1"
+bad_says "negative" --seed -1
+bad_says "negative" --scene gas --balls -5
+"$BIN" --headless --seconds 0 --json > "$TMP/zero.json" && [ "$(json_get "$TMP/zero.json" steps)" = 0 ]
+check "--seconds 0 is no underflow" $?
+
+# --- repeated options (issue 19): --place and --shot accumulate, the
+# switches (--headless, --json) may repeat; any other option taking a value
+# given twice is an error naming it, and nothing is written
+for opt in "--scene break" "--response box2d" "--balls 5" "--seed 3" "--game 8ball" "--players computer,computer" \
+           "--seconds 1" "--events $TMP/twice1.csv" "--trace $TMP/twice2.csv" "--speeds $TMP/twice3.txt" \
+           "--screenshot $TMP/twice4.png" "--screenshot-window $TMP/twice5.png"; do
+    # shellcheck disable=SC2086
+    bad_says "${opt%% *} given twice" $opt $opt
+done
+[ -z "$(ls "$TMP" | grep twice)" ]; check "a repeated option writes no file" $?
+bad_says "a.png', then '$TMP/b.png'" --screenshot "$TMP/a.png" --screenshot "$TMP/b.png"
+"$BIN" --headless --headless --json --json --seconds 0 > "$TMP/out" && [ "$(wc -l < "$TMP/out")" = 1 ]
+check "switches may repeat: --headless --headless --json --json" $?
+"$BIN" --help | grep -q -- "--place and --shot may repeat"; check "--help says which options may repeat" $?
+
+# --- other papercuts (issue 19): --seed=3, a switch with a value, a stray
+# argument, the value out of range named
+bad_says "give the value as the next argument (--seed 3)" --seed=3
+bad_says "--json takes no value" --json=1
+bad_says "unexpected argument 'stray'" stray
+bad_says "unknown option '-x'" -x
+bad_says "got '90000'" --seconds 90000
+bad_says "got '0'" --scene gas --balls 0
+"$BIN" --help | grep -q -- "--help, -h"; check "--help lists itself" $?
+
+# --- outputs (issue 19): a value that looks like an option, two outputs in
+# one file
+bad_says "looks like an option" --events --json
+bad_says "looks like an option" --trace -
+bad_says "--trace and --events name the same file" --events "$TMP/same.csv" --trace "$TMP/same.csv"
+ln -s same2.csv "$TMP/link.csv" && : > "$TMP/same2.csv"
+bad_says "name the same file" --events "$TMP/same2.csv" --speeds "$TMP/link.csv"
+"$BIN" --headless --seconds 0 --events /dev/null --trace /dev/null > /dev/null; check "two outputs to /dev/null are fine" $?
+
+# --- checks before simulating (issue 19): exit 2 with nothing simulated (no
+# summary on stdout) and no file left behind, an existing one untouched
+env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --headless --screenshot-window "$TMP/nowin.png" \
+    --events "$TMP/nowin.csv" > "$TMP/out" 2> "$TMP/err"
+status=$?
+[ "$status" = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ] &&
+    [ ! -e "$TMP/nowin.png" ] && [ ! -e "$TMP/nowin.csv" ]
+check "--screenshot-window without a display: exit 2 before simulating, no files" $?
+env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
+[ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ]
+check "--screenshot-window, no display, no --headless: exit 2 before simulating" $?
+DISPLAY=:7777 "$BIN" --headless --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
+[ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ] && [ ! -e "$TMP/nowin.png" ]
+check "--screenshot-window, an unreachable display: exit 2 before simulating" $?
+echo keep > "$TMP/keep.csv"
+bad_says "--speeds: /nonexistent-dir/s.txt" --screenshot "$TMP/left.png" --trace "$TMP/keep.csv" --events "$TMP/left.csv" \
+    --speeds /nonexistent-dir/s.txt
+[ ! -e "$TMP/left.png" ] && [ ! -e "$TMP/left.csv" ] && [ "$(cat "$TMP/keep.csv")" = keep ]
+check "a failed check leaves no new file and an existing one untouched" $?
+bad_says "--screenshot: $TMP" --screenshot "$TMP"
+bad_says "--screenshot: /nonexistent-dir" --game 8ball --screenshot /nonexistent-dir/x.png
+
+# --- stdout (issue 19): a failed write of --help, the summary or the JSON
+# is exit 1 with a message
+"$BIN" --help > "$TMP/out" && head -1 "$TMP/out" | grep -q '^usage: billiards'; check "--help: usage, exit 0" $?
+"$BIN" --help > /dev/full 2> "$TMP/err"
+[ $? = 1 ] && grep -q "standard output" "$TMP/err"; check "--help to a full disk: exit 1 and a message" $?
+"$BIN" --headless > /dev/full 2> "$TMP/err"
+[ $? = 1 ] && grep -q "standard output" "$TMP/err"; check "the summary to a full disk: exit 1 and a message" $?
+"$BIN" --headless --game 8ball --json > /dev/full 2> "$TMP/err"
+[ $? = 1 ] && grep -q "standard output" "$TMP/err"; check "8-ball JSON to a full disk: exit 1 and a message" $?
+"$BIN" --help >&- 2> "$TMP/err"
+[ $? = 1 ] && grep -q "standard output" "$TMP/err"; check "--help to a closed stdout: exit 1 and a message" $?
+
 # --- write errors: exit 1 and a message
 "$BIN" --headless --events /dev/full > /dev/null 2> "$TMP/err"
 [ $? = 1 ] && [ -s "$TMP/err" ]; check "a full disk for --events: exit 1 and a message" $?
