@@ -81,8 +81,9 @@ static void test_time_overflowing_double_is_range(void **state)
     assert_close(t, 1, 0);
 }
 
-/* The audit's cases (issue 10): magnitudes that differ by more than the
- * exponent range used to underflow together after the scaling. */
+/* The cases the audit of the statuses found (before the time of impact's
+ * exact statuses): magnitudes that differ by more than the exponent range
+ * used to underflow together after the scaling. */
 static double bits_d(uint64_t u)
 {
     double d;
@@ -308,5 +309,5 @@ int main(void)
         cmocka_unit_test(test_double_statuses_exact_at_any_magnitude_ratio),
         cmocka_unit_test(test_float_statuses_exact_at_any_magnitude_ratio),
     };
-    return cmocka_run_group_tests_name("time_of_impact", tests, NULL, NULL);
+    return c2d_run_tests("time_of_impact", tests);
 }
