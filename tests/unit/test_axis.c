@@ -267,5 +267,5 @@ int main(void)
         cmocka_unit_test(test_batch_matches_scalar_on_axis_aligned_lanes),
         cmocka_unit_test(test_newtons_cradle_is_exact_with_the_least_impacts),
     };
-    return cmocka_run_group_tests_name("axis", tests, NULL, NULL);
+    return c2d_run_tests("axis", tests);
 }

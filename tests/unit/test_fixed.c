@@ -196,5 +196,5 @@ int main(void)
         cmocka_unit_test(test_fixed_refusals_match_double_semantics),
         cmocka_unit_test(test_fixed_time_of_impact_within_bound),
     };
-    return cmocka_run_group_tests_name("fixed", tests, NULL, NULL);
+    return c2d_run_tests("fixed", tests);
 }
