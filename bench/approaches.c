@@ -80,7 +80,7 @@ c2d_status bench_noop(c2d_body *a, c2d_body *b, double restitution)
     return C2D_OK;
 }
 
-/* ------------------------------------------- issue 12's baselines */
+/* ------------------------------------------ the speed goals' baselines */
 
 c2d_status bench_seed_equalf(c2d_bodyf *a, c2d_bodyf *b, float restitution)
 {

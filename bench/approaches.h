@@ -33,7 +33,7 @@ c2d_status bench_trig(c2d_body *a, c2d_body *b, double restitution);
  * every scalar contender's timing includes. */
 c2d_status bench_noop(c2d_body *a, c2d_body *b, double restitution);
 
-/* Issue 12's baselines, transcribed as plainly as a user would write them. */
+/* The speed goals' baselines, transcribed as plainly as a user would write them. */
 
 /* bench_seed_equal in float (sqrtf), and both with the normal (nx, ny)
  * given instead of b.pos - a.pos (the seed's method fed the same normal as

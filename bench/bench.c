@@ -46,7 +46,7 @@ typedef struct results {
     double slow_share[2];
     int quiet_rounds[2], rounds_run[2]; /* the speed table's quiet rounds of those run (random, impacts) */
     roof_result roof[2];        /* double, float */
-    ratios rat;                 /* issue 12's interleaved ratios */
+    ratios rat;                 /* the speed goals' interleaved ratios */
     rough_stats rough[RK_COUNT][2]; /* plain, extreme */
     toi_stats toi[TK_COUNT][2][2];  /* [contender][double, float][ordinary, extreme] */
     toia_stats toia[TA_COUNT];      /* time of impact under acceleration */
@@ -467,7 +467,7 @@ static void goals(FILE *f, const results *res)
     const acc_stats *sx = &res->acc[seedm][1], *tx = &res->acc[trig][1];
     char b[8][64];
     int v, p, s, x;
-    fprintf(f, "### Goals (issue 12)\n\n");
+    fprintf(f, "### Goals (speed, same bits)\n\n");
     fprintf(f, "Every speed figure is a ratio timed interleaved in this one process. Each comparison is a group of "
                "passes over the same in-cache pairs (%d per pass; %d for the sets whose calls take microseconds); "
                "in each of %d rounds every group runs once, its passes one after another (order rotated, inputs "
@@ -585,8 +585,8 @@ static void why(FILE *f, const results *res)
     fprintf(f, "**Why** (callgrind counts from this run; the branch and store-forwarding findings measured at this "
                "commit with `valgrind --tool=cachegrind --branch-sim=yes` and scratch builds of lib/, not committed):\n\n");
     fprintf(f, "- `c2d_collide(f)` against the seed: on impacts it executes %s instructions against the seed's %s and "
-               "takes the same time (%.2fx; back to back %.2fx), short of the 0.77x the issue measured on its "
-               "machine. On the random mix the 22%% of pairs whose d cancels go out of line to the double-double "
+               "takes the same time (%.2fx; back to back %.2fx), short of the 0.77x measured when the goals were "
+               "set, on another machine. On the random mix the 22%% of pairs whose d cancels go out of line to the double-double "
                "tier, and with the separating pairs they make the front end's branches data-dependent: %.2fx on "
                "fresh pairs, %.2fx when the same pairs run back to back and the predictor has learnt them.\n",
             instr(ir_of(r, &ci[GP_LIB], 1), b[0]), instr(ir_of(r, &ci[GP_SEED], 1), b[1]), ci[GP_LIB].ratio,
@@ -635,8 +635,9 @@ static void why(FILE *f, const results *res)
         fprintf(f, "- The time of impact on extreme pairs (%.0fx): about 40%% of them (the components at independent "
                    "exponents) reach `c2d_toi_exact`, whose extended products (`c2d_acc_product`, `c2d_compress`: "
                    "over 90%% of the instructions) take some 250,000 instructions each; %s per call on average "
-                   "against %s before, when %d of %d such statuses were wrong (referee table below). Issue 10's "
-                   "exact statuses, at a price a cheaper exact sign (fewer, shorter expansions) could lower.\n",
+                   "against %s before, when %d of %d such statuses were wrong (referee table below). The "
+                   "exact statuses the audit of the statuses asked for, at a price a cheaper exact sign (fewer, "
+                   "shorter expansions) could lower.\n",
                 tx[1].ratio, instr(ir_of(r, &tx[1], 1), b[0]), instr(ir_of(r, &tx[0], 1), b[1]),
                 res->toi[TK_OLD][0][1].wrong_status, res->toi[TK_OLD][0][1].n);
     }

@@ -16,7 +16,7 @@ BENCH_C := bench/bench.c bench/accuracy.c bench/contenders.c bench/timing.c benc
   referee/ref_toi_accel.c referee/cases_toi_accel.c \
   $(HARNESS_SRC)
 BENCH_HDR := $(wildcard bench/*.h referee/*.h) $(HARNESS_HDR) $(LIB_HDR)
-# The library before issue 12 (bench/old.h names the commit), for the
+# The library before the speed work (bench/old.h names the commit), for the
 # before/after table: its own object, global symbols renamed old_*.
 BENCH_OLD_REV := $(shell sed -n 's/^\#define BENCH_OLD_REV "\(.*\)"/\1/p' bench/old.h)
 BENCH_OLD_DIR := $(BENCH_DIR)/old

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The library as it was before issue 12's work (commit BENCH_OLD_REV
+/* The library as it was before the speed work (commit BENCH_OLD_REV
  * below), built into the benchmark from `git archive` with its global
  * symbols renamed old_* (objcopy --redefine-syms), so the old and the new
  * calls can be timed interleaved in one process.  The types are the
@@ -11,7 +11,7 @@
 #include "collide2d.h"
 
 /* The commit the old library is taken from (read by bench/bench.mk too):
- * the start of issue 12's work, before the front end. */
+ * the start of the speed work, before the front end. */
 #define BENCH_OLD_REV "ec2e2a8"
 
 long old_c2d_version(void);

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Interleaved ratios (issue 12's goals, the axis-aligned branch, the rough
+/* Interleaved ratios (the speed goals, the axis-aligned branch, the rough
  * model and the library before and after): each comparison is a group of
  * passes over the same in-cache pairs, timed one after another in every
  * round (the order rotated from round to round, inputs restored untimed
@@ -776,9 +776,10 @@ void ratios_measure(ratios *o, int rounds, int n, int callgrind)
 /* ------------------------------------------------------------ checks */
 
 /* For the smoke run: the old library (when linked) gives the new one's
- * bits on ordinary pairs off the axes (issue 12: the front end changed no
- * result; only axis-aligned impacts were changed, to correctly rounded), and
- * the textbook time of impact agrees with the library on ordinary pairs.
+ * bits on ordinary pairs off the axes (the speed work's front end changed
+ * no result; only axis-aligned impacts were changed, to correctly
+ * rounded), and the textbook time of impact agrees with the library on
+ * ordinary pairs.
  * Returns the number of disagreements. */
 int ratios_selfcheck(int n, int *compared)
 {

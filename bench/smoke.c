@@ -84,7 +84,7 @@ static double tolerance(const contender *k)
 static void check_contenders_on_hand_cases(void)
 {
     char what[200];
-    int i, j, q;
+    int i, j, q, lib_status = 0, lib_vel = 0, ok_cases = 0;
     for (j = 0; j < bench_ncontenders; j++) {
         const contender *k = &bench_contenders[j];
         for (i = 0; i < NHAND; i++) {
@@ -107,12 +107,21 @@ static void check_contenders_on_hand_cases(void)
                 continue;
             }
             check(s == h->status, what);
+            lib_status += k->fn == c2d_collide;
             if (s != C2D_OK && h->status != C2D_OK) continue;
             for (q = 0; q < 4; q++) close &= fabs(got[q] - h->v[q]) <= tolerance(k);
             snprintf(what, sizeof what, "%s: velocities on %s", k->id, h->name);
             check(close, what);
+            lib_vel += k->fn == c2d_collide;
         }
     }
+    /* The loops skip pairs a contender does not claim (applies) and the
+     * velocities of refused cases: c2d_collide's row claims every hand case
+     * and has its velocities checked on each one whose status is OK. */
+    for (i = 0; i < NHAND; i++) ok_cases += hand[i].status == C2D_OK;
+    snprintf(what, sizeof what, "c2d_collide checked on all %d hand cases (%d), velocities on the %d OK ones (%d)", NHAND,
+             lib_status, ok_cases, lib_vel);
+    check(lib_status == NHAND && lib_vel == ok_cases, what);
 }
 
 /* Every contender runs on random inputs of each kind; the library rows keep
@@ -121,7 +130,7 @@ static void check_random_sets(void)
 {
     case_set sets[SET_COUNT];
     char what[200];
-    int j, x;
+    int j, x, lib_sets = 0;
     sets_make(sets, 300, 300, 7);
     for (j = 0; j < bench_ncontenders; j++) {
         const contender *k = &bench_contenders[j];
@@ -134,6 +143,7 @@ static void check_random_sets(void)
             snprintf(what, sizeof what, "%s runs on %s inputs", k->id, s->name);
             check(st.n == s->n && st.evaluated > 0, what);
             if (!is_lib) continue;
+            lib_sets += k->fn == c2d_collide;
             snprintf(what, sizeof what, "%s: statuses on %s inputs", k->id, s->name);
             check(st.wrong_status == 0, what);
             snprintf(what, sizeof what, "%s: batch bit-identical to scalar on %s inputs", k->id, s->name);
@@ -143,6 +153,11 @@ static void check_random_sets(void)
             check(st.max_ulp <= 16, what);
         }
     }
+    /* The loop skips the sets a contender has no inputs for and the bounds
+     * of rows not the library's: c2d_collide's row has both, plain and
+     * extreme. */
+    snprintf(what, sizeof what, "c2d_collide checked on the plain and the extreme inputs (%d of 2)", lib_sets);
+    check(lib_sets == 2, what);
     sets_free(sets);
 }
 
@@ -283,6 +298,6 @@ int bench_smoke(void)
     check_rough();
     check_toi();
     check_toi_accel();
-    c2d_put_tally(NULL, &tally);
+    c2d_put_tally("bench-smoke", &tally);
     return c2d_tally_status(&tally);
 }

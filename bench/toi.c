@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* The time of impact against the exact referee (referee/referee.c: status
- * in rationals, t in 256-bit MPFR): the library, the library before issue
- * 12 (bench/old.h) and the textbook quadratic, on the ordinary and extreme
- * pairs the speed comparisons use (ratio.c gen_toi_case).  What the 3x of
- * the time-of-impact goal buys. */
+ * in rationals, t in 256-bit MPFR): the library, the library before the
+ * speed work (bench/old.h) and the textbook quadratic, on the ordinary and
+ * extreme pairs the speed comparisons use (ratio.c gen_toi_case).  What the
+ * 3x of the time-of-impact goal buys. */
 #include "bench.h"
 
 #include <float.h>

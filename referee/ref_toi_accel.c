@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* referee_toi_accel.c - see referee_toi_accel.h. */
+/* ref_toi_accel.c - see ref_toi_accel.h. */
 #include "ref_toi_accel.h"
 
 #include <gmp.h>

@@ -5,7 +5,8 @@
 # own headers, `cc -std=c99 -c lib/*.c` with no other flag, no outside
 # symbols but sqrt/sqrtf, no file that includes itself or a .c file, and the
 # amalgamated single file (scripts/amalgamate.sh) held to the same contract.
-# Usage: check_build.sh OUTDIR AMALGAMATION.  Prints "N passed, N failed".
+# Usage: check_build.sh OUTDIR AMALGAMATION.  Prints "check-build: N passed,
+# N failed".
 set -u
 out=${1:-build/check-build}
 all=${2:-build/collide2d_all.c}

@@ -24,7 +24,8 @@ harness() {
         done
 }
 if ! harness; then
-    echo "determinism: 0 passed, 1 failed (hash_vectors.c does not build)"
+    c2d_failed "hash_vectors.c does not build"
+    c2d_summary
     exit 1
 fi
 # The variants' hash and the models' (hash_vectors prints both), "V/M":

@@ -312,9 +312,10 @@ static void raw32(uint32_t v)
     for (k = 0; k < 4; k++) byte((int)((v >> (8 * k)) & 0xFF));
 }
 
-/* Issue 10's statuses at extreme magnitude ratios (the miss distance, the
- * radius and d.v underflowing or rounding together after the scaling):
- * two misses that must be SEPARATING and an overlap that must be OK at 0. */
+/* The time-of-impact cases the audit of the statuses found, at extreme
+ * magnitude ratios (the miss distance, the radius and d.v underflowing or
+ * rounding together after the scaling): two misses that must be SEPARATING
+ * and an overlap that must be OK at 0. */
 static void scene_toi_ratios(void)
 {
     static const uint64_t d[2][6] = {

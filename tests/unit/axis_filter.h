@@ -254,5 +254,5 @@ int main(void)
         cmocka_unit_test(test_filter_declines_near_midpoints),
         cmocka_unit_test(test_filter_is_right_or_declines_near_underflow),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return c2d_run_tests(FILTER_FLOAT ? "axis_filterf" : "axis_filter", tests);
 }

@@ -39,4 +39,33 @@
 
 #define assert_bits_equal(a, b) assert_memory_equal(&(a), &(b), sizeof(a))
 
+/* A loop that skips cases (`continue`) states how many it checked: `got`,
+ * the cases that reached its checks, against `want`, what its seeded
+ * generator gives (the comment at each use says where `want` comes from). */
+#define assert_cases_checked(got, want)                                       \
+    do {                                                                      \
+        long got_ = (long)(got), want_ = (long)(want);                        \
+        if (got_ != want_) {                                                  \
+            print_error("%ld cases checked, want %ld\n", got_, want_);       \
+            fail();                                                           \
+        }                                                                     \
+    } while (0)
+
+/* Runs a test program's group and ends with the closing line every test
+ * program prints, "NAME: N passed, N failed" (harness.h), N counting tests,
+ * after cmocka's own summary; returns the exit status.  main ends with
+ * return c2d_run_tests("NAME", tests), tests the array of the group. */
+static inline int c2d_cmocka_tally(const char *name, size_t count, int failed)
+{
+    c2d_tally t;
+    /* cmocka returns how many tests failed, or a negative number when the
+     * group could not run: then none passed. */
+    t.failed = failed < 0 || (size_t)failed > count ? (int)count : failed;
+    t.passed = (int)count - t.failed;
+    c2d_put_tally(name, &t);
+    return c2d_tally_status(&t);
+}
+#define c2d_run_tests(name, tests) \
+    c2d_cmocka_tally(name, sizeof(tests) / sizeof((tests)[0]), cmocka_run_group_tests_name(name, tests, NULL, NULL))
+
 #endif

@@ -172,5 +172,5 @@ int main(void)
         cmocka_unit_test(test_heavy_body_tiny_change_is_accurate_on_its_own_scale),
         cmocka_unit_test(test_grazing_contact_is_resolved_on_the_light_bodys_scale),
     };
-    return cmocka_run_group_tests_name("accuracy", tests, NULL, NULL);
+    return c2d_run_tests("accuracy", tests);
 }

@@ -206,5 +206,5 @@ int main(void)
         cmocka_unit_test(test_float_batch_is_bit_identical_to_scalar_calls),
         cmocka_unit_test(test_walls_in_the_batch_are_the_scalar_call),
     };
-    return cmocka_run_group_tests_name("batch", tests, NULL, NULL);
+    return c2d_run_tests("batch", tests);
 }

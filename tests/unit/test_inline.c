@@ -92,5 +92,5 @@ int main(void)
         cmocka_unit_test(test_inline_float_is_the_library_call),
         cmocka_unit_test(test_inline_refuses_like_the_library),
     };
-    return cmocka_run_group_tests_name("inline", tests, NULL, NULL);
+    return c2d_run_tests("inline", tests);
 }

@@ -203,5 +203,5 @@ int main(void)
         cmocka_unit_test(test_double_matches_the_exact_referee_in_every_family),
         cmocka_unit_test(test_float_matches_the_exact_referee_in_every_family),
     };
-    return cmocka_run_group_tests_name("time_of_impact_accel", tests, NULL, NULL);
+    return c2d_run_tests("time_of_impact_accel", tests);
 }

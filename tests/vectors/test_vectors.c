@@ -78,5 +78,5 @@ int main(void)
         cmocka_unit_test(test_float_accel_vectors_pass),
         cmocka_unit_test(test_fixed_vectors_pass),
     };
-    return cmocka_run_group_tests_name("vectors", tests, NULL, NULL);
+    return c2d_run_tests("vectors", tests);
 }
