@@ -85,14 +85,34 @@ $(B)/libcollide2d.so: $(SHARED)
 # includedir relative to ${prefix} when they lie under it, so pkg-config
 # --define-prefix works on a moved tree.  Regenerated on every make and
 # replaced only when it differs: a change of PREFIX, LIBDIR or INCLUDEDIR
-# rebuilds it, an unchanged one keeps its time stamp.
-pc_dir = $(if $(filter $(PREFIX)/%,$(1)),$${prefix}/$(patsubst $(PREFIX)/%,%,$(1)),$(1))
+# rebuilds it, an unchanged one keeps its time stamp.  The directories are
+# compared in the shell, not by make's word functions: they may hold spaces.
+# C2D_SH_PATHS: shell functions for recipes, `rel DIR` (DIR as ${prefix}/...
+# when under PREFIX) and `esc TEXT` (TEXT as a sed replacement, | delimiter).
+C2D_SH_PATHS = prefix='$(PREFIX)'; \
+  rel() { case $$1 in "$$prefix"/*) printf '%s' "\$${prefix}/$${1\#"$$prefix"/}";; *) printf '%s' "$$1";; esac; }; \
+  esc() { printf '%s' "$$1" | sed 's/[\\|&]/\\&/g'; }
 $(B)/collide2d.pc: collide2d.pc.in FORCE
 	@mkdir -p $(@D)
-	@sed -e 's|@C2D_PC_PREFIX@|$(PREFIX)|' -e 's|@C2D_PC_LIBDIR@|$(call pc_dir,$(LIBDIR))|' \
-	  -e 's|@C2D_PC_INCLUDEDIR@|$(call pc_dir,$(INCLUDEDIR))|' -e 's|@C2D_PC_VERSION@|$(VERSION)|' \
+	@$(C2D_SH_PATHS); \
+	sed -e "s|@C2D_PC_PREFIX@|$$(esc "$$prefix")|" -e "s|@C2D_PC_LIBDIR@|$$(esc "$$(rel '$(LIBDIR)')")|" \
+	  -e "s|@C2D_PC_INCLUDEDIR@|$$(esc "$$(rel '$(INCLUDEDIR)')")|" -e 's|@C2D_PC_VERSION@|$(VERSION)|' \
 	  -e 's|@C2D_PC_CFLAGS@||' collide2d.pc.in > $@.tmp
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@ && echo "wrote $@ (prefix $(PREFIX))"; fi
+
+# The CMake package, as `cmake --install` writes it (cmake/package.sh):
+# collide2dConfig.cmake, collide2dConfigVersion.cmake and
+# collide2dTargets.cmake (collide2d::collide2d, the shared library, and
+# collide2d::collide2d_static), relative to LIBDIR/cmake/collide2d.
+# Regenerated like collide2d.pc.  The pointer size, for the version file's
+# 32/64-bit check, is the compiler's (empty, so no check, if it does not say).
+CMAKE_PKG := $(B)/cmake
+CMAKE_PKG_FILES := collide2dConfig.cmake collide2dConfigVersion.cmake collide2dTargets.cmake
+CMAKEDIR = $(LIBDIR)/cmake/collide2d
+cmake-package:
+	@sh cmake/package.sh $(CMAKE_PKG) '$(PREFIX)' '$(LIBDIR)' '$(INCLUDEDIR)' $(VERSION) $(SONAME) \
+	  "$$($(CC) $(CFLAGS) -dM -E - </dev/null 2>/dev/null | sed -n 's/^#define __SIZEOF_POINTER__ //p')"
+.PHONY: cmake-package
 
 # The whole library as one self-contained source, for firmware trees that
 # take one .c file beside the header (scripts/amalgamate.sh).
@@ -103,26 +123,30 @@ $(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(LIB_TEMPLATES)
 
 # Directories install creates are listed in build/install-dirs.txt, so
 # uninstall removes those (once empty) and no other (scripts/installdirs.sh).
+# Every path is quoted: PREFIX, DESTDIR and the directories may hold spaces
+# (not quotes).
 MAN_PAGES := $(wildcard man/*.3)
 MAN3 = $(DESTDIR)$(MANDIR)/man3
-INSTALL_DIRS = $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR) $(MAN3)
-install: lib
+INSTALL_DIRS = "$(DESTDIR)$(LIBDIR)/pkgconfig" "$(DESTDIR)$(CMAKEDIR)" "$(DESTDIR)$(INCLUDEDIR)" "$(MAN3)"
+install: lib cmake-package
 	sh scripts/installdirs.sh create build/install-dirs.txt $(INSTALL_DIRS)
-	install -m 644 $(LIB_HDR) $(DESTDIR)$(INCLUDEDIR)/collide2d.h
-	install -m 644 $(STATIC) $(DESTDIR)$(LIBDIR)/libcollide2d.a
-	install -m 755 $(SHARED) $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)
-	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
-	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcollide2d.so
-	install -m 644 $(B)/collide2d.pc $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
-	install -m 644 $(MAN_PAGES) $(MAN3)
-	sh man/links.sh $(MAN_PAGES) | while read -r page name; do ln -sf $$page $(MAN3)/$$name || exit 1; done
+	install -m 644 $(LIB_HDR) "$(DESTDIR)$(INCLUDEDIR)/collide2d.h"
+	install -m 644 $(STATIC) "$(DESTDIR)$(LIBDIR)/libcollide2d.a"
+	install -m 755 $(SHARED) "$(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)"
+	ln -sf libcollide2d.so.$(VERSION) "$(DESTDIR)$(LIBDIR)/$(SONAME)"
+	ln -sf libcollide2d.so.$(VERSION) "$(DESTDIR)$(LIBDIR)/libcollide2d.so"
+	install -m 644 $(B)/collide2d.pc "$(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc"
+	install -m 644 $(addprefix $(CMAKE_PKG)/,$(CMAKE_PKG_FILES)) "$(DESTDIR)$(CMAKEDIR)"
+	install -m 644 $(MAN_PAGES) "$(MAN3)"
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do ln -sf "$$page" "$(MAN3)/$$name" || exit 1; done
 
 uninstall:
-	rm -f $(DESTDIR)$(INCLUDEDIR)/collide2d.h $(DESTDIR)$(LIBDIR)/libcollide2d.a \
-	  $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME) \
-	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc \
-	  $(addprefix $(MAN3)/,$(notdir $(MAN_PAGES)))
-	sh man/links.sh $(MAN_PAGES) | while read -r page name; do rm -f $(MAN3)/$$name; done
+	rm -f "$(DESTDIR)$(INCLUDEDIR)/collide2d.h" "$(DESTDIR)$(LIBDIR)/libcollide2d.a" \
+	  "$(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)" "$(DESTDIR)$(LIBDIR)/$(SONAME)" \
+	  "$(DESTDIR)$(LIBDIR)/libcollide2d.so" "$(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc"
+	for f in $(CMAKE_PKG_FILES); do rm -f "$(DESTDIR)$(CMAKEDIR)/$$f"; done
+	for f in $(notdir $(MAN_PAGES)); do rm -f "$(MAN3)/$$f"; done
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do rm -f "$(MAN3)/$$name"; done
 	sh scripts/installdirs.sh remove build/install-dirs.txt $(INSTALL_DIRS)
 
 clean:
