@@ -37,7 +37,6 @@ endif
 LIB_SRC := $(wildcard lib/*.c)
 LIB_HDR := include/collide2d.h
 LIB_TEMPLATES := $(wildcard lib/*.h lib/real/*.h lib/real/*/*.h)
-LIB_DEPS := $(LIB_HDR) $(LIB_TEMPLATES)
 LIB_OBJ := $(patsubst lib/%.c,$(B)/obj/%.o,$(LIB_SRC))
 LIB_PIC := $(patsubst lib/%.c,$(B)/obj/%.pic.o,$(LIB_SRC))
 STATIC := $(B)/libcollide2d.a
@@ -45,18 +44,31 @@ SONAME := libcollide2d.so.$(VERSION_MAJOR)
 SHARED := $(B)/libcollide2d.so.$(VERSION)
 AMALGAMATION := $(B)/collide2d_all.c
 
-FORCE:
-.PHONY: all lib amalgamate test test-unit check-deps-test check-vectors check-build vectors install uninstall clean demo play bench cross test-mcu lint fuzz
+# `make` alone builds the libraries and collide2d.pc (the first rule, and
+# named, so that no rule of an included file or a .d file takes its place).
+.DEFAULT_GOAL := all
 all: lib
 lib: $(STATIC) $(B)/libcollide2d.so $(B)/collide2d.pc
+FORCE:
+.PHONY: all lib amalgamate test test-unit check-deps-test check-vectors check-build vectors install uninstall clean demo play bench cross test-mcu lint fuzz
 
-$(B)/obj/%.o: lib/%.c $(LIB_DEPS)
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -c $< -o $@
+# Header dependencies: every compile of one source writes its .d beside the
+# object (-MMD: the headers it included, not system ones; -MP: an empty rule
+# per header, so a deleted header is no error), included at the end of this
+# file and each fragment.  gcc and clang, given several sources and -o, write
+# one .d with only the last source's headers, so a command that compiles and
+# links several sources at once (fragments) takes MULTI_DEPS instead:
+#   $(call MULTI_DEPS,COMPILER FLAGS,SOURCES)  writes $@.d for all of them
+DEPFLAGS = -MMD -MP
+MULTI_DEPS = $(1) -MM -MP -MT $@ $(2) >$@.d.tmp && mv $@.d.tmp $@.d
 
-$(B)/obj/%.pic.o: lib/%.c $(LIB_DEPS)
+$(B)/obj/%.o: lib/%.c
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -fPIC -fvisibility=default -c $< -o $@
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -c $< -o $@
+
+$(B)/obj/%.pic.o: lib/%.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -fPIC -fvisibility=default -c $< -o $@
 
 $(STATIC): $(LIB_OBJ)
 	@rm -f $@
@@ -73,14 +85,34 @@ $(B)/libcollide2d.so: $(SHARED)
 # includedir relative to ${prefix} when they lie under it, so pkg-config
 # --define-prefix works on a moved tree.  Regenerated on every make and
 # replaced only when it differs: a change of PREFIX, LIBDIR or INCLUDEDIR
-# rebuilds it, an unchanged one keeps its time stamp.
-pc_dir = $(if $(filter $(PREFIX)/%,$(1)),$${prefix}/$(patsubst $(PREFIX)/%,%,$(1)),$(1))
+# rebuilds it, an unchanged one keeps its time stamp.  The directories are
+# compared in the shell, not by make's word functions: they may hold spaces.
+# C2D_SH_PATHS: shell functions for recipes, `rel DIR` (DIR as ${prefix}/...
+# when under PREFIX) and `esc TEXT` (TEXT as a sed replacement, | delimiter).
+C2D_SH_PATHS = prefix='$(PREFIX)'; \
+  rel() { case $$1 in "$$prefix"/*) printf '%s' "\$${prefix}/$${1\#"$$prefix"/}";; *) printf '%s' "$$1";; esac; }; \
+  esc() { printf '%s' "$$1" | sed 's/[\\|&]/\\&/g'; }
 $(B)/collide2d.pc: collide2d.pc.in FORCE
 	@mkdir -p $(@D)
-	@sed -e 's|@C2D_PC_PREFIX@|$(PREFIX)|' -e 's|@C2D_PC_LIBDIR@|$(call pc_dir,$(LIBDIR))|' \
-	  -e 's|@C2D_PC_INCLUDEDIR@|$(call pc_dir,$(INCLUDEDIR))|' -e 's|@C2D_PC_VERSION@|$(VERSION)|' \
+	@$(C2D_SH_PATHS); \
+	sed -e "s|@C2D_PC_PREFIX@|$$(esc "$$prefix")|" -e "s|@C2D_PC_LIBDIR@|$$(esc "$$(rel '$(LIBDIR)')")|" \
+	  -e "s|@C2D_PC_INCLUDEDIR@|$$(esc "$$(rel '$(INCLUDEDIR)')")|" -e 's|@C2D_PC_VERSION@|$(VERSION)|' \
 	  -e 's|@C2D_PC_CFLAGS@||' collide2d.pc.in > $@.tmp
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@ && echo "wrote $@ (prefix $(PREFIX))"; fi
+
+# The CMake package, as `cmake --install` writes it (cmake/package.sh):
+# collide2dConfig.cmake, collide2dConfigVersion.cmake and
+# collide2dTargets.cmake (collide2d::collide2d, the shared library, and
+# collide2d::collide2d_static), relative to LIBDIR/cmake/collide2d.
+# Regenerated like collide2d.pc.  The pointer size, for the version file's
+# 32/64-bit check, is the compiler's (empty, so no check, if it does not say).
+CMAKE_PKG := $(B)/cmake
+CMAKE_PKG_FILES := collide2dConfig.cmake collide2dConfigVersion.cmake collide2dTargets.cmake
+CMAKEDIR = $(LIBDIR)/cmake/collide2d
+cmake-package:
+	@sh cmake/package.sh $(CMAKE_PKG) '$(PREFIX)' '$(LIBDIR)' '$(INCLUDEDIR)' $(VERSION) $(SONAME) \
+	  "$$($(CC) $(CFLAGS) -dM -E - </dev/null 2>/dev/null | sed -n 's/^#define __SIZEOF_POINTER__ //p')"
+.PHONY: cmake-package
 
 # The whole library as one self-contained source, for firmware trees that
 # take one .c file beside the header (scripts/amalgamate.sh).
@@ -91,26 +123,30 @@ $(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(LIB_TEMPLATES)
 
 # Directories install creates are listed in build/install-dirs.txt, so
 # uninstall removes those (once empty) and no other (scripts/installdirs.sh).
+# Every path is quoted: PREFIX, DESTDIR and the directories may hold spaces
+# (not quotes).
 MAN_PAGES := $(wildcard man/*.3)
 MAN3 = $(DESTDIR)$(MANDIR)/man3
-INSTALL_DIRS = $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR) $(MAN3)
-install: lib
+INSTALL_DIRS = "$(DESTDIR)$(LIBDIR)/pkgconfig" "$(DESTDIR)$(CMAKEDIR)" "$(DESTDIR)$(INCLUDEDIR)" "$(MAN3)"
+install: lib cmake-package
 	sh scripts/installdirs.sh create build/install-dirs.txt $(INSTALL_DIRS)
-	install -m 644 $(LIB_HDR) $(DESTDIR)$(INCLUDEDIR)/collide2d.h
-	install -m 644 $(STATIC) $(DESTDIR)$(LIBDIR)/libcollide2d.a
-	install -m 755 $(SHARED) $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)
-	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
-	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcollide2d.so
-	install -m 644 $(B)/collide2d.pc $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc
-	install -m 644 $(MAN_PAGES) $(MAN3)
-	sh man/links.sh $(MAN_PAGES) | while read -r page name; do ln -sf $$page $(MAN3)/$$name || exit 1; done
+	install -m 644 $(LIB_HDR) "$(DESTDIR)$(INCLUDEDIR)/collide2d.h"
+	install -m 644 $(STATIC) "$(DESTDIR)$(LIBDIR)/libcollide2d.a"
+	install -m 755 $(SHARED) "$(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)"
+	ln -sf libcollide2d.so.$(VERSION) "$(DESTDIR)$(LIBDIR)/$(SONAME)"
+	ln -sf libcollide2d.so.$(VERSION) "$(DESTDIR)$(LIBDIR)/libcollide2d.so"
+	install -m 644 $(B)/collide2d.pc "$(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc"
+	install -m 644 $(addprefix $(CMAKE_PKG)/,$(CMAKE_PKG_FILES)) "$(DESTDIR)$(CMAKEDIR)"
+	install -m 644 $(MAN_PAGES) "$(MAN3)"
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do ln -sf "$$page" "$(MAN3)/$$name" || exit 1; done
 
 uninstall:
-	rm -f $(DESTDIR)$(INCLUDEDIR)/collide2d.h $(DESTDIR)$(LIBDIR)/libcollide2d.a \
-	  $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME) \
-	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc \
-	  $(addprefix $(MAN3)/,$(notdir $(MAN_PAGES)))
-	sh man/links.sh $(MAN_PAGES) | while read -r page name; do rm -f $(MAN3)/$$name; done
+	rm -f "$(DESTDIR)$(INCLUDEDIR)/collide2d.h" "$(DESTDIR)$(LIBDIR)/libcollide2d.a" \
+	  "$(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)" "$(DESTDIR)$(LIBDIR)/$(SONAME)" \
+	  "$(DESTDIR)$(LIBDIR)/libcollide2d.so" "$(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc"
+	for f in $(CMAKE_PKG_FILES); do rm -f "$(DESTDIR)$(CMAKEDIR)/$$f"; done
+	for f in $(notdir $(MAN_PAGES)); do rm -f "$(MAN3)/$$f"; done
+	sh man/links.sh $(MAN_PAGES) | while read -r page name; do rm -f "$(MAN3)/$$name"; done
 	sh scripts/installdirs.sh remove build/install-dirs.txt $(INSTALL_DIRS)
 
 clean:
@@ -125,27 +161,35 @@ TEST_DEPS := libcmocka-dev libgmp-dev libmpfr-dev pkg-config
 TEST_SRCS := $(wildcard tests/unit/test_*.c tests/vectors/test_*.c)
 TEST_BINS := $(patsubst %.c,$(B)/tests/%,$(notdir $(TEST_SRCS)))
 HARNESS_SRC := $(wildcard tests/harness/*.c)
-HARNESS_HDR := $(wildcard tests/harness/*.h)
 VECTORS_SRC := tests/vectors/vectors.c $(wildcard tests/vectors/check_*.c)
 TEST_SUPPORT := referee/referee.c referee/cases.c referee/ref_rough.c referee/cases_rough.c referee/ref_toi_accel.c referee/cases_toi_accel.c $(VECTORS_SRC) $(HARNESS_SRC)
-TEST_SUPPORT_HDR := $(wildcard referee/*.h tests/unit/*.h tests/vectors/*.h) $(HARNESS_HDR)
 TEST_INC := -Ireferee -Itests/harness -Itests/unit -Itests/vectors
 
 check-deps-test:
 	@sh scripts/deps.sh $(TEST_DEPS)
 
-$(B)/tests/%: tests/unit/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
+# Every source compiled once to its own object (and .d) under
+# $(B)/tests/obj/, the support objects shared by every program.
+TEST_OBJ_DIR := $(B)/tests/obj
+TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(TEST_OBJ_DIR)/%.o)
+TEST_MAIN_OBJ := $(TEST_SRCS:%.c=$(TEST_OBJ_DIR)/%.o)
+$(TEST_OBJ_DIR)/%.o: %.c
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion $(TEST_INC) -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Wno-conversion $(TEST_INC) -c $< -o $@
 
-$(B)/tests/%: tests/vectors/%.c $(TEST_SUPPORT) $(TEST_SUPPORT_HDR) $(STATIC)
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion $(TEST_INC) -o $@ $< $(TEST_SUPPORT) $(STATIC) -lcmocka -lmpfr -lgmp -lm
+# Each program: its own object (tests/unit/ or tests/vectors/), then the rest.
+$(foreach s,$(TEST_SRCS),$(eval $(B)/tests/$(basename $(notdir $(s))): $(TEST_OBJ_DIR)/$(s:.c=.o)))
+$(TEST_BINS): $(TEST_SUPPORT_OBJ) $(STATIC)
+	$(CC) $(ALL_CFLAGS) -o $@ $(filter $(TEST_MAIN_OBJ),$^) $(TEST_SUPPORT_OBJ) $(STATIC) -lcmocka -lmpfr -lgmp -lm
 
-GEN_VECTORS_REF := referee/referee.c referee/ref_rough.c referee/ref_toi_accel.c
-$(B)/gen_vectors: tests/vectors/gen_vectors.c $(GEN_VECTORS_REF) $(wildcard referee/*.h) tests/vectors/vectors.h $(LIB_HDR)
+GEN_VECTORS_SRC := tests/vectors/gen_vectors.c referee/referee.c referee/ref_rough.c referee/ref_toi_accel.c
+GEN_VECTORS_OBJ := $(GEN_VECTORS_SRC:%.c=$(B)/gen/%.o)
+$(B)/gen/%.o: %.c
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -std=c99 -Iinclude -Ireferee -Itests/vectors -o $@ tests/vectors/gen_vectors.c $(GEN_VECTORS_REF) -lmpfr -lgmp -lm
+	$(CC) $(CFLAGS) -std=c99 $(DEPFLAGS) -Iinclude -Ireferee -Itests/vectors -c $< -o $@
+$(B)/gen_vectors: $(GEN_VECTORS_OBJ)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -o $@ $(GEN_VECTORS_OBJ) -lmpfr -lgmp -lm
 
 # Regenerate the shared vector table from the exact referee.
 vectors: check-deps-test $(B)/gen_vectors
@@ -162,7 +206,7 @@ check-build: $(AMALGAMATION)
 
 $(B)/tests/cxx_smoke: tests/unit/cxx_smoke.cpp $(STATIC)
 	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -std=c++11 -pedantic -Wall -Wextra -Werror -Iinclude -o $@ $< $(STATIC) -lm
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) $(DEPFLAGS) -std=c++11 -pedantic -Wall -Wextra -Werror -Iinclude -o $@ $< $(STATIC) -lm
 
 test-unit: check-deps-test
 	@$(MAKE) --no-print-directory $(TEST_BINS) $(B)/tests/cxx_smoke
@@ -178,6 +222,7 @@ LINT_TARGETS :=
 -include tests/mcu/mcu.mk
 -include tests/fuzz/fuzz.mk
 -include tests/build/lint.mk
+-include tests/build/make.mk
 -include tests/consumers/consumers.mk
 -include examples/examples.mk
 -include python/python.mk
@@ -189,3 +234,7 @@ lint: $(LINT_TARGETS)
 
 test: test-unit $(TEST_TARGETS)
 	@echo "make test: all passed"
+
+# The header dependencies of every object and program built above.
+-include $(LIB_OBJ:.o=.d) $(LIB_PIC:.o=.d) $(TEST_SUPPORT_OBJ:.o=.d) $(TEST_MAIN_OBJ:.o=.d) \
+  $(GEN_VECTORS_OBJ:.o=.d) $(B)/tests/cxx_smoke.d

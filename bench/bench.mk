@@ -15,7 +15,6 @@ BENCH_C := bench/bench.c bench/accuracy.c bench/contenders.c bench/timing.c benc
   bench/approaches.c bench/ratio.c bench/rough.c bench/toi.c bench/quartic.c bench/toi_accel.c referee/referee.c referee/cases.c referee/ref_rough.c referee/cases_rough.c \
   referee/ref_toi_accel.c referee/cases_toi_accel.c \
   $(HARNESS_SRC)
-BENCH_HDR := $(wildcard bench/*.h referee/*.h) $(HARNESS_HDR) $(LIB_HDR)
 # The library before the speed work (bench/old.h names the commit), for the
 # before/after table: its own object, global symbols renamed old_*.
 BENCH_OLD_REV := $(shell sed -n 's/^\#define BENCH_OLD_REV "\(.*\)"/\1/p' bench/old.h)
@@ -38,13 +37,14 @@ check-deps-test-bench:
 
 # Referee and generators come from referee/, the batch storage and checks
 # and the pass/fail line from tests/harness/ (shared with the unit tests).
-$(BENCH_DIR)/obj/%.o: %.c $(BENCH_HDR)
+# Header dependencies: the .d files (DEPFLAGS), included at the end.
+$(BENCH_DIR)/obj/%.o: %.c
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion -Ireferee -Itests/harness -Ibench -c $< -o $@
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Wno-conversion -Ireferee -Itests/harness -Ibench -c $< -o $@
 
-$(BENCH_DIR)/obj/bench/box2d_contender.o: bench/box2d_contender.cpp bench/box2d_contender.h $(LIB_HDR)
+$(BENCH_DIR)/obj/bench/box2d_contender.o: bench/box2d_contender.cpp
 	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS) -std=c++17 -Wall -Wextra -ffp-contract=off $(SAN_FLAGS) -Iinclude -c $< -o $@
+	$(CXX) $(CXXFLAGS) $(DEPFLAGS) -std=c++17 -Wall -Wextra -ffp-contract=off $(SAN_FLAGS) -Iinclude -c $< -o $@
 
 # `git archive` of lib/ and include/ at BENCH_OLD_REV, compiled with the
 # library's flags (that commit has no run-time dispatch; C2D_NO_DISPATCH
@@ -67,9 +67,9 @@ $(BENCH_OLD_OBJ): bench/old_missing.c bench/old.h
 	objcopy --redefine-syms=$(BENCH_OLD_DIR)/syms $(BENCH_OLD_DIR)/raw.o $@
 
 # One call per function (bench/callsite.c), sizes from the object.
-$(BENCH_SITES): bench/callsite.c $(LIB_HDR)
+$(BENCH_SITES): bench/callsite.c
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -c $< -o $(BENCH_DIR)/callsite.o
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -MT $@ -c $< -o $(BENCH_DIR)/callsite.o
 	nm -S --defined-only $(BENCH_DIR)/callsite.o > $@
 
 $(BENCH_BIN): $(BENCH_OBJ) $(STATIC)
@@ -102,9 +102,11 @@ TEST_TARGETS += test-bench
 # power of two.  Reported in bench/RESULTS.md and the README; not part of
 # `make test` (it measures, it does not judge).
 .PHONY: bench-energy
-$(BENCH_DIR)/energy_bias: bench/energy_bias.c referee/rng.h $(STATIC)
+$(BENCH_DIR)/energy_bias: bench/energy_bias.c $(STATIC)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Ireferee -o $@ $< $(STATIC) -lm
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Ireferee -o $@ $< $(STATIC) -lm
 
 bench-energy: $(BENCH_DIR)/energy_bias
 	$(BENCH_DIR)/energy_bias 100000000
+
+-include $(BENCH_OBJ:.o=.d) $(BENCH_DIR)/callsite.d $(BENCH_DIR)/energy_bias.d

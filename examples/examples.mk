@@ -17,15 +17,16 @@ EXAMPLE_FIRMWARE := $(MCU_B)/m4f/firmware.elf
 .PHONY: examples test-examples
 examples: $(EXAMPLE_BINS) $(EXAMPLE_FIRMWARE)
 
-$(B)/examples/%: examples/%.c $(STATIC) $(LIB_HDR)
+# Header dependencies: .d files (DEPFLAGS), included at the end.
+$(B)/examples/%: examples/%.c $(STATIC)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Werror -o $@ $< $(STATIC) -lm
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Werror -o $@ $< $(STATIC) -lm
 
 # The firmware: MCU_COMPILE gives the target's flags (m4f: C2D_NO_DOUBLE);
 # -Wdouble-promotion catches any double arithmetic in the example itself.
-$(MCU_B)/%/firmware.o: examples/firmware.c $(LIB_HDR) $(MCU_DIR)/mcu.h | mcu-deps
+$(MCU_B)/%/firmware.o: examples/firmware.c | mcu-deps
 	@mkdir -p $(@D)
-	$(MCU_COMPILE) -Wdouble-promotion -c $< -o $@
+	$(MCU_COMPILE) $(DEPFLAGS) -Wdouble-promotion -c $< -o $@
 
 $(EXAMPLE_FIRMWARE): $(MCU_B)/m4f/startup_arm.o $(MCU_B)/m4f/firmware.o $(MCU_B)/m4f/lib.o $(MCU_DIR)/arm.ld
 	$(MCU_m4f_CC) $(MCU_m4f_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
@@ -39,3 +40,5 @@ test-examples: examples
 	if [ $$fail -ne 0 ]; then echo "make test-examples: FAILED"; exit 1; fi; echo "make test-examples: passed"
 
 TEST_TARGETS += test-examples
+
+-include $(EXAMPLE_BINS:=.d) $(MCU_B)/m4f/firmware.d

@@ -6,7 +6,8 @@
 #                         DESTDIR install made by CMake, CMake
 #                         add_subdirectory and FetchContent on the source
 #                         tree, and pkg-config against a DESTDIR
-#                         `make install PREFIX=/opt/c2d`; then `make
+#                         `make install PREFIX=/opt/c2d`, and CMake
+#                         find_package against that install; then `make
 #                         uninstall` must leave the DESTDIR empty.
 # Under SANITIZE=1 it is skipped: the libraries it installs are the plain
 # ones, which the normal run has checked.

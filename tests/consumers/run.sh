@@ -10,6 +10,8 @@
 #                     plain Makefile with --define-variable=prefix= (and
 #                     --define-prefix must agree); `make uninstall` must then
 #                     leave the staging tree empty
+#   find_package (make install)  find_package(collide2d 1.1 CONFIG) against
+#                     that same `make install` (its CMake package)
 # Each path prints the consumer's pass line; the last line is
 # "consumers: N passed, N failed".
 set -u
@@ -83,6 +85,17 @@ ok=0
         PKG_CONFIG_PATH="$pcdir" C2D_PREFIX="$prefix" &&
     step pkg-config "$out/consumer-pkgconfig"; } || ok=1
 result pkg-config $ok
+
+# The CMake package `make install` writes, on the same staging tree.
+ok=0
+name=find_package-make
+{ step $name cmake -S tests/consumers -B "$out/$name" -DC2D_HOW=find_package \
+    -DC2D_LABEL="find_package (make install)" -DCMAKE_PREFIX_PATH="$prefix" &&
+    step $name cmake --build "$out/$name" &&
+    { grep -qF "collide2d 1.1" "$out/$name.log" && grep -qF "from $prefix/lib/cmake/collide2d" "$out/$name.log" ||
+        { echo "consumers: FAILED $name: not found in $prefix/lib/cmake/collide2d" >&2; false; }; } &&
+    step $name "$out/$name/consumer"; } || ok=1
+result $name $ok
 
 ok=0
 step uninstall "$make" --no-print-directory uninstall DESTDIR="$stage" PREFIX=/opt/c2d || ok=1

@@ -20,30 +20,34 @@ CROSS_MCU := m4f m7 rv32
 CROSS_PKGS := gcc-aarch64-linux-gnu libc6-dev-arm64-cross gcc-riscv64-linux-gnu libc6-dev-riscv64-cross qemu-user
 CROSS_HASH_SRC := tests/build/hash_vectors.c tests/build/hash_cases.c tests/harness/harness.c \
   tests/harness/soa_double.c tests/harness/soa_float.c tests/harness/put_stdio.c
-CROSS_HASH_HDR := tests/build/hash_cases.h referee/rng.h $(wildcard tests/harness/*.h) $(LIB_DEPS)
 CROSS_CFLAGS := -O2 -std=c99 $(WARN) -Werror -ffp-contract=off -fno-math-errno -Iinclude -Ireferee -Itests/harness
 
 .PHONY: cross-deps test-cross determinism-table
 cross-deps:
 	@sh scripts/deps.sh $(CROSS_PKGS)
 
+# Header dependencies: .d files (MULTI_DEPS: several sources in one
+# command; MCU_DEPS_OF: one per source of a relocatable object), included at
+# the end.
 # The host's: the same sources, one program, as each Linux target's.
-$(CROSS_B)/x86-64/hash_vectors: $(CROSS_HASH_SRC) $(CROSS_HASH_HDR) $(LIB_SRC)
+$(CROSS_B)/x86-64/hash_vectors: $(CROSS_HASH_SRC) $(LIB_SRC)
 	@mkdir -p $(@D)
+	$(call MULTI_DEPS,$(CC) $(CROSS_CFLAGS),$(CROSS_HASH_SRC) $(LIB_SRC))
 	$(CC) $(CROSS_CFLAGS) -o $@ $(CROSS_HASH_SRC) $(LIB_SRC) -lm
 
-$(CROSS_LINUX:%=$(CROSS_B)/%/hash_vectors): $(CROSS_B)/%/hash_vectors: $(CROSS_HASH_SRC) $(CROSS_HASH_HDR) \
+$(CROSS_LINUX:%=$(CROSS_B)/%/hash_vectors): $(CROSS_B)/%/hash_vectors: $(CROSS_HASH_SRC) \
   $(LIB_SRC) | cross-deps
 	@mkdir -p $(@D)
+	$(call MULTI_DEPS,$*-linux-gnu-gcc $(CROSS_CFLAGS),$(CROSS_HASH_SRC) $(LIB_SRC))
 	$*-linux-gnu-gcc $(CROSS_CFLAGS) -static -o $@ $(CROSS_HASH_SRC) $(LIB_SRC) -lm
 
 # On a microcontroller: hash_mcu.c instead of the host's front end, the
 # harness and the library built as tests/mcu/mcu.mk builds them.
 CROSS_MCU_SRC := tests/cross/hash_mcu.c tests/build/hash_cases.c tests/harness/harness.c \
   tests/harness/soa_double.c tests/harness/soa_float.c
-$(MCU_B)/%/hash.o: $(CROSS_MCU_SRC) $(CROSS_HASH_HDR) $(MCU_DIR)/mcu.h $(MCU_DIR)/mcu.mk | mcu-deps
+$(MCU_B)/%/hash.o: $(CROSS_MCU_SRC) $(MCU_DIR)/mcu.mk | mcu-deps
 	@mkdir -p $(@D)/hash
-	for f in $(CROSS_MCU_SRC); do $(MCU_COMPILE) -Ireferee -Itests/build -DC2D_MCU_NAME='"$*"' \
+	for f in $(CROSS_MCU_SRC); do $(MCU_COMPILE) $(call MCU_DEPS_OF,$$(basename $$f .c)) -Ireferee -Itests/build -DC2D_MCU_NAME='"$*"' \
 	  -c $$f -o $(@D)/hash/$$(basename $$f .c).o || exit 1; done
 	$(MCU_$*_CC) $(MCU_$*_ARCH) -nostdlib -r -o $@ $(patsubst %.c,$(@D)/hash/%.o,$(notdir $(CROSS_MCU_SRC)))
 
@@ -80,3 +84,5 @@ determinism-table: $(CROSS_ALL)
 	@sh tests/cross/cross.sh write $(CROSS_B) docs/DETERMINISM.md $(CROSS_RUNS)
 
 TEST_TARGETS += test-cross
+
+-include $(wildcard $(CROSS_B)/*/*.d)

@@ -33,7 +33,6 @@ FUZZ_REPLAY := $(FUZZ_DIR)/replay
 FUZZ_SRC := $(addprefix tests/fuzz/,fuzz_collide2d.c decode.c bounds.c fuzz_double.c fuzz_float.c fuzz_fixed.c) \
   tests/harness/harness.c
 FUZZ_REF_SRC := referee/referee.c referee/ref_rough.c referee/ref_toi_accel.c referee/cases_toi_accel.c
-FUZZ_HDR := $(wildcard tests/fuzz/*.h referee/*.h) $(HARNESS_HDR)
 FUZZ_CORPUS := tests/fuzz/corpus
 FUZZ_INC := -Iinclude -Itests/harness -Itests/fuzz -Ireferee
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
@@ -47,28 +46,32 @@ FUZZ_LIBS := -lmpfr -lgmp -lm
 fuzz-deps:
 	@sh scripts/deps.sh $(FUZZ_DEPS)
 
+# Header dependencies: .d files (DEPFLAGS; MULTI_DEPS for the programs
+# compiled from several sources in one command), included at the end.
 # c2d_put (the helper's output, for the replay's closing line) goes to stdout.
-$(FUZZ_DIR)/ref/%.o: referee/%.c $(wildcard referee/*.h) $(LIB_HDR) | fuzz-deps
+$(FUZZ_DIR)/ref/%.o: referee/%.c | fuzz-deps
 	@mkdir -p $(@D)
-	$(FUZZ_CLANG) -g -O2 -std=c99 $(WARN) -Wno-conversion -ffp-contract=off $(FUZZ_INC) $(FUZZ_SAN) -c -o $@ $<
+	$(FUZZ_CLANG) -g -O2 -std=c99 $(WARN) -Wno-conversion -ffp-contract=off $(FUZZ_INC) $(FUZZ_SAN) $(DEPFLAGS) -c -o $@ $<
 
-$(FUZZ_BIN): $(FUZZ_SRC) $(FUZZ_HDR) $(FUZZ_REF_OBJ) $(LIB_SRC) $(LIB_DEPS) | fuzz-deps
+$(FUZZ_BIN): $(FUZZ_SRC) $(FUZZ_REF_OBJ) $(LIB_SRC) | fuzz-deps
 	@mkdir -p $(@D)
+	$(call MULTI_DEPS,$(FUZZ_CLANG) $(FUZZ_CFLAGS),$(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC))
 	$(FUZZ_CLANG) $(FUZZ_CFLAGS) -o $@ $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) $(FUZZ_REF_OBJ) $(FUZZ_LIBS)
 
 # The referee as the unit tests build it (-Wno-conversion: GMP's types).
-$(FUZZ_DIR)/replay-ref/%.o: referee/%.c $(wildcard referee/*.h) $(LIB_HDR) | fuzz-deps
+$(FUZZ_DIR)/replay-ref/%.o: referee/%.c | fuzz-deps
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion $(FUZZ_INC) -c -o $@ $<
+	$(CC) $(ALL_CFLAGS) -Wno-conversion $(FUZZ_INC) $(DEPFLAGS) -c -o $@ $<
 
-$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(FUZZ_HDR) $(FUZZ_REPLAY_REF_OBJ) $(LIB_SRC) $(LIB_DEPS)
+$(FUZZ_REPLAY): tests/fuzz/replay.c $(FUZZ_SRC) $(FUZZ_REPLAY_REF_OBJ) $(LIB_SRC)
 	@mkdir -p $(@D)
+	$(call MULTI_DEPS,$(CC) $(ALL_CFLAGS) $(FUZZ_INC),tests/fuzz/replay.c $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC))
 	$(CC) $(ALL_CFLAGS) $(FUZZ_INC) -o $@ tests/fuzz/replay.c $(FUZZ_SRC) tests/harness/put_stdio.c $(LIB_SRC) \
 	  $(FUZZ_REPLAY_REF_OBJ) $(FUZZ_LIBS)
 
-$(FUZZ_DIR)/make_seeds: tests/fuzz/make_seeds.c tests/fuzz/fuzz.h
+$(FUZZ_DIR)/make_seeds: tests/fuzz/make_seeds.c
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -std=c99 $(WARN) $(FUZZ_INC) -o $@ $<
+	$(CC) $(CFLAGS) -std=c99 $(WARN) $(FUZZ_INC) $(DEPFLAGS) -o $@ $<
 
 fuzz-seeds: $(FUZZ_DIR)/make_seeds
 	$(FUZZ_DIR)/make_seeds $(FUZZ_CORPUS)
@@ -111,3 +114,5 @@ test-valgrind: $(B)/billiards
 endif
 
 TEST_TARGETS += test-valgrind
+
+-include $(FUZZ_REF_OBJ:.o=.d) $(FUZZ_REPLAY_REF_OBJ:.o=.d) $(FUZZ_BIN).d $(FUZZ_REPLAY).d $(FUZZ_DIR)/make_seeds.d

@@ -74,7 +74,10 @@ MCU_COMPILE = $(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_$*_OPTS) $(MCU_CFLAGS) \
 # The harness: main.c, the vector table and its checks (tests/vectors/), the
 # shared test helper (tests/harness/), as on the host.
 MCU_TEST_SRC := $(MCU_DIR)/main.c tests/vectors/vectors.c $(wildcard tests/vectors/check_*.c) tests/harness/harness.c
-MCU_TEST_HDR := $(MCU_DIR)/mcu.h $(wildcard tests/vectors/*.h tests/harness/*.h) $(LIB_HDR)
+# Header dependencies: .d files, included at the end.  A relocatable object
+# linked from several compiles has one .d per source (-MF), each naming the
+# object make knows ($@, -MT).
+MCU_DEPS_OF = $(DEPFLAGS) -MT $@ -MF $(basename $@).$(1).d
 
 MCU_ARM := m0 m4f m7
 MCU_ARM_LINK := -nostdlib -T $(MCU_DIR)/arm.ld -Wl,--gc-sections
@@ -92,34 +95,34 @@ mcu-deps:
 # The size table and call graph come from the amalgamation (one translation
 # unit, so the stack analysis sees every call); lib.o is lib/'s translation
 # units linked relocatably, what a firmware build of lib/ links.
-$(MCU_B)/%/collide2d.o: $(AMALGAMATION) $(LIB_HDR) $(MCU_DIR)/mcu.mk | mcu-deps
+$(MCU_B)/%/collide2d.o: $(AMALGAMATION) $(MCU_DIR)/mcu.mk | mcu-deps
 	@mkdir -p $(@D)
-	$(MCU_COMPILE) -fstack-usage -fcallgraph-info=su -c $(AMALGAMATION) -o $@
+	$(MCU_COMPILE) $(DEPFLAGS) -fstack-usage -fcallgraph-info=su -c $(AMALGAMATION) -o $@
 
-$(MCU_B)/%/lib.o: $(LIB_SRC) $(LIB_DEPS) $(MCU_DIR)/mcu.mk | mcu-deps
+$(MCU_B)/%/lib.o: $(LIB_SRC) $(MCU_DIR)/mcu.mk | mcu-deps
 	@mkdir -p $(@D)/lib
-	for f in $(LIB_SRC); do $(MCU_COMPILE) -c $$f -o $(@D)/lib/$$(basename $$f .c).o || exit 1; done
+	for f in $(LIB_SRC); do $(MCU_COMPILE) $(call MCU_DEPS_OF,$$(basename $$f .c)) -c $$f -o $(@D)/lib/$$(basename $$f .c).o || exit 1; done
 	$(MCU_$*_CC) $(MCU_$*_ARCH) -nostdlib -r -o $@ $(patsubst lib/%.c,$(@D)/lib/%.o,$(LIB_SRC))
 
 # tests.o: the harness's translation units linked relocatably, as lib.o.
-$(MCU_B)/%/tests.o: $(MCU_TEST_SRC) $(MCU_TEST_HDR) $(MCU_DIR)/mcu.mk | mcu-deps
+$(MCU_B)/%/tests.o: $(MCU_TEST_SRC) $(MCU_DIR)/mcu.mk | mcu-deps
 	@mkdir -p $(@D)/tests
 	for f in $(MCU_TEST_SRC); do \
-	  $(MCU_COMPILE) -DC2D_MCU_NAME='"$*"' -c $$f -o $(@D)/tests/$$(basename $$f .c).o || exit 1; done
+	  $(MCU_COMPILE) $(call MCU_DEPS_OF,$$(basename $$f .c)) -DC2D_MCU_NAME='"$*"' -c $$f -o $(@D)/tests/$$(basename $$f .c).o || exit 1; done
 	$(MCU_$*_CC) $(MCU_$*_ARCH) -nostdlib -r -o $@ $(patsubst %.c,$(@D)/tests/%.o,$(notdir $(MCU_TEST_SRC)))
 
-$(MCU_B)/%/startup_arm.o: $(MCU_DIR)/startup_arm.c $(MCU_DIR)/mcu.h | mcu-deps
+$(MCU_B)/%/startup_arm.o: $(MCU_DIR)/startup_arm.c | mcu-deps
 	@mkdir -p $(@D)
-	$(MCU_COMPILE) -c $< -o $@
+	$(MCU_COMPILE) $(DEPFLAGS) -c $< -o $@
 
-$(MCU_B)/%/q16_caller.o: $(MCU_DIR)/q16_caller.c $(LIB_HDR) | mcu-deps
+$(MCU_B)/%/q16_caller.o: $(MCU_DIR)/q16_caller.c | mcu-deps
 	@mkdir -p $(@D)
-	$(MCU_COMPILE) -c $< -o $@
+	$(MCU_COMPILE) $(DEPFLAGS) -c $< -o $@
 
 # The C library's side (stdio-free: open/write/exit) needs picolibc's headers.
-$(MCU_B)/rv32/platform_rv32.o: $(MCU_DIR)/platform_rv32.c $(MCU_DIR)/mcu.h | mcu-deps
+$(MCU_B)/rv32/platform_rv32.o: $(MCU_DIR)/platform_rv32.c | mcu-deps
 	@mkdir -p $(@D)
-	$(MCU_rv32_CC) $(MCU_rv32_ARCH) --specs=picolibc.specs -std=c99 $(WARN) -Werror -Os -c $< -o $@
+	$(MCU_rv32_CC) $(MCU_rv32_ARCH) --specs=picolibc.specs -std=c99 $(WARN) -Werror -Os $(DEPFLAGS) -c $< -o $@
 
 # newlib's libm supplies sqrt/sqrtf where the core has no FPU for them.
 # harness.elf links lib/, harness_all.elf the amalgamation.
@@ -193,3 +196,5 @@ lint-misra: | mcu-deps
 
 TEST_TARGETS += cross test-mcu lint-misra
 LINT_TARGETS += lint-misra
+
+-include $(wildcard $(MCU_B)/*/*.d)
