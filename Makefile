@@ -5,7 +5,7 @@
 # Conventions: CC is never assigned (use the environment's), CFLAGS ?= -O2 is
 # yours, the flags the library needs are appended.  -ffp-contract=off keeps
 # a*b+c from being fused differently per compiler/target, so results are
-# reproducible bit for bit (README "Caveats").  -fno-math-errno lets the time
+# reproducible bit for bit (docs/DETERMINISM.md).  -fno-math-errno lets the time
 # of impact's square roots be the instruction (no libm call; same results).
 
 CFLAGS ?= -O2
@@ -199,7 +199,7 @@ vectors: check-deps-test $(B)/gen_vectors
 check-vectors: check-deps-test $(B)/gen_vectors
 	@$(B)/gen_vectors $(B)/vectors.c && cmp -s $(B)/vectors.c tests/vectors/vectors.c && \
 	  echo "check-vectors: 1 passed, 0 failed" || \
-	  { echo "check-vectors: tests/vectors/vectors.c differs from the referee (make vectors)"; exit 1; }
+	  { echo "check-vectors: tests/vectors/vectors.c differs from the referee (make vectors)" >&2; echo "check-vectors: 0 passed, 1 failed"; exit 1; }
 
 check-build: $(AMALGAMATION)
 	@sh tests/build/check_build.sh $(B)/check-build $(AMALGAMATION)

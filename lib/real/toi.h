@@ -219,7 +219,7 @@ static int c2d_clear_of(c2d_real x, c2d_real y, c2d_real bound) { return c2d_abs
  * (a few u) pass to t unamplified; c's absolute error, about u |d|^2, is the
  * time one rounding of |d| is worth at the approach speed; the cross
  * product's error moves sqrt(disc) by at most 2h/R of that unit
- * (docs/METHOD.md).  Measured worst: README "Accuracy".  Returns 0 when it
+ * (docs/METHOD.md).  Measured worst: docs/ACCURACY.md.  Returns 0 when it
  * cannot decide. */
 static inline int c2d_toi_plain(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, c2d_real *t,
                                 c2d_status *status)
