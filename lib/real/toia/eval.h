@@ -162,17 +162,13 @@ static void c2d_toia_e1(c2d_toia_ctx *c, const c2d_dd *t, c2d_toia_ev *o)
     o->tier = 1;
 }
 
-/* Double-length helpers: (ah + al)(bh + bl) and (ah + al) + (bh + bl),
- * each within a few u^2 of the operands' magnitudes (the classical
- * double-double bounds; the constants below take 4 u^2 per operation). */
-static c2d_real c2d_toia_dmul(c2d_real ah, c2d_real al, c2d_real bh, c2d_real bl, c2d_real *l)
-{
-    c2d_real err, p = c2d_two_prod(ah, bh, &err);
-    err += ah * bl + al * bh;
-    return c2d_two_sum(p, err, l);
-}
-
-static c2d_real c2d_toia_dadd(c2d_real ah, c2d_real al, c2d_real bh, c2d_real bl, c2d_real *l)
+/* (ah + al) + (bh + bl) on bare parts: one TwoSum of the high parts, the
+ * low parts added to its error, one TwoSum to renormalise; within 4 u^2 of
+ * the operands' magnitudes.  Cheaper than c2d_dd_add (real/arith/dd.h),
+ * which also sums the low parts exactly and renormalises twice, and not the
+ * same bits: the bounds below take 4 u^2 per operation for it and for
+ * c2d_dd_mul_parts. */
+static c2d_real c2d_toia_add_parts(c2d_real ah, c2d_real al, c2d_real bh, c2d_real bl, c2d_real *l)
 {
     c2d_real err, s = c2d_two_sum(ah, bh, &err);
     err += al + bl;
@@ -192,12 +188,12 @@ static void c2d_toia_finish2(c2d_toia_ctx *c, const c2d_real *dh, const c2d_real
     if (rr < 0) {
         c2d_toia_fbig(c, E, &o->q[C2D_TOIA_QF], &o->fmag);
     } else {
-        xh = c2d_toia_dmul(dh[0], dlo[0], dh[0], dlo[0], &xl);
-        yh = c2d_toia_dmul(dh[1], dlo[1], dh[1], dlo[1], &yl);
-        sh = c2d_toia_dadd(xh, xl, yh, yl, &sl);
+        xh = c2d_dd_mul_parts(dh[0], dlo[0], dh[0], dlo[0], &xl);
+        yh = c2d_dd_mul_parts(dh[1], dlo[1], dh[1], dlo[1], &yl);
+        sh = c2d_toia_add_parts(xh, xl, yh, yl, &sl);
         yh = c2d_two_prod(rr, rr, &yl);
         mag = sh + yh;
-        sh = c2d_toia_dadd(sh, sl, -yh, -yl, &sl);
+        sh = c2d_toia_add_parts(sh, sl, -yh, -yl, &sl);
         v = sh + sl;
         c2d_toia_v_set(&o->q[C2D_TOIA_QF], v,
                        (2 * c2d_abs(dh[0]) + dl[0]) * dl[0] + (2 * c2d_abs(dh[1]) + dl[1]) * dl[1] + u2 * mag +
@@ -206,10 +202,10 @@ static void c2d_toia_finish2(c2d_toia_ctx *c, const c2d_real *dh, const c2d_real
         o->fmag = mag;
     }
     /* g = d . d' */
-    xh = c2d_toia_dmul(dh[0], dlo[0], d1h[0], d1lo[0], &xl);
-    yh = c2d_toia_dmul(dh[1], dlo[1], d1h[1], d1lo[1], &yl);
+    xh = c2d_dd_mul_parts(dh[0], dlo[0], d1h[0], d1lo[0], &xl);
+    yh = c2d_dd_mul_parts(dh[1], dlo[1], d1h[1], d1lo[1], &yl);
     mag = c2d_abs(xh) + c2d_abs(yh);
-    sh = c2d_toia_dadd(xh, xl, yh, yl, &sl);
+    sh = c2d_toia_add_parts(xh, xl, yh, yl, &sl);
     v = sh + sl;
     c2d_toia_v_set(&o->q[C2D_TOIA_QG], v,
                    (c2d_abs(d1h[0]) + dl1[0]) * dl[0] + c2d_abs(dh[0]) * dl1[0] + (c2d_abs(d1h[1]) + dl1[1]) * dl[1] +
@@ -242,28 +238,28 @@ C2D_COLD void c2d_toia_e2(c2d_toia_ctx *c, const c2d_dd *t, c2d_toia_ev *o)
     c2d_real sc[5], dh[2], dlo[2], dl[2], d1h[2], d1lo[2], dl1[2], t2h, t2l, th = t->h, tl = t->l;
     int E, E1, i;
     c2d_toia_scales(c, t, &E, &E1, sc);
-    t2h = c2d_toia_dmul(th, tl, th, tl, &t2l);
+    t2h = c2d_dd_mul_parts(th, tl, th, tl, &t2l);
     for (i = 0; i < 2; i++) {
         c2d_real ph, pl, vh, vl, ah, al, s, l;
         ph = c->m[0][i] * sc[0];
         pl = c->ml[0][i] * sc[0];
-        vh = c2d_toia_dmul(c->m[1][i], c->ml[1][i], th, tl, &vl);
+        vh = c2d_dd_mul_parts(c->m[1][i], c->ml[1][i], th, tl, &vl);
         vh *= sc[1];
         vl *= sc[1];
-        ah = c2d_toia_dmul(c->m[2][i], c->ml[2][i], t2h, t2l, &al);
+        ah = c2d_dd_mul_parts(c->m[2][i], c->ml[2][i], t2h, t2l, &al);
         ah *= sc[2];
         al *= sc[2];
         s = c2d_abs(ph) + c2d_abs(vh) + c2d_abs(ah);
-        dh[i] = c2d_toia_dadd(ph, pl, vh, vl, &l);
-        dh[i] = c2d_toia_dadd(dh[i], l, ah, al, &dlo[i]);
+        dh[i] = c2d_toia_add_parts(ph, pl, vh, vl, &l);
+        dh[i] = c2d_toia_add_parts(dh[i], l, ah, al, &dlo[i]);
         dl[i] = 20 * u * u * s + fl;
         vh = c->m[1][i] * sc[3];
         vl = c->ml[1][i] * sc[3];
-        ah = c2d_toia_dmul(c->m[2][i], c->ml[2][i], th, tl, &al);
+        ah = c2d_dd_mul_parts(c->m[2][i], c->ml[2][i], th, tl, &al);
         ah *= sc[4];
         al *= sc[4];
         s = c2d_abs(vh) + c2d_abs(ah);
-        d1h[i] = c2d_toia_dadd(vh, vl, ah, al, &d1lo[i]);
+        d1h[i] = c2d_toia_add_parts(vh, vl, ah, al, &d1lo[i]);
         dl1[i] = 12 * u * u * s + fl;
     }
     c2d_toia_finish2(c, dh, dlo, dl, d1h, d1lo, dl1, E, E1, o);
@@ -374,16 +370,16 @@ C2D_COLD void c2d_toia_dexact(c2d_toia_ctx *c, const c2d_dd *t, c2d_real *dh, c2
         c2d_real tls = c2d_scale2(t->l, t->e + E1 - E);
         for (i = 0; i < 2; i++) {
             c2d_real ch, cl, ah = 0, al = 0, s2;
-            ch = c2d_toia_dmul(d1h[i], d1lo[i], tls, 0, &cl);
+            ch = c2d_dd_mul_parts(d1h[i], d1lo[i], tls, 0, &cl);
             if (c->nz[2] != 0) ah = c2d_scale2(c->m[2][i] * (t->l * t->l), c->ex[2] + 2 * t->e - 1 - E);
             s2 = c2d_abs(ch) + c2d_abs(ah);
-            dh[i] = c2d_toia_dadd(dh[i], dlo[i], ch, cl + ah, &dlo[i]);
+            dh[i] = c2d_toia_add_parts(dh[i], dlo[i], ch, cl + ah, &dlo[i]);
             dl[i] += (rel[2 + i] + 8 * u * u) * s2 + 4 * u * c2d_abs(ah) + fl;
             if (c->nz[2] != 0) {
-                ah = c2d_toia_dmul(c->m[2][i], c->ml[2][i], t->l, 0, &al);
+                ah = c2d_dd_mul_parts(c->m[2][i], c->ml[2][i], t->l, 0, &al);
                 ah = c2d_scale2(ah, c->ex[2] + t->e - E1);
                 al = c2d_scale2(al, c->ex[2] + t->e - E1);
-                d1h[i] = c2d_toia_dadd(d1h[i], d1lo[i], ah, al, &d1lo[i]);
+                d1h[i] = c2d_toia_add_parts(d1h[i], d1lo[i], ah, al, &d1lo[i]);
                 dl1[i] += 8 * u * u * c2d_abs(ah) + fl;
             }
         }

@@ -8,38 +8,12 @@
 /* Extended-number arithmetic for the bounds                             */
 /* ===================================================================== */
 
-/* *r = a + b (one rounding). */
-static void c2d_toia_ext_add(c2d_ext *r, const c2d_ext *a, const c2d_ext *b)
-{
-    int k;
-    if (a->m == 0) {
-        c2d_ext_copy(r, b);
-        return;
-    }
-    if (b->m == 0) {
-        c2d_ext_copy(r, a);
-        return;
-    }
-    k = a->e - b->e;
-    if (k > C2D_R_MANT + 3) {
-        c2d_ext_copy(r, a);
-    } else if (k < -(C2D_R_MANT + 3)) {
-        c2d_ext_copy(r, b);
-    } else if (k >= 0) {
-        c2d_ext_set(r, a->m + c2d_scale2(b->m, -k), a->e);
-    } else {
-        c2d_ext_set(r, c2d_scale2(a->m, k) + b->m, b->e);
-    }
-}
-
 /* sign(a - b) of two extended numbers, with a relative slack of
  * 2^(4 - MANT) counted against the claim (returns 0 when closer). */
 static int c2d_toia_ext_cmp(const c2d_ext *a, const c2d_ext *b)
 {
-    c2d_ext nb, d;
-    nb.m = -b->m;
-    nb.e = b->e;
-    c2d_toia_ext_add(&d, a, &nb);
+    c2d_ext d;
+    c2d_ext_add(&d, a, b, -1);
     if (d.m == 0) return 0;
     {
         int top = a->m == 0 ? b->e : (b->m == 0 ? a->e : c2d_toia_imax(a->e, b->e));

@@ -159,7 +159,7 @@ static c2d_real c2d_toia_t_value(const c2d_dd *t)
 {
     if (t->h == 0) return 0;
     if (t->e > C2D_R_EMAX) return C2D_R_MAX * 2;
-    return c2d_scale2(t->h + t->l, t->e);
+    return c2d_dd_value(t);
 }
 
 /* Double-length arithmetic on (h + l) 2^e (the classical double-double
@@ -198,26 +198,6 @@ static void c2d_toia_t_mid(c2d_dd *m, const c2d_dd *a, const c2d_dd *b)
 /* ===================================================================== */
 /* Exact sums of products (Shewchuk expansions in a sliding window)      */
 /* ===================================================================== */
-
-/* Add b to the nonoverlapping expansion w[0..n) (increasing magnitude),
- * exactly (GROW-EXPANSION with zero elimination).  New length <= n + 1. */
-static int c2d_toia_grow(c2d_real *w, int n, c2d_real b)
-{
-    c2d_real q = b, h;
-    int i, k = 0;
-    for (i = 0; i < n; i++) {
-        q = c2d_two_sum(q, w[i], &h);
-        if (h != 0) {
-            w[k] = h;
-            k++;
-        }
-    }
-    if (q != 0) {
-        w[k] = q;
-        k++;
-    }
-    return k;
-}
 
 /* Append sgn * x * y * 2^shift as (at most) two atoms, exactly: the
  * significands' product is hi + lo by TwoProduct (both in [1, 4) or
@@ -297,7 +277,7 @@ C2D_COLD int c2d_toia_ext_sum(c2d_real *m, int *e, int n, c2d_real *hi, c2d_real
                 nw++;
             }
         }
-        for (j = 0; j < nw; j++) k = c2d_toia_grow(m, k, m[j]);
+        for (j = 0; j < nw; j++) k = c2d_grow(m, k, m[j]);
         /* Round the exact components (increasing, nonoverlapping) to
          * double length: all but the largest sum to less than an ulp of the
          * largest, so adding them in plain arithmetic errs by at most

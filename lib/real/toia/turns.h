@@ -7,11 +7,6 @@
 /* Turning points of f: brackets of the roots of g and f's value there   */
 /* ===================================================================== */
 
-static void c2d_toia_ext_mul(c2d_ext *r, const c2d_ext *a, const c2d_ext *b)
-{
-    c2d_ext_set(r, a->m * b->m, a->e + b->e);
-}
-
 /* val > 0 with a margin of 2^(4 - MANT) of scale (>= 0): a decision that
  * survives the few roundings the bound arithmetic made. */
 static int c2d_toia_ext_clear(const c2d_ext *val, const c2d_ext *scale)
@@ -32,7 +27,7 @@ static int c2d_toia_ext_clear(const c2d_ext *val, const c2d_ext *scale)
  * 0 if neither. */
 C2D_COLD int c2d_toia_fturn(const c2d_toia_br *br, int dir, const c2d_toia_fg *center)
 {
-    c2d_ext w, x, y, z;
+    c2d_ext w, x, z;
     int i, res = 0;
     c2d_toia_t_diff(&w, &br->hi, &br->lo);
     w.m = c2d_abs(w.m);
@@ -46,22 +41,18 @@ C2D_COLD int c2d_toia_fturn(const c2d_toia_br *br, int dir, const c2d_toia_fg *c
         tg.e = 0;
         if (i < 2) {
             c2d_ext_set(&x, c2d_abs(ev->g.v) + ev->g.r, ev->g.e + 1);
-            c2d_toia_ext_mul(&tg, &x, &w);
+            c2d_ext_mul(&tg, &x, &w);
         }
         /* lo = f - r - (dir > 0 ? tg : 0), hi = f + r + (dir < 0 ? tg : 0);
          * each candidate judged against its own rounding scale |f| + r + tg */
-        x.m = -r.m;
-        x.e = r.e;
-        c2d_toia_ext_add(&lo, &f, &x);
-        c2d_toia_ext_add(&hi, &f, &r);
-        y.m = -tg.m;
-        y.e = tg.e;
-        if (dir > 0) c2d_toia_ext_add(&lo, &lo, &y);
-        else c2d_toia_ext_add(&hi, &hi, &tg);
+        c2d_ext_add(&lo, &f, &r, -1);
+        c2d_ext_add(&hi, &f, &r, 1);
+        if (dir > 0) c2d_ext_add(&lo, &lo, &tg, -1);
+        else c2d_ext_add(&hi, &hi, &tg, 1);
         z.m = c2d_abs(f.m);
         z.e = f.e;
-        c2d_toia_ext_add(&z, &z, &r);
-        c2d_toia_ext_add(&z, &z, &tg);
+        c2d_ext_add(&z, &z, &r, 1);
+        c2d_ext_add(&z, &z, &tg, 1);
         /* a point value bounds a minimum from above only, a maximum from below */
         if (!(i == 2 && dir > 0) && c2d_toia_ext_clear(&lo, &z) != 0) res = 1;
         x.m = -hi.m;
@@ -212,15 +203,15 @@ C2D_COLD int c2d_toia_lin_min(c2d_toia_ctx *c)
     ex = c2d_toia_ext_sum(m, e, n, &xh, &xl, &kx);
     n = c2d_toia_push_dot(c, m, e, 0, 1, 1, 1);
     ev = c2d_toia_ext_sum(m, e, n, &vh, &vl, &kv);
-    if (xh != 0) ah = c2d_toia_dmul(xh, xl, xh, xl, &al);
+    if (xh != 0) ah = c2d_dd_mul_parts(xh, xl, xh, xl, &al);
     ea = 2 * ex;
     rh = c2d_two_prod(c->r.m, c->r.m, &rl);
-    bh = c2d_toia_dmul(rh, rl, vh, vl, &bl);
+    bh = c2d_dd_mul_parts(rh, rl, vh, vl, &bl);
     eb = 2 * c->r.e + ev;
     E = (xh != 0 && ea > eb) ? ea : eb;
     sa = c2d_toia_p2(ea - E);
     sb = c2d_toia_p2(eb - E);
-    qh = c2d_toia_dadd(ah * sa, al * sa, -bh * sb, -bl * sb, &ql);
+    qh = c2d_toia_add_parts(ah * sa, al * sa, -bh * sb, -bl * sb, &ql);
     bound = ((c2d_real)(4 * kx + 12) * c2d_abs(ah * sa) + (c2d_real)(2 * kv + 12) * c2d_abs(bh * sb)) * u2 + fl;
     if (qh + ql > bound) return 1;
     if (qh + ql < -bound) return -1;
@@ -350,14 +341,14 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dd *s, int kind, int *sf, 
         /* the root exists within D unless h(s) may be positive (same sign as
          * h''): then P^2 >= 2 h'' H is needed (with slack) */
         if (!(ev.q[C2D_TOIA_QH].v + ev.q[C2D_TOIA_QH].r < 0)) {
-            c2d_toia_ext_mul(&x, &P, &P);
-            c2d_toia_ext_mul(&y, &h2, &H);
+            c2d_ext_mul(&x, &P, &P);
+            c2d_ext_mul(&y, &h2, &H);
             y.e += 1;
             if (H.m != 0 && c2d_toia_ext_cmp(&x, &y) <= 0) continue;
         }
         /* D = 2 H / P, S = H D (rounded up by the slack in the test) */
         c2d_ext_set(&D, 2 * H.m / P.m, H.e - P.e);
-        c2d_toia_ext_mul(&S, &H, &D);
+        c2d_ext_mul(&S, &H, &D);
         S.m *= 1 + c2d_pow2(4 - C2D_R_MANT);
         c2d_ext_set(&G, c2d_abs(ev.q[C2D_TOIA_QG].v) - ev.q[C2D_TOIA_QG].r, ev.q[C2D_TOIA_QG].e);
         if (G.m > 0 && c2d_toia_ext_cmp(&G, &S) > 0) return c2d_toia_sgn(ev.q[C2D_TOIA_QG].v);
