@@ -60,10 +60,10 @@ static int old_toia_ext_cmp(const c2d_ext *a, const c2d_ext *b)
     old_toia_ext_add(&d, a, &nb);
     if (d.m == 0) return 0;
     {
-        int top = a->m == 0 ? b->e : (b->m == 0 ? a->e : c2d_toia_imax(a->e, b->e));
+        int top = a->m == 0 ? b->e : (b->m == 0 ? a->e : c2d_toia_max_int(a->e, b->e));
         if (d.e < top + 5 - C2D_R_MANT) return 0;
     }
-    return c2d_toia_sgn(d.m);
+    return c2d_toia_sign_of(d.m);
 }
 
 /* x == m 2^e exactly (MPFR, exponents far inside its range). */

@@ -67,7 +67,7 @@
  *     tier 2  double length (~16u^2 of the terms),
  *     tier 3  d(t), d'(t) EXACT (sums of exact products of the exact input
  *             differences, Shewchuk expansions in a sliding exponent window,
- *             c2d_toia_ext_sum) rounded to double length: the error is then
+ *             c2d_toia_exact_sum) rounded to double length: the error is then
  *             ~(2k + 4)u^2 of |d| itself, not of the terms that cancel in it.
  *   (u = 2^-(MANT+1).)  Each tier computes in units of powers of two chosen
  *   per evaluation from the terms' exponents, so nothing over- or
@@ -90,7 +90,7 @@
  *     g extremum (g at a root of h within its bound)          -> no sign change.
  *   The minimum of f is located to double-length precision (a bracket
  *   [lo, hi] of the root of g with certified signs; f(c) lies in
- *   [max f(end) - 2 max|g(end)| (hi - lo), min f(end)], c2d_toia_fturn), so
+ *   [max f(end) - 2 max|g(end)| (hi - lo), min f(end)], c2d_toia_f_at_turn), so
  *   besides the relative band a minimum whose dip is smaller than what one
  *   unit of the double-length time resolution (2^-2p c) is worth remains
  *   undecided: |f(c)| <~ (|d'|^2 + |d||a|)(2^-2p c)^2.  That needs a pass
@@ -129,8 +129,8 @@
 static int c2d_toia_sign2(c2d_real x, c2d_real mx, int hx, int ex, c2d_real y, c2d_real my, int hy, int ey)
 {
     const c2d_real u8 = c2d_pow2(-C2D_R_MANT + 2);
-    int E = hx == 0 ? ey : (hy == 0 ? ex : c2d_toia_imax(ex, ey));
-    c2d_real sx = hx != 0 ? c2d_toia_p2(ex - E) : 0, sy = hy != 0 ? c2d_toia_p2(ey - E) : 0;
+    int E = hx == 0 ? ey : (hy == 0 ? ex : c2d_toia_max_int(ex, ey));
+    c2d_real sx = hx != 0 ? c2d_toia_pow2_clamped(ex - E) : 0, sy = hy != 0 ? c2d_toia_pow2_clamped(ey - E) : 0;
     c2d_real v = x * sx + y * sy, r = u8 * (mx * sx + my * sy) + c2d_pow2(C2D_R_EMIN + 6);
     if (v > r) return 1;
     if (v < -r) return -1;
@@ -144,26 +144,26 @@ static int c2d_toia_sign2(c2d_real x, c2d_real mx, int hx, int ex, c2d_real y, c
  * otherwise. */
 static void c2d_toia_phase0(c2d_toia_ctx *c, int *s)
 {
-    c2d_real p2 = c->m[0][0] * c->m[0][0] + c->m[0][1] * c->m[0][1];
-    c2d_real v2 = c->m[1][0] * c->m[1][0] + c->m[1][1] * c->m[1][1];
-    c2d_real pv = c->m[0][0] * c->m[1][0] + c->m[0][1] * c->m[1][1];
-    c2d_real pa = c->m[0][0] * c->m[2][0] + c->m[0][1] * c->m[2][1];
-    c2d_real va = c->m[1][0] * c->m[2][0] + c->m[1][1] * c->m[2][1];
-    c2d_real mpv = c2d_abs(c->m[0][0] * c->m[1][0]) + c2d_abs(c->m[0][1] * c->m[1][1]);
-    c2d_real mpa = c2d_abs(c->m[0][0] * c->m[2][0]) + c2d_abs(c->m[0][1] * c->m[2][1]);
-    c2d_real mva = c2d_abs(c->m[1][0] * c->m[2][0]) + c2d_abs(c->m[1][1] * c->m[2][1]);
-    c2d_real r2 = c->r.m * c->r.m;
+    c2d_real p2 = c->hi[0][0] * c->hi[0][0] + c->hi[0][1] * c->hi[0][1];
+    c2d_real v2 = c->hi[1][0] * c->hi[1][0] + c->hi[1][1] * c->hi[1][1];
+    c2d_real pv = c->hi[0][0] * c->hi[1][0] + c->hi[0][1] * c->hi[1][1];
+    c2d_real pa = c->hi[0][0] * c->hi[2][0] + c->hi[0][1] * c->hi[2][1];
+    c2d_real va = c->hi[1][0] * c->hi[2][0] + c->hi[1][1] * c->hi[2][1];
+    c2d_real mpv = c2d_abs(c->hi[0][0] * c->hi[1][0]) + c2d_abs(c->hi[0][1] * c->hi[1][1]);
+    c2d_real mpa = c2d_abs(c->hi[0][0] * c->hi[2][0]) + c2d_abs(c->hi[0][1] * c->hi[2][1]);
+    c2d_real mva = c2d_abs(c->hi[1][0] * c->hi[2][0]) + c2d_abs(c->hi[1][1] * c->hi[2][1]);
+    c2d_real r2 = c->radius.m * c->radius.m;
     int k;
-    s[0] = c2d_toia_sign2(p2, p2, c->nz[0], 2 * c->ex[0], -r2, r2, 1, 2 * c->r.e);
-    s[1] = c2d_toia_sign2(pv, mpv, c->nz[0] * c->nz[1], c->ex[0] + c->ex[1], 0, 0, 0, 0);
-    s[2] = c2d_toia_sign2(v2, v2, c->nz[1], 2 * c->ex[1], pa, mpa, c->nz[0] * c->nz[2], c->ex[0] + c->ex[2]);
-    s[3] = c2d_toia_sign2(va, mva, c->nz[1] * c->nz[2], c->ex[1] + c->ex[2], 0, 0, 0, 0);
+    s[0] = c2d_toia_sign2(p2, p2, c->nonzero[0], 2 * c->exp[0], -r2, r2, 1, 2 * c->radius.e);
+    s[1] = c2d_toia_sign2(pv, mpv, c->nonzero[0] * c->nonzero[1], c->exp[0] + c->exp[1], 0, 0, 0, 0);
+    s[2] = c2d_toia_sign2(v2, v2, c->nonzero[1], 2 * c->exp[1], pa, mpa, c->nonzero[0] * c->nonzero[2], c->exp[0] + c->exp[2]);
+    s[3] = c2d_toia_sign2(va, mva, c->nonzero[1] * c->nonzero[2], c->exp[1] + c->exp[2], 0, 0, 0, 0);
     for (k = 0; k < 4; k++)
         if (s[k] == 0) s[k] = c2d_toia_sign0(c, k);
 }
 
 /* ceil(a / b), b > 0 */
-static int c2d_toia_cdiv(int a, int b) { return -c2d_toia_fdiv(-a, b); }
+static int c2d_toia_ceil_div(int a, int b) { return -c2d_toia_floor_div(-a, b); }
 
 /* An exponent eb with every real root of g below 2^eb.  g / (|a|^2 / 2) =
  * t^3 + c2 t^2 + c1 t + c0 with |c2| <= 3|v|/|a|, |c1| <= 2(|v|^2 +
@@ -173,22 +173,22 @@ static int c2d_toia_cdiv(int a, int b) { return -c2d_toia_fdiv(-a, b); }
  * has its root below |d0|/|v|. */
 static int c2d_toia_bound(c2d_toia_ctx *c)
 {
-    const int e0 = c->ex[0], e1 = c->ex[1], e2 = c->ex[2];
+    const int e0 = c->exp[0], e1 = c->exp[1], e2 = c->exp[2];
     int eb = 0, have = 0, k;
-    if (c->nz[2] == 0) return c->nz[0] != 0 ? e0 - e1 + 3 : 0;
-    if (c->nz[1] != 0) {
+    if (c->nonzero[2] == 0) return c->nonzero[0] != 0 ? e0 - e1 + 3 : 0;
+    if (c->nonzero[1] != 0) {
         eb = e1 - e2 + 4;
         have = 1;
     }
-    if (c->nz[1] != 0 || c->nz[0] != 0) {
-        k = c->nz[1] != 0 ? 2 * e1 : e0 + e2;
-        if (c->nz[0] != 0 && e0 + e2 > k) k = e0 + e2;
-        k = c2d_toia_cdiv(k + 5 - 2 * e2, 2);
+    if (c->nonzero[1] != 0 || c->nonzero[0] != 0) {
+        k = c->nonzero[1] != 0 ? 2 * e1 : e0 + e2;
+        if (c->nonzero[0] != 0 && e0 + e2 > k) k = e0 + e2;
+        k = c2d_toia_ceil_div(k + 5 - 2 * e2, 2);
         eb = (have == 0 || k > eb) ? k : eb;
         have = 1;
     }
-    if (c->nz[1] != 0 && c->nz[0] != 0) {
-        k = c2d_toia_cdiv(e0 + e1 + 3 - 2 * e2, 3);
+    if (c->nonzero[1] != 0 && c->nonzero[0] != 0) {
+        k = c2d_toia_ceil_div(e0 + e1 + 3 - 2 * e2, 3);
         eb = k > eb ? k : eb;
     }
     return have != 0 ? eb + 1 : 0;
@@ -198,13 +198,13 @@ static int c2d_toia_bound(c2d_toia_ctx *c)
 C2D_COLD int c2d_toia_clear(c2d_toia_ctx *c, const c2d_dd *T)
 {
     c2d_toia_frame fr;
-    return c2d_toia_frame_set(&fr, c, T->e + 1) != 0 && c2d_toia_hull_clear(&fr, c2d_toia_t_local(T, T->e + 1)) != 0;
+    return c2d_toia_frame_set(&fr, c, T->e + 1) != 0 && c2d_toia_hull_clear(&fr, c2d_toia_time_local(T, T->e + 1)) != 0;
 }
 
 /* The contact time to the working format: RANGE beyond it; within [0, H]. */
 static c2d_status c2d_toia_out(const c2d_dd *out, c2d_real horizon, c2d_real *t)
 {
-    c2d_real v = c2d_toia_t_value(out);
+    c2d_real v = c2d_toia_time_value(out);
     if (!(v <= C2D_R_MAX)) return C2D_RANGE;
     if (v > horizon) v = horizon;
     if (v < 0) v = 0;
@@ -224,7 +224,7 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
         !(horizon >= 0))
         return C2D_INVALID;
     c2d_toia_load(&c, a, acc_a, b, acc_b, radius_sum);
-    if (c.nz[1] == 0 && c.nz[2] == 0) return C2D_SEPARATING; /* constant distance: never approaching */
+    if (c.nonzero[1] == 0 && c.nonzero[2] == 0) return C2D_SEPARATING; /* constant distance: never approaching */
     if (radius_sum == 0) return C2D_SEPARATING;              /* f >= 0: never overlapping */
     c2d_toia_phase0(&c, s0);
     /* the sign of g just after 0: first nonzero of g, g', g'', g''' > 0 */
