@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/eval.h - template: the time of impact under acceleration,
- * part 3 of 7: f, g, h at a time with certified error bounds, three tiers
- * (plain, double length, exact).  See real/toia/solve.h. */
+/* real/toia/eval.h - template, accelerated time of impact: f, g, h, h' at a
+ * time with certified error bounds in three tiers (plain, double length,
+ * exact) and the probe that escalates until a sign is certified.  See
+ * real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_EVAL_H
 #define C2D_REAL_TOIA_EVAL_H
 /* Evaluation with certified error bounds, three tiers                   */

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/newton.h - template: the time of impact under acceleration,
- * part 4 of 7: extended arithmetic for the bounds, plain Newton in a local
- * frame, the double-length polish and bisection on certified signs.  See
- * real/toia/solve.h. */
+/* real/toia/newton.h - template, accelerated time of impact: the comparison
+ * of bounds with slack, plain Newton in a local frame, the double-length
+ * polish, and the root finders (bisection and Newton on certified signs).
+ * See real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_NEWTON_H
 #define C2D_REAL_TOIA_NEWTON_H
 /* Extended-number arithmetic for the bounds                             */

@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/num.h - template: the time of impact under acceleration, part 1
- * of 7: its types and exact sums of products in a sliding exponent window.
- * Numbers m 2^e are real/arith/bits.h's c2d_ext, times (h + l) 2^e real/arith/dd.h's
- * c2d_dd (double length, unbounded exponent).  The method and the order of
- * the parts: real/toia/solve.h.  Needs real/arith/bits.h, real/arith/exact.h, real/arith/sign.h and
+/* real/toia/num.h - template, accelerated time of impact: the types (the
+ * problem, certified values, evaluations, the local frame, brackets), the
+ * double-length time helpers, and exact sums of products in a sliding
+ * exponent window rounded to double length.  Numbers m 2^e are
+ * real/arith/bits.h's c2d_ext, times (h + l) 2^e real/arith/dd.h's c2d_dd
+ * (double length, unbounded exponent).  The method and the files:
+ * real/toia/README.md; the derivation: real/toia/solve.h.  Needs
+ * real/arith/bits.h, real/arith/exact.h, real/arith/sign.h and
  * real/arith/dd.h first. */
 #ifndef C2D_REAL_TOIA_NUM_H
 #define C2D_REAL_TOIA_NUM_H

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/problem.h - template: the time of impact under acceleration,
- * part 2 of 7: the problem (exact differences d0, v, a, the radius) and the
- * exact signs at t = 0, degree-2 polynomials in the inputs.  See real/toia/solve.h. */
+/* real/toia/problem.h - template, accelerated time of impact: the problem
+ * (exact differences d0, v, a on common scales, the radius) and the exact
+ * signs at t = 0, degree-2 polynomials in the inputs.  See
+ * real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_PROBLEM_H
 #define C2D_REAL_TOIA_PROBLEM_H
 /* ===================================================================== */

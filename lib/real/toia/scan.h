@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/scan.h - template: the time of impact under acceleration,
- * part 6 of 7: the certified fast paths, the pieces of (0, T) on which g is
- * monotone, and the scan over them.  See real/toia/solve.h. */
+/* real/toia/scan.h - template, accelerated time of impact: the certified
+ * fast paths, the pieces of (0, T) on which g is monotone, the decisions at
+ * maxima and minima of f, and the scan over the pieces.  See
+ * real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_SCAN_H
 #define C2D_REAL_TOIA_SCAN_H
 /* Fast paths: certified shortcuts for the common cases                  */

@@ -1,15 +1,15 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/solve.h - template: c2d_time_of_impact_accel, the time of impact of
- * two disks moving with constant accelerations, part 7 of 7 (the entry);
- * parts 1-6 in real/toia/num.h, _problem.h, _eval.h, _newton.h, _turns.h,
- * _scan.h, included before it in that order.  The including translation
- * unit provides c2d_real, c2d_real_bits, c2d_real_body, c2d_real_vec,
- * C2D_R_MANT, C2D_R_EMAX, C2D_R_EMIN, C2D_R_MAX, C2D_R_SQRT(x), c2d_status,
- * and the static helpers c2d_abs, c2d_pow2, c2d_scale2, c2d_ilogb,
- * c2d_two_sum, c2d_two_prod, c2d_finite4 (as in lib/real/arith/bits.h and
- * lib/real/arith/exact.h), and C2D_COLD (internal.h).  Everything defined here is
- * static and named c2d_toia_*; no macros.  The entry point is c2d_toia_solve
- * (at the end); nothing else is meant to be called.
+/* real/toia/solve.h - template, accelerated time of impact: the derivation
+ * (below), the signs at t = 0, the bound on the roots of g, and the entry
+ * c2d_toia_solve behind c2d_time_of_impact_accel.  The other files (num.h,
+ * problem.h, eval.h, newton.h, turns.h, scan.h) are included before it in
+ * that order (real/instance.h); what each holds and the method in short:
+ * real/toia/README.md.  The including translation unit provides the
+ * format's parameters (C2D_R_*), c2d_status and C2D_COLD (internal.h); the
+ * arithmetic is real/arith/'s (bits.h, exact.h, sign.h, dd.h), included
+ * before.  Everything the toia files define is static and named
+ * c2d_toia_*; no macros.  The entry point is c2d_toia_solve (at the end);
+ * nothing else is meant to be called.
  *
  * ======================================================================
  * THE PROBLEM
@@ -98,7 +98,8 @@
  *   elapsed); it is decided anyway for a = 0 (the minimum distance is
  *   |d0 x v|/|v| by Lagrange's identity: no time enters, c2d_toia_lin_min)
  *   and for motion along one line through the origin (c2d_toia_crosses).
- *   NOTES.md states the band precisely and measures it.
+ *   real/toia/README.md ("The band") states the band precisely, as the
+ *   tests check it, and what they measure of it.
  *
  * THE TIME
  *   The root is found by Newton in a local frame (plain arithmetic, with a
@@ -108,7 +109,8 @@
  *   is within its error bound; where the plain frame cannot represent the
  *   problem, a certified bisection/Newton in extended time takes over
  *   (c2d_toia_root_ext).  The result is within ~0.5 ulp(t) plus the time one
- *   rounding of |d| is worth at the approach speed (see NOTES.md).
+ *   rounding of |d| is worth at the approach speed (the contract in
+ *   include/collide2d.h; measured in real/toia/README.md).
  *
  * FAST PATHS (certified shortcuts for common cases, c2d_toia_fast)
  *   - g < 0 on all of [0, T] (its Bernstein coefficients on [0, T] are all

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/turns.h - template: the time of impact under acceleration,
- * part 5 of 7: the turning points of f (roots of g, bracketed, with f's
- * value there) and of g (the roots of the quadratic h).  See real/toia/solve.h. */
+/* real/toia/turns.h - template, accelerated time of impact: the turning
+ * points of f (roots of g, bracketed, with f's value there; a = 0 and
+ * collinear motion decided exactly) and of g (the roots of the quadratic h,
+ * with g's sign certified on the slivers).  See real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_TURNS_H
 #define C2D_REAL_TOIA_TURNS_H
 /* Turning points of f: brackets of the roots of g and f's value there   */
