@@ -27,7 +27,7 @@
 #include <stdio.h>
 
 /* The copy the accelerated time of impact carried (real/toia/newton.h
- * before it was built on c2d_ext_add), verbatim but for the name. */
+ * before it was built on c2d_ext_add), verbatim but for the names. */
 static void old_toia_ext_add(c2d_ext *r, const c2d_ext *a, const c2d_ext *b)
 {
     int k;

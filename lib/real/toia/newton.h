@@ -5,11 +5,16 @@
  * See real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_NEWTON_H
 #define C2D_REAL_TOIA_NEWTON_H
-/* Extended-number arithmetic for the bounds                             */
+/* ===================================================================== */
+/* Comparing bounds; time differences                                    */
 /* ===================================================================== */
 
 /* sign(a - b) of two extended numbers, with a relative slack of
- * 2^(4 - MANT) counted against the claim (returns 0 when closer). */
+ * 2^(4 - MANT) counted against the claim (returns 0 when closer).  b may
+ * have been rounded up out of [1, 2) by 1 + 2^(4 - MANT)
+ * (c2d_toia_split_sign): c2d_ext_add's difference may then be off in its
+ * last bit, which neither its sign nor the slack test can see
+ * (tests/unit/test_ext_add.c). */
 static int c2d_toia_ext_cmp(const c2d_ext *a, const c2d_ext *b)
 {
     c2d_ext d;
