@@ -71,7 +71,8 @@ static c2d_real c2d_toia_radius_scaled(c2d_toia_ctx *c, int E)
 static void c2d_toia_f_radius_dominates(c2d_toia_ctx *c, int E, c2d_toia_bounded *q, c2d_real *mag)
 {
     *mag = c->radius.m * c->radius.m;
-    c2d_toia_bounded_set(q, -(c->radius.m * c->radius.m), c2d_toia_pow2_clamped(2 * (E - c->radius.e) + 4) + c2d_pow2(-C2D_R_MANT), 2 * c->radius.e);
+    c2d_toia_bounded_set(q, -(c->radius.m * c->radius.m),
+                         c2d_toia_pow2_clamped(2 * (E - c->radius.e) + 4) + c2d_pow2(-C2D_R_MANT), 2 * c->radius.e);
 }
 
 /* h = |d'|^2 + d.a and hp = 3 d'.a from d (units 2^E), d' (2^E1) and

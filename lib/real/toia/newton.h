@@ -299,7 +299,8 @@ C2D_COLD void c2d_toia_root(c2d_toia_ctx *c, const c2d_dd *lo, const c2d_dd *hi,
     c2d_dd_copy(&b, hi);
     if (c2d_toia_frame_set(&fr, c, kt) != 0) {
         c2d_real x =
-            c2d_toia_frame_newton(&fr, which, c2d_toia_time_local(lo, kt), c2d_toia_time_local(hi, kt), sa, &ok, &width);
+            c2d_toia_frame_newton(&fr, which, c2d_toia_time_local(lo, kt), c2d_toia_time_local(hi, kt), sa, &ok,
+                                  &width);
         if (ok != 0) {
             c2d_dd_set(out, x, 0, kt);
             if (c2d_toia_time_cmp(out, lo) < 0) c2d_dd_copy(out, lo);

@@ -14,7 +14,7 @@
 /* Types and internal constants                                          */
 /* ===================================================================== */
 
-enum { C2D_TOIA_ATOMS = 32 }; /* atoms of an exact sum, at most (phase 0: h(0) = |v|^2 + d0.a) */
+enum { C2D_TOIA_ATOMS = 32 }; /* atoms of an exact sum, at most (the signs at 0: h(0) = |v|^2 + d0.a) */
 enum { C2D_TOIA_DATOMS = 14 }; /* atoms of d(t) at a working-precision time */
 /* Exact-sum window: atoms scaled by at least 2^-C2D_TOIA_WIN of the largest
  * stay normal, so their TwoSum chain is exact; the window's sum is accepted

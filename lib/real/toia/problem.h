@@ -15,9 +15,11 @@ C2D_COLD void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_ext 
 {
     c2d_ext hi, lo;
     if (k == 0) {
-        c2d_exact_diff(i == 0 ? c->body_b->pos.x : c->body_b->pos.y, i == 0 ? c->body_a->pos.x : c->body_a->pos.y, &hi, &lo);
+        c2d_exact_diff(i == 0 ? c->body_b->pos.x : c->body_b->pos.y, i == 0 ? c->body_a->pos.x : c->body_a->pos.y,
+                       &hi, &lo);
     } else if (k == 1) {
-        c2d_exact_diff(i == 0 ? c->body_b->vel.x : c->body_b->vel.y, i == 0 ? c->body_a->vel.x : c->body_a->vel.y, &hi, &lo);
+        c2d_exact_diff(i == 0 ? c->body_b->vel.x : c->body_b->vel.y, i == 0 ? c->body_a->vel.x : c->body_a->vel.y,
+                       &hi, &lo);
     } else {
         c2d_exact_diff(i == 0 ? c->acc_b->x : c->acc_b->y, i == 0 ? c->acc_a->x : c->acc_a->y, &hi, &lo);
     }
@@ -98,7 +100,7 @@ static int c2d_toia_push_dot(const c2d_toia_ctx *c, c2d_real *m, int *e, int n, 
 
 /* Exact sign of f(0) = |d0|^2 - R^2 (which 0), g(0) = d0.v (1),
  * h(0) = |v|^2 + d0.a (2) or hp(0) / 3 = v.a (3). */
-C2D_COLD int c2d_toia_sign0(c2d_toia_ctx *c, int which)
+C2D_COLD int c2d_toia_exact_sign_at0(c2d_toia_ctx *c, int which)
 {
     c2d_real m[C2D_TOIA_ATOMS], hi, lo;
     int e[C2D_TOIA_ATOMS], n = 0, k;

@@ -33,7 +33,8 @@ static int c2d_toia_piece_clear(const c2d_toia_frame *fr, c2d_real t0, c2d_real 
     c2d_real P[3][2], lo[2], hi[2], bx, by;
     int i;
     for (i = 0; i < 2; i++) {
-        c2d_real d0 = fr->pos[i] + (fr->vel[i] + fr->half_acc[i] * t0) * t0, d1 = fr->vel[i] + fr->acc[i] * t0, t1 = t0 + w;
+        c2d_real d0 = fr->pos[i] + (fr->vel[i] + fr->half_acc[i] * t0) * t0;
+        c2d_real d1 = fr->vel[i] + fr->acc[i] * t0, t1 = t0 + w;
         P[0][i] = d0;
         P[1][i] = d0 + d1 * (w * (c2d_real)0.5);
         P[2][i] = fr->pos[i] + (fr->vel[i] + fr->half_acc[i] * t1) * t1;
@@ -51,7 +52,8 @@ static int c2d_toia_piece_clear(const c2d_toia_frame *fr, c2d_real t0, c2d_real 
                  c2 = P[2][0] * P[0][1] - P[2][1] * P[0][0];
         if (!((c0 > 0 || c1 > 0 || c2 > 0) && (c0 < 0 || c1 < 0 || c2 < 0))) return 0; /* origin inside */
     }
-    return c2d_toia_segment_dist2(P[0], P[1]) > lim && c2d_toia_segment_dist2(P[1], P[2]) > lim && c2d_toia_segment_dist2(P[2], P[0]) > lim;
+    return c2d_toia_segment_dist2(P[0], P[1]) > lim && c2d_toia_segment_dist2(P[1], P[2]) > lim &&
+           c2d_toia_segment_dist2(P[2], P[0]) > lim;
 }
 
 /* f > 0 on [0, T] certified by the curve's control polygons: on each piece
@@ -113,8 +115,11 @@ static int c2d_toia_g_negative(const c2d_toia_frame *fr, c2d_real T)
     c2d_real e0, e1, e2, e3, m0, m1, m2, m3, b, mb;
     e0 = fr->pos[0] * fr->vel[0] + fr->pos[1] * fr->vel[1];
     m0 = c2d_abs(fr->pos[0] * fr->vel[0]) + c2d_abs(fr->pos[1] * fr->vel[1]);
-    e1 = ((fr->vel[0] * fr->vel[0] + fr->vel[1] * fr->vel[1]) + (fr->pos[0] * fr->acc[0] + fr->pos[1] * fr->acc[1])) * T;
-    m1 = ((fr->vel[0] * fr->vel[0] + fr->vel[1] * fr->vel[1]) + (c2d_abs(fr->pos[0] * fr->acc[0]) + c2d_abs(fr->pos[1] * fr->acc[1]))) * T;
+    e1 = ((fr->vel[0] * fr->vel[0] + fr->vel[1] * fr->vel[1]) + (fr->pos[0] * fr->acc[0] + fr->pos[1] * fr->acc[1])) *
+         T;
+    m1 = ((fr->vel[0] * fr->vel[0] + fr->vel[1] * fr->vel[1]) +
+          (c2d_abs(fr->pos[0] * fr->acc[0]) + c2d_abs(fr->pos[1] * fr->acc[1]))) *
+         T;
     e2 = (fr->vel[0] * fr->acc[0] + fr->vel[1] * fr->acc[1]) * (c2d_real)1.5 * T * T;
     m2 = (c2d_abs(fr->vel[0] * fr->acc[0]) + c2d_abs(fr->vel[1] * fr->acc[1])) * (c2d_real)1.5 * T * T;
     e3 = (fr->acc[0] * fr->acc[0] + fr->acc[1] * fr->acc[1]) * (c2d_real)0.5 * T * T * T;
@@ -184,7 +189,8 @@ C2D_COLD int c2d_toia_fast(c2d_toia_ctx *c, const c2d_dd *T, int t_is_h, c2d_dd 
     if (ev.sign[C2D_TOIA_QF] >= 0) return -1;
     if (c2d_toia_g_negative(&fr, c2d_toia_time_local(&x2, kt)) == 0) return -1;
     c2d_dd_set(out, x, 0, kt);
-    if (c2d_toia_polish(c, out, C2D_TOIA_QF, &z, &x2, C2D_R_MANT + 3) == 0) c2d_toia_root(c, &z, &x2, C2D_TOIA_QF, 1, out);
+    if (c2d_toia_polish(c, out, C2D_TOIA_QF, &z, &x2, C2D_R_MANT + 3) == 0)
+        c2d_toia_root(c, &z, &x2, C2D_TOIA_QF, 1, out);
     return 1;
 }
 
@@ -215,7 +221,7 @@ C2D_COLD int c2d_toia_vertex(c2d_toia_ctx *c, int exact, c2d_dd *mt)
  * order) as boundaries bt[] with g's sign on each one's sliver bs[] and
  * f's sign there bf[] when tier 1 gave it.  h is quadratic with leading
  * coefficient (3/2)|a|^2 > 0 and vertex m = -v.a / |a|^2; the exact signs
- * of h and h' just after 0 (phase 0) and, when m lies in (0, T), the
+ * of h and h' just after 0 (c2d_toia_signs_at0) and, when m lies in (0, T), the
  * certified sign of h(m) decide how many roots there are: h'(0+) >= 0 means
  * h increases on (0, inf) (one root, a minimum of g, iff h(0+) < 0);
  * otherwise h decreases until m, so h(0+) <= 0 gives one root beyond m

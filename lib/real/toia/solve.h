@@ -73,8 +73,8 @@
  *   per evaluation from the terms' exponents, so nothing over- or
  *   underflows whatever the inputs' magnitudes; times are (h + l) 2^e with an
  *   int exponent.  Signs at t = 0 are degree-2 polynomials in the inputs and
- *   are decided EXACTLY (c2d_toia_sign0): touching pairs that stay in
- *   contact, separate, or are pushed together get the exact answer.
+ *   are decided EXACTLY (c2d_toia_exact_sign_at0): touching pairs that stay
+ *   in contact, separate, or are pushed together get the exact answer.
  *
  * WHAT CANNOT BE DECIDED: THE BAND
  *   A sign that even tier 3 cannot certify means the exact quantity is
@@ -128,7 +128,7 @@
 /* sign of x 2^ex + y 2^ey (a term is absent when its flag is 0), certified
  * against the bound u8 (mx 2^ex + my 2^ey) (mx, my: the magnitudes the
  * terms' errors scale with) plus a floor for the alignment; 0 if not. */
-static int c2d_toia_sign2(c2d_real x, c2d_real mx, int hx, int ex, c2d_real y, c2d_real my, int hy, int ey)
+static int c2d_toia_sign_two_terms(c2d_real x, c2d_real mx, int hx, int ex, c2d_real y, c2d_real my, int hy, int ey)
 {
     const c2d_real u8 = c2d_pow2(-C2D_R_MANT + 2);
     int E = hx == 0 ? ey : (hy == 0 ? ex : c2d_toia_max_int(ex, ey));
@@ -144,7 +144,7 @@ static int c2d_toia_sign2(c2d_real x, c2d_real mx, int hx, int ex, c2d_real y, c
  * certain (the lo parts are below u of the hi parts, the products and sums
  * add a few u: 8u of the terms' magnitudes bounds it all), the exact sums
  * otherwise. */
-static void c2d_toia_phase0(c2d_toia_ctx *c, int *s)
+static void c2d_toia_signs_at0(c2d_toia_ctx *c, int *s)
 {
     c2d_real p2 = c->hi[0][0] * c->hi[0][0] + c->hi[0][1] * c->hi[0][1];
     c2d_real v2 = c->hi[1][0] * c->hi[1][0] + c->hi[1][1] * c->hi[1][1];
@@ -156,12 +156,13 @@ static void c2d_toia_phase0(c2d_toia_ctx *c, int *s)
     c2d_real mva = c2d_abs(c->hi[1][0] * c->hi[2][0]) + c2d_abs(c->hi[1][1] * c->hi[2][1]);
     c2d_real r2 = c->radius.m * c->radius.m;
     int k;
-    s[0] = c2d_toia_sign2(p2, p2, c->nonzero[0], 2 * c->exp[0], -r2, r2, 1, 2 * c->radius.e);
-    s[1] = c2d_toia_sign2(pv, mpv, c->nonzero[0] * c->nonzero[1], c->exp[0] + c->exp[1], 0, 0, 0, 0);
-    s[2] = c2d_toia_sign2(v2, v2, c->nonzero[1], 2 * c->exp[1], pa, mpa, c->nonzero[0] * c->nonzero[2], c->exp[0] + c->exp[2]);
-    s[3] = c2d_toia_sign2(va, mva, c->nonzero[1] * c->nonzero[2], c->exp[1] + c->exp[2], 0, 0, 0, 0);
+    s[0] = c2d_toia_sign_two_terms(p2, p2, c->nonzero[0], 2 * c->exp[0], -r2, r2, 1, 2 * c->radius.e);
+    s[1] = c2d_toia_sign_two_terms(pv, mpv, c->nonzero[0] * c->nonzero[1], c->exp[0] + c->exp[1], 0, 0, 0, 0);
+    s[2] = c2d_toia_sign_two_terms(v2, v2, c->nonzero[1], 2 * c->exp[1], pa, mpa, c->nonzero[0] * c->nonzero[2],
+                                   c->exp[0] + c->exp[2]);
+    s[3] = c2d_toia_sign_two_terms(va, mva, c->nonzero[1] * c->nonzero[2], c->exp[1] + c->exp[2], 0, 0, 0, 0);
     for (k = 0; k < 4; k++)
-        if (s[k] == 0) s[k] = c2d_toia_sign0(c, k);
+        if (s[k] == 0) s[k] = c2d_toia_exact_sign_at0(c, k);
 }
 
 /* ceil(a / b), b > 0 */
@@ -197,14 +198,14 @@ static int c2d_toia_bound(c2d_toia_ctx *c)
 }
 
 /* The path keeps clear of the disk on [0, T] (hull test in a frame). */
-C2D_COLD int c2d_toia_clear(c2d_toia_ctx *c, const c2d_dd *T)
+C2D_COLD int c2d_toia_path_clear(c2d_toia_ctx *c, const c2d_dd *T)
 {
     c2d_toia_frame fr;
     return c2d_toia_frame_set(&fr, c, T->e + 1) != 0 && c2d_toia_hull_clear(&fr, c2d_toia_time_local(T, T->e + 1)) != 0;
 }
 
 /* The contact time to the working format: RANGE beyond it; within [0, H]. */
-static c2d_status c2d_toia_out(const c2d_dd *out, c2d_real horizon, c2d_real *t)
+static c2d_status c2d_toia_result(const c2d_dd *out, c2d_real horizon, c2d_real *t)
 {
     c2d_real v = c2d_toia_time_value(out);
     if (!(v <= C2D_R_MAX)) return C2D_RANGE;
@@ -228,7 +229,7 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
     c2d_toia_load(&c, a, acc_a, b, acc_b, radius_sum);
     if (c.nonzero[1] == 0 && c.nonzero[2] == 0) return C2D_SEPARATING; /* constant distance: never approaching */
     if (radius_sum == 0) return C2D_SEPARATING;              /* f >= 0: never overlapping */
-    c2d_toia_phase0(&c, s0);
+    c2d_toia_signs_at0(&c, s0);
     /* the sign of g just after 0: first nonzero of g, g', g'', g''' > 0 */
     sg0 = s0[1] != 0 ? s0[1] : (s0[2] != 0 ? s0[2] : (s0[3] != 0 ? s0[3] : 1));
     if (s0[0] <= 0 && sg0 < 0) {
@@ -243,11 +244,11 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
     if (s0[0] > 0 && sg0 < 0) { /* separated and approaching: the common case */
         int fast = c2d_toia_fast(&c, &T, t_is_h, &out);
         if (fast == 0) return C2D_SEPARATING;
-        if (fast > 0) return c2d_toia_out(&out, horizon, t);
-    } else if (s0[0] > 0 && c2d_toia_clear(&c, &T) != 0) { /* separated and receding: clear for good? */
+        if (fast > 0) return c2d_toia_result(&out, horizon, t);
+    } else if (s0[0] > 0 && c2d_toia_path_clear(&c, &T) != 0) { /* separated and receding: clear for good? */
         return C2D_SEPARATING;
     }
-    if (c2d_toia_scan(&c, &T, t_is_h, s0, sg0, &out) == C2D_TOIA_HIT) return c2d_toia_out(&out, horizon, t);
+    if (c2d_toia_scan(&c, &T, t_is_h, s0, sg0, &out) == C2D_TOIA_HIT) return c2d_toia_result(&out, horizon, t);
     return C2D_SEPARATING;
 }
 

@@ -73,7 +73,8 @@ C2D_COLD int c2d_toia_groot_plain(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd
     c2d_real width = 0, xr;
     int ok = 0, kt = y->e + 1;
     if (c2d_toia_frame_set(&fr, c, kt) == 0) return 0;
-    xr = c2d_toia_frame_newton(&fr, C2D_TOIA_QG, c2d_toia_time_local(x, kt), c2d_toia_time_local(y, kt), -dir, &ok, &width);
+    xr = c2d_toia_frame_newton(&fr, C2D_TOIA_QG, c2d_toia_time_local(x, kt), c2d_toia_time_local(y, kt), -dir, &ok,
+                               &width);
     if (ok == 0) return 0;
     c2d_dd_set(r, xr, 0, kt);
     *dw = r->e - C2D_R_MANT + 4;
@@ -320,7 +321,8 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dd *s, int kind, int *sf, 
     for (tier = 1; tier <= 3; tier++) {
         if (tier == 1) {
             c2d_toia_eval_plain(c, s, &ev);
-            if (c2d_abs(ev.qty[C2D_TOIA_QF].value) > ev.qty[C2D_TOIA_QF].bound) *sf = c2d_toia_sign_of(ev.qty[C2D_TOIA_QF].value);
+            if (c2d_abs(ev.qty[C2D_TOIA_QF].value) > ev.qty[C2D_TOIA_QF].bound)
+                *sf = c2d_toia_sign_of(ev.qty[C2D_TOIA_QF].value);
         } else {
             if (tier == 2) {
                 c2d_dd lo, hi;
