@@ -23,7 +23,7 @@
  *           (f <= tie scale), likewise only up to the contact time;
  *   tie_fs, tie_gs: the same values measured against what the working
  *           precision's double-length time resolution (2^-2p t) is worth
- *           there (see NOTES.md, "the band").
+ *           there (see lib/real/toia/README.md, "The band").
  */
 #ifndef C2D_REF_TOI_ACCEL_H
 #define C2D_REF_TOI_ACCEL_H

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* real/arith/dd.h - template: double-length numbers with an extended exponent
- * ("dx"), for models whose results depend on differences that may cancel.
+ * ("dd"), for models whose results depend on differences that may cancel.
  * Needs real/arith/bits.h, real/arith/exact.h and real/arith/sign.h first.
  *
  * WHY
@@ -105,11 +105,22 @@ static void c2d_dd_add(c2d_dd *r, const c2d_dd *a, const c2d_dd *b, int sign)
     }
 }
 
+/* (ah + al)(bh + bl) on bare parts (no exponent, no normalisation): the
+ * high part returned, the low part in *l, renormalised by one TwoSum.  What
+ * c2d_dd_mul does to the parts, for callers that keep their own scale
+ * (real/toia/eval.h). */
+static c2d_real c2d_dd_mul_parts(c2d_real ah, c2d_real al, c2d_real bh, c2d_real bl, c2d_real *l)
+{
+    c2d_real err, p = c2d_two_prod(ah, bh, &err);
+    err += ah * bl + al * bh;
+    return c2d_two_sum(p, err, l);
+}
+
+/* (The TwoSum in c2d_dd_set returns the renormalised parts unchanged.) */
 static void c2d_dd_mul(c2d_dd *r, const c2d_dd *a, const c2d_dd *b)
 {
-    c2d_real err, p = c2d_two_prod(a->h, b->h, &err);
-    err += a->h * b->l + a->l * b->h;
-    c2d_dd_set(r, p, err, a->e + b->e);
+    c2d_real l, h = c2d_dd_mul_parts(a->h, a->l, b->h, b->l, &l);
+    c2d_dd_set(r, h, l, a->e + b->e);
 }
 
 /* r = a / b, b != 0. */

@@ -52,7 +52,9 @@ static void c2d_ext_add(c2d_ext *r, const c2d_ext *a, const c2d_ext *b, int sign
 {
     c2d_real am = a->m, bm = sign < 0 ? -b->m : b->m;
     int ae = a->e, be = b->e, k = a->e - b->e;
-    /* |b| < 2^(b.e + 1) <= half an ulp of a when k >= MANT + 3: a + b rounds to a. */
+    /* |b| < 2^(b.e + 1) <= a quarter of an ulp of a when k >= MANT + 3, below
+     * half the spacing even under a power of two: a + b rounds to a.  (At
+     * MANT + 2 it need not: tests/unit/test_ext_add.c.) */
     if (bm == 0 || (am != 0 && k >= C2D_R_MANT + 3)) {
         c2d_ext_set(r, am, ae);
     } else if (am == 0 || k <= -(C2D_R_MANT + 3)) {

@@ -1,60 +1,39 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/newton.h - template: the time of impact under acceleration,
- * part 4 of 7: extended arithmetic for the bounds, plain Newton in a local
- * frame, the double-length polish and bisection on certified signs.  See
- * real/toia/solve.h. */
+/* real/toia/newton.h - template, accelerated time of impact: the comparison
+ * of bounds with slack, plain Newton in a local frame, the double-length
+ * polish, and the root finders (bisection and Newton on certified signs).
+ * See real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_NEWTON_H
 #define C2D_REAL_TOIA_NEWTON_H
-/* Extended-number arithmetic for the bounds                             */
+/* ===================================================================== */
+/* Comparing bounds; time differences                                    */
 /* ===================================================================== */
 
-/* *r = a + b (one rounding). */
-static void c2d_toia_ext_add(c2d_ext *r, const c2d_ext *a, const c2d_ext *b)
-{
-    int k;
-    if (a->m == 0) {
-        c2d_ext_copy(r, b);
-        return;
-    }
-    if (b->m == 0) {
-        c2d_ext_copy(r, a);
-        return;
-    }
-    k = a->e - b->e;
-    if (k > C2D_R_MANT + 3) {
-        c2d_ext_copy(r, a);
-    } else if (k < -(C2D_R_MANT + 3)) {
-        c2d_ext_copy(r, b);
-    } else if (k >= 0) {
-        c2d_ext_set(r, a->m + c2d_scale2(b->m, -k), a->e);
-    } else {
-        c2d_ext_set(r, c2d_scale2(a->m, k) + b->m, b->e);
-    }
-}
-
 /* sign(a - b) of two extended numbers, with a relative slack of
- * 2^(4 - MANT) counted against the claim (returns 0 when closer). */
+ * 2^(4 - MANT) counted against the claim (returns 0 when closer).  b may
+ * have been rounded up out of [1, 2) by 1 + 2^(4 - MANT)
+ * (c2d_toia_split_sign): c2d_ext_add's difference may then be off in its
+ * last bit, which neither its sign nor the slack test can see
+ * (tests/unit/test_ext_add.c). */
 static int c2d_toia_ext_cmp(const c2d_ext *a, const c2d_ext *b)
 {
-    c2d_ext nb, d;
-    nb.m = -b->m;
-    nb.e = b->e;
-    c2d_toia_ext_add(&d, a, &nb);
+    c2d_ext d;
+    c2d_ext_add(&d, a, b, -1);
     if (d.m == 0) return 0;
     {
-        int top = a->m == 0 ? b->e : (b->m == 0 ? a->e : c2d_toia_imax(a->e, b->e));
+        int top = a->m == 0 ? b->e : (b->m == 0 ? a->e : c2d_toia_max_int(a->e, b->e));
         if (d.e < top + 5 - C2D_R_MANT) return 0;
     }
-    return c2d_toia_sgn(d.m);
+    return c2d_toia_sign_of(d.m);
 }
 
 /* The time difference a - b as an extended number. */
-static void c2d_toia_t_diff(c2d_ext *d, const c2d_dd *a, const c2d_dd *b)
+static void c2d_toia_time_diff(c2d_ext *d, const c2d_dd *a, const c2d_dd *b)
 {
     c2d_dd w;
     c2d_dd_copy(&w, a);
-    c2d_toia_t_add(&w, -b->h, b->e);
-    c2d_toia_t_add(&w, -b->l, b->e);
+    c2d_toia_time_add(&w, -b->h, b->e);
+    c2d_toia_time_add(&w, -b->l, b->e);
     c2d_ext_set(d, w.h + w.l, w.e);
 }
 
@@ -71,32 +50,32 @@ static int c2d_toia_frame_set(c2d_toia_frame *fr, c2d_toia_ctx *c, int kt)
     int kl = 0, have = 0, k, i, ok = 1;
     const int lim = C2D_R_EMIN / 2 + C2D_R_MANT;
     int ek[3];
-    ek[0] = c->ex[0];
-    ek[1] = c->ex[1] + kt;
-    ek[2] = c->ex[2] + 2 * kt - 1;
+    ek[0] = c->exp[0];
+    ek[1] = c->exp[1] + kt;
+    ek[2] = c->exp[2] + 2 * kt - 1;
     for (k = 0; k < 3; k++) {
-        if (c->nz[k] != 0 && (have == 0 || ek[k] > kl)) {
+        if (c->nonzero[k] != 0 && (have == 0 || ek[k] > kl)) {
             kl = ek[k];
             have = 1;
         }
     }
     kl += 3;
     for (k = 0; k < 3; k++)
-        if (c->nz[k] != 0 && ek[k] - kl < lim) ok = 0;
+        if (c->nonzero[k] != 0 && ek[k] - kl < lim) ok = 0;
     for (i = 0; i < 2; i++) {
-        fr->p[i] = c->nz[0] != 0 ? c->m[0][i] * c2d_toia_p2(ek[0] - kl) : 0;
-        fr->v[i] = c->nz[1] != 0 ? c->m[1][i] * c2d_toia_p2(ek[1] - kl) : 0;
-        fr->a[i] = c->nz[2] != 0 ? c->m[2][i] * c2d_toia_p2(ek[2] + 1 - kl) : 0;
-        fr->ha[i] = fr->a[i] * (c2d_real)0.5;
+        fr->pos[i] = c->nonzero[0] != 0 ? c->hi[0][i] * c2d_toia_pow2_clamped(ek[0] - kl) : 0;
+        fr->vel[i] = c->nonzero[1] != 0 ? c->hi[1][i] * c2d_toia_pow2_clamped(ek[1] - kl) : 0;
+        fr->acc[i] = c->nonzero[2] != 0 ? c->hi[2][i] * c2d_toia_pow2_clamped(ek[2] + 1 - kl) : 0;
+        fr->half_acc[i] = fr->acc[i] * (c2d_real)0.5;
     }
-    if (c->r.e - kl > C2D_R_EMAX / 2 - 4) {
-        fr->r2 = c2d_pow2(C2D_R_EMAX - 8);
+    if (c->radius.e - kl > C2D_R_EMAX / 2 - 4) {
+        fr->radius2 = c2d_pow2(C2D_R_EMAX - 8);
     } else {
-        c2d_real r = c->r.m * c2d_toia_p2(c->r.e - kl);
-        if (c->r.e - kl < lim) ok = 0;
-        fr->r2 = r * r;
+        c2d_real r = c->radius.m * c2d_toia_pow2_clamped(c->radius.e - kl);
+        if (c->radius.e - kl < lim) ok = 0;
+        fr->radius2 = r * r;
     }
-    fr->kt = kt;
+    fr->time_exp = kt;
     return ok;
 }
 
@@ -104,25 +83,25 @@ static int c2d_toia_frame_set(c2d_toia_frame *fr, c2d_toia_ctx *c, int kt)
  * h) and *noise, a bound on phi's rounding error in this plain arithmetic
  * (u times the magnitudes of the terms, constants rounded up): where
  * |phi| <= *noise its sign is not known. */
-static c2d_real c2d_toia_e0(const c2d_toia_frame *fr, int which, c2d_real x, c2d_real *dphi, c2d_real *noise)
+static c2d_real c2d_toia_frame_eval(const c2d_toia_frame *fr, int which, c2d_real x, c2d_real *dphi, c2d_real *noise)
 {
     const c2d_real u = c2d_pow2(-C2D_R_MANT - 1);
-    c2d_real d0 = fr->p[0] + (fr->v[0] + fr->ha[0] * x) * x;
-    c2d_real d1 = fr->p[1] + (fr->v[1] + fr->ha[1] * x) * x;
-    c2d_real e0 = fr->v[0] + fr->a[0] * x, e1 = fr->v[1] + fr->a[1] * x;
+    c2d_real d0 = fr->pos[0] + (fr->vel[0] + fr->half_acc[0] * x) * x;
+    c2d_real d1 = fr->pos[1] + (fr->vel[1] + fr->half_acc[1] * x) * x;
+    c2d_real e0 = fr->vel[0] + fr->acc[0] * x, e1 = fr->vel[1] + fr->acc[1] * x;
     c2d_real ax = c2d_abs(x);
-    c2d_real n0 = 5 * u * (c2d_abs(fr->p[0]) + (c2d_abs(fr->v[0]) + c2d_abs(fr->ha[0]) * ax) * ax);
-    c2d_real n1 = 5 * u * (c2d_abs(fr->p[1]) + (c2d_abs(fr->v[1]) + c2d_abs(fr->ha[1]) * ax) * ax);
-    c2d_real m0 = 3 * u * (c2d_abs(fr->v[0]) + c2d_abs(fr->a[0]) * ax);
-    c2d_real m1 = 3 * u * (c2d_abs(fr->v[1]) + c2d_abs(fr->a[1]) * ax);
+    c2d_real n0 = 5 * u * (c2d_abs(fr->pos[0]) + (c2d_abs(fr->vel[0]) + c2d_abs(fr->half_acc[0]) * ax) * ax);
+    c2d_real n1 = 5 * u * (c2d_abs(fr->pos[1]) + (c2d_abs(fr->vel[1]) + c2d_abs(fr->half_acc[1]) * ax) * ax);
+    c2d_real m0 = 3 * u * (c2d_abs(fr->vel[0]) + c2d_abs(fr->acc[0]) * ax);
+    c2d_real m1 = 3 * u * (c2d_abs(fr->vel[1]) + c2d_abs(fr->acc[1]) * ax);
     c2d_real g = d0 * e0 + d1 * e1;
     if (which == C2D_TOIA_QF) {
         c2d_real q = d0 * d0 + d1 * d1;
         *dphi = 2 * g;
-        *noise = (2 * c2d_abs(d0) + n0) * n0 + (2 * c2d_abs(d1) + n1) * n1 + 4 * u * (q + fr->r2);
-        return q - fr->r2;
+        *noise = (2 * c2d_abs(d0) + n0) * n0 + (2 * c2d_abs(d1) + n1) * n1 + 4 * u * (q + fr->radius2);
+        return q - fr->radius2;
     }
-    *dphi = (e0 * e0 + e1 * e1) + (d0 * fr->a[0] + d1 * fr->a[1]);
+    *dphi = (e0 * e0 + e1 * e1) + (d0 * fr->acc[0] + d1 * fr->acc[1]);
     *noise = (c2d_abs(e0) + m0) * n0 + c2d_abs(d0) * m0 + (c2d_abs(e1) + m1) * n1 + c2d_abs(d1) * m1 +
              3 * u * (c2d_abs(d0 * e0) + c2d_abs(d1 * e1));
     return g;
@@ -138,15 +117,15 @@ static c2d_real c2d_toia_e0(const c2d_toia_frame *fr, int which, c2d_real x, c2d
  * cancellation swamps the plain values (the caller then searches with
  * certified double-length values); *width = the last step or the noise's
  * width there, whichever is larger (local units). */
-static c2d_real c2d_toia_newton0(const c2d_toia_frame *fr, int which, c2d_real a, c2d_real b, int sa, int *ok,
+static c2d_real c2d_toia_frame_newton(const c2d_toia_frame *fr, int which, c2d_real a, c2d_real b, int sa, int *ok,
                                  c2d_real *width)
 {
     const c2d_real tol = c2d_pow2(-C2D_R_MANT);
     c2d_real x, dphi, prev = b - a, noise;
     int it;
-    c2d_real fa = c2d_toia_e0(fr, which, a, &dphi, &noise), fb;
+    c2d_real fa = c2d_toia_frame_eval(fr, which, a, &dphi, &noise), fb;
     if (!((c2d_real)sa * fa > noise)) fa = 0;
-    fb = c2d_toia_e0(fr, which, b, &dphi, &noise);
+    fb = c2d_toia_frame_eval(fr, which, b, &dphi, &noise);
     if (!((c2d_real)sa * fb < -noise)) fb = 0;
     *ok = 0;
     *width = b - a;
@@ -158,7 +137,7 @@ static c2d_real c2d_toia_newton0(const c2d_toia_frame *fr, int which, c2d_real a
     }
     if (!(x > a && x < b)) x = a + (b - a) * (c2d_real)0.5;
     for (it = 0; it < C2D_TOIA_ITER; it++) {
-        c2d_real xn, d, phi = c2d_toia_e0(fr, which, x, &dphi, &noise);
+        c2d_real xn, d, phi = c2d_toia_frame_eval(fr, which, x, &dphi, &noise);
         if (c2d_abs(phi) <= noise) {
             /* in the noise: fine if that region is narrow here */
             *ok = dphi != 0 && noise <= c2d_abs(dphi) * c2d_pow2(8 - C2D_R_MANT) * x;
@@ -186,7 +165,7 @@ static c2d_real c2d_toia_newton0(const c2d_toia_frame *fr, int which, c2d_real a
 }
 
 /* Local time of t in the frame 2^kt. */
-static c2d_real c2d_toia_t_local(const c2d_dd *t, int kt)
+static c2d_real c2d_toia_time_local(const c2d_dd *t, int kt)
 {
     if (t->h == 0) return 0;
     return c2d_scale2(t->h + t->l, t->e - kt);
@@ -206,45 +185,45 @@ static c2d_real c2d_toia_t_local(const c2d_dd *t, int kt)
 C2D_COLD int c2d_toia_polish(c2d_toia_ctx *c, c2d_dd *t, int which, const c2d_dd *lo, const c2d_dd *hi,
                            int bits)
 {
-    c2d_toia_ev ev;
+    c2d_toia_values ev;
     int it, tier = 2;
     for (it = 0; it < C2D_TOIA_POLISH; it++) {
-        const c2d_toia_v *q, *dq;
+        const c2d_toia_bounded *q, *dq;
         c2d_real num;
         int de;
-        if (tier == 2) c2d_toia_e2(c, t, &ev);
-        else c2d_toia_e3(c, t, &ev);
-        q = &ev.q[which];
-        dq = &ev.q[which + 1];
-        if (tier == 2 && (which == C2D_TOIA_QH ? q->r > c2d_pow2(-8) * ev.hmag
-                                                : q->r > c2d_pow2(-C2D_R_MANT - 5) *
+        if (tier == 2) c2d_toia_eval_double(c, t, &ev);
+        else c2d_toia_eval_exact(c, t, &ev);
+        q = &ev.qty[which];
+        dq = &ev.qty[which + 1];
+        if (tier == 2 && (which == C2D_TOIA_QH ? q->bound > c2d_pow2(-8) * ev.hmag
+                                                : q->bound > c2d_pow2(-C2D_R_MANT - 5) *
                                                              (which == C2D_TOIA_QF ? ev.fmag : ev.gmag))) {
             /* heavy cancellation: tier 2's error is not far below one
              * rounding of the scale (for h, computed in plain arithmetic
              * from tier 2's d and d': when it lost even that); continue
              * with exact d, d' */
             tier = 3;
-            c2d_toia_e3(c, t, &ev);
+            c2d_toia_eval_exact(c, t, &ev);
         }
-        if (q->v == 0 || c2d_abs(q->v) <= q->r) return 1;
-        if (dq->v == 0) return 0;
-        num = -q->v / (which == C2D_TOIA_QF ? 2 * dq->v : dq->v);
-        de = q->e - dq->e;
+        if (q->value == 0 || c2d_abs(q->value) <= q->bound) return 1;
+        if (dq->value == 0) return 0;
+        num = -q->value / (which == C2D_TOIA_QF ? 2 * dq->value : dq->value);
+        de = q->exp - dq->exp;
         {
             c2d_ext st, nx;
             c2d_ext_set(&st, num, de);
-            c2d_toia_t_add(t, num, de);
-            if (c2d_toia_t_cmp(t, lo) < 0) c2d_dd_copy(t, lo);
-            if (c2d_toia_t_cmp(t, hi) > 0) c2d_dd_copy(t, hi);
+            c2d_toia_time_add(t, num, de);
+            if (c2d_toia_time_cmp(t, lo) < 0) c2d_dd_copy(t, lo);
+            if (c2d_toia_time_cmp(t, hi) > 0) c2d_dd_copy(t, hi);
             if (st.m == 0 || st.e < t->e - bits) return 1;
             /* Newton's error after this step is at most (max|phi''| /
              * 2 min|phi'|) step^2; with phi''/phi' estimated here (x 4 for
              * their variation over the step) it already lies below 2^-bits
              * t when the step was small: no second evaluation needed */
-            if (which != C2D_TOIA_QH && st.e < t->e - C2D_R_MANT / 2 && ev.q[which + 2].v != 0) {
+            if (which != C2D_TOIA_QH && st.e < t->e - C2D_R_MANT / 2 && ev.qty[which + 2].value != 0) {
                 /* |phi''/phi'| = |h / g| for f (f'' = 2h, f' = 2g), |hp / h| for g */
-                c2d_ext_set(&nx, 4 * c2d_abs(ev.q[which + 2].v / dq->v) * st.m * st.m,
-                               ev.q[which + 2].e - dq->e + 2 * st.e);
+                c2d_ext_set(&nx, 4 * c2d_abs(ev.qty[which + 2].value / dq->value) * st.m * st.m,
+                               ev.qty[which + 2].exp - dq->exp + 2 * st.e);
                 if (nx.m == 0 || nx.e < t->e - bits) return 1;
             }
         }
@@ -261,34 +240,34 @@ C2D_COLD int c2d_toia_polish(c2d_toia_ctx *c, c2d_dd *t, int which, const c2d_dd
  * frame cannot represent (heavy cancellation, extreme magnitudes). */
 C2D_COLD void c2d_toia_root_ext(c2d_toia_ctx *c, c2d_dd *lo, c2d_dd *hi, int which, int sa, c2d_dd *out)
 {
-    c2d_toia_ev ev;
+    c2d_toia_values ev;
     c2d_dd t, tn;
     c2d_ext w, prev;
     int it, done = 0;
     prev.m = 0;
     prev.e = 0;
-    c2d_toia_t_mid(&t, lo, hi);
+    c2d_toia_time_mid(&t, lo, hi);
     for (it = 0; it < C2D_TOIA_ITER && done == 0; it++) {
-        const c2d_toia_v *q, *dq;
+        const c2d_toia_bounded *q, *dq;
         int s, newton = 0;
         c2d_toia_probe(c, &t, 1 << which, 2, &ev);
-        s = ev.s[which];
+        s = ev.sign[which];
         if (s == 0) {
             done = 1; /* at the root, to the evaluation's resolution */
         } else {
             if (s == sa) c2d_dd_copy(lo, &t);
             else c2d_dd_copy(hi, &t);
-            c2d_toia_t_diff(&w, hi, lo);
+            c2d_toia_time_diff(&w, hi, lo);
             if (w.m == 0 || w.e < hi->e - 2 * C2D_R_MANT) done = 1;
         }
-        q = &ev.q[which];
-        dq = &ev.q[which + 1];
-        if (done == 0 && dq->v != 0) {
+        q = &ev.qty[which];
+        dq = &ev.qty[which + 1];
+        if (done == 0 && dq->value != 0) {
             c2d_ext st;
-            c2d_ext_set(&st, -q->v / (which == C2D_TOIA_QF ? 2 * dq->v : dq->v), q->e - dq->e);
+            c2d_ext_set(&st, -q->value / (which == C2D_TOIA_QF ? 2 * dq->value : dq->value), q->exp - dq->exp);
             c2d_dd_copy(&tn, &t);
-            c2d_toia_t_add(&tn, st.m, st.e);
-            if (c2d_toia_t_cmp(&tn, lo) > 0 && c2d_toia_t_cmp(&tn, hi) < 0 &&
+            c2d_toia_time_add(&tn, st.m, st.e);
+            if (c2d_toia_time_cmp(&tn, lo) > 0 && c2d_toia_time_cmp(&tn, hi) < 0 &&
                 (prev.m == 0 || st.e < prev.e || (st.e == prev.e && c2d_abs(st.m) < c2d_abs(prev.m)))) {
                 newton = 1;
                 c2d_ext_copy(&prev, &st);
@@ -298,7 +277,7 @@ C2D_COLD void c2d_toia_root_ext(c2d_toia_ctx *c, c2d_dd *lo, c2d_dd *hi, int whi
         }
         if (done == 0 && newton == 0) {
             prev.m = 0;
-            c2d_toia_t_mid(&t, lo, hi);
+            c2d_toia_time_mid(&t, lo, hi);
         }
     }
     c2d_dd_copy(out, &t);
@@ -320,11 +299,12 @@ C2D_COLD void c2d_toia_root(c2d_toia_ctx *c, const c2d_dd *lo, const c2d_dd *hi,
     c2d_dd_copy(&b, hi);
     if (c2d_toia_frame_set(&fr, c, kt) != 0) {
         c2d_real x =
-            c2d_toia_newton0(&fr, which, c2d_toia_t_local(lo, kt), c2d_toia_t_local(hi, kt), sa, &ok, &width);
+            c2d_toia_frame_newton(&fr, which, c2d_toia_time_local(lo, kt), c2d_toia_time_local(hi, kt), sa, &ok,
+                                  &width);
         if (ok != 0) {
             c2d_dd_set(out, x, 0, kt);
-            if (c2d_toia_t_cmp(out, lo) < 0) c2d_dd_copy(out, lo);
-            if (c2d_toia_t_cmp(out, hi) > 0) c2d_dd_copy(out, hi);
+            if (c2d_toia_time_cmp(out, lo) < 0) c2d_dd_copy(out, lo);
+            if (c2d_toia_time_cmp(out, hi) > 0) c2d_dd_copy(out, hi);
             if (c2d_toia_polish(c, out, which, lo, hi, C2D_R_MANT + 3) != 0) return;
         }
     }

@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/num.h - template: the time of impact under acceleration, part 1
- * of 7: its types and exact sums of products in a sliding exponent window.
- * Numbers m 2^e are real/arith/bits.h's c2d_ext, times (h + l) 2^e real/arith/dd.h's
- * c2d_dd (double length, unbounded exponent).  The method and the order of
- * the parts: real/toia/solve.h.  Needs real/arith/bits.h, real/arith/exact.h, real/arith/sign.h and
+/* real/toia/num.h - template, accelerated time of impact: the types (the
+ * problem, certified values, evaluations, the local frame, brackets), the
+ * double-length time helpers, and exact sums of products in a sliding
+ * exponent window rounded to double length.  Numbers m 2^e are
+ * real/arith/bits.h's c2d_ext, times (h + l) 2^e real/arith/dd.h's c2d_dd
+ * (double length, unbounded exponent).  The method and the files:
+ * real/toia/README.md; the derivation: real/toia/solve.h.  Needs
+ * real/arith/bits.h, real/arith/exact.h, real/arith/sign.h and
  * real/arith/dd.h first. */
 #ifndef C2D_REAL_TOIA_NUM_H
 #define C2D_REAL_TOIA_NUM_H
@@ -11,7 +14,7 @@
 /* Types and internal constants                                          */
 /* ===================================================================== */
 
-enum { C2D_TOIA_ATOMS = 32 }; /* atoms of an exact sum, at most (phase 0: h(0) = |v|^2 + d0.a) */
+enum { C2D_TOIA_ATOMS = 32 }; /* atoms of an exact sum, at most (the signs at 0: h(0) = |v|^2 + d0.a) */
 enum { C2D_TOIA_DATOMS = 14 }; /* atoms of d(t) at a working-precision time */
 /* Exact-sum window: atoms scaled by at least 2^-C2D_TOIA_WIN of the largest
  * stay normal, so their TwoSum chain is exact; the window's sum is accepted
@@ -32,53 +35,56 @@ typedef enum c2d_toia_verdict {
     C2D_TOIA_HIT   /* contact at the time returned */
 } c2d_toia_verdict;
 
-/* A certified value: the exact quantity lies in [v - r, v + r] 2^e. */
-typedef struct c2d_toia_v {
-    c2d_real v, r;
-    int e;
-} c2d_toia_v;
+/* A certified value: the exact quantity lies in
+ * [value - bound, value + bound] 2^exp. */
+typedef struct c2d_toia_bounded {
+    c2d_real value, bound;
+    int exp;
+} c2d_toia_bounded;
 
-/* One evaluation at a time: f, g, h, hp with bounds, the signs certified
- * so far (+1, -1, or 0 = not certified) and the tier that produced q. */
-typedef struct c2d_toia_ev {
-    c2d_toia_v q[4];
+/* One evaluation at a time: f, g, h, hp (indexed by C2D_TOIA_Q*) with
+ * bounds, the signs certified so far (+1, -1, or 0 = not certified) and the
+ * tier that produced qty. */
+typedef struct c2d_toia_values {
+    c2d_toia_bounded qty[4];
     c2d_real fmag, gmag, hmag; /* |d|^2 + R^2, sum |d_i d'_i|, |d'|^2 + sum |d_i a_i| (their units) */
-    int s[4];
+    int sign[4];
     int tier;
-} c2d_toia_ev;
+} c2d_toia_values;
 
 /* The problem: d0 = pb - pa, v = vb - va, a = ab - aa (k = 0, 1, 2) as
- * vectors of their exact differences' hi (m) and lo (ml) parts on one scale
- * 2^ex[k] (largest hi component in [1, 2); a part far below may round or
- * vanish there, which the error floors cover), nz[k] = the vector is not
- * zero, and R.  The exact paths take the parts as extended numbers straight
- * from the inputs kept here (c2d_toia_part). */
+ * vectors of their exact differences' hi and lo parts on one scale
+ * 2^exp[k] (largest hi component in [1, 2); a part far below may round or
+ * vanish there, which the error floors cover), nonzero[k] = the vector is
+ * not zero, and the radius R.  The exact paths take the parts as extended
+ * numbers straight from the inputs kept here (c2d_toia_part). */
 typedef struct c2d_toia_ctx {
-    c2d_real m[3][2], ml[3][2];
-    int ex[3], nz[3];
-    c2d_ext r;
-    const c2d_real_body *ba, *bb;
-    const c2d_real_vec *aa, *ab;
+    c2d_real hi[3][2], lo[3][2];
+    int exp[3], nonzero[3];
+    c2d_ext radius;
+    const c2d_real_body *body_a, *body_b;
+    const c2d_real_vec *acc_a, *acc_b;
 } c2d_toia_ctx;
 
 /* A local frame for plain-arithmetic Newton iterations on an interval
- * [0, 2^kt): lengths in units of 2^kl, times of 2^kt (rounded copies). */
+ * [0, 2^time_exp): lengths in units of 2^kl (c2d_toia_frame_set), times in
+ * units of 2^time_exp; rounded copies of d0, v, a, a/2 and R^2 there. */
 typedef struct c2d_toia_frame {
-    c2d_real p[2], v[2], a[2], ha[2], r2;
-    int kt;
+    c2d_real pos[2], vel[2], acc[2], half_acc[2], radius2;
+    int time_exp;
 } c2d_toia_frame;
 
-/* f and g at a time, certified (as in c2d_toia_ev): what a bracket keeps. */
+/* f and g at a time, certified (as in c2d_toia_values): what a bracket keeps. */
 typedef struct c2d_toia_fg {
-    c2d_toia_v f, g;
-    int sf, sg;
+    c2d_toia_bounded f, g;
+    int sign_f, sign_g;
 } c2d_toia_fg;
 
 /* A g-root bracket: g changes sign on [lo, hi]; f and g at both ends. */
-typedef struct c2d_toia_br {
+typedef struct c2d_toia_bracket {
     c2d_dd lo, hi;
-    c2d_toia_fg elo, ehi;
-} c2d_toia_br;
+    c2d_toia_fg at_lo, at_hi;
+} c2d_toia_bracket;
 
 /* ===================================================================== */
 /* Extended numbers and times: helpers                                   */
@@ -87,34 +93,34 @@ typedef struct c2d_toia_br {
 /* 2^k clamped into the normal range.  Below it the result is 2^EMIN,
  * larger than the true factor by at most that: callers' error floors
  * (a few 2^EMIN in scaled units) cover it. */
-static c2d_real c2d_toia_p2(int k)
+static c2d_real c2d_toia_pow2_clamped(int k)
 {
     if (k < C2D_R_EMIN) return c2d_pow2(C2D_R_EMIN);
     if (k > C2D_R_EMAX) return c2d_pow2(C2D_R_EMAX);
     return c2d_pow2(k);
 }
 
-static int c2d_toia_sgn(c2d_real x) { return (x > 0) - (x < 0); }
+static int c2d_toia_sign_of(c2d_real x) { return (x > 0) - (x < 0); }
 
-static int c2d_toia_imax(int a, int b) { return a > b ? a : b; }
+static int c2d_toia_max_int(int a, int b) { return a > b ? a : b; }
 
 /* floor(a / b) for b > 0 (C's / truncates toward zero). */
-static int c2d_toia_fdiv(int a, int b)
+static int c2d_toia_floor_div(int a, int b)
 {
     int q = a / b;
     return (q * b > a) ? q - 1 : q;
 }
 
 /* sign(a - b). */
-static int c2d_toia_t_cmp(const c2d_dd *a, const c2d_dd *b)
+static int c2d_toia_time_cmp(const c2d_dd *a, const c2d_dd *b)
 {
     c2d_real ah, al, bh, bl, s, err;
     int k;
-    if (a->h == 0) return -c2d_toia_sgn(b->h);
-    if (b->h == 0) return c2d_toia_sgn(a->h);
+    if (a->h == 0) return -c2d_toia_sign_of(b->h);
+    if (b->h == 0) return c2d_toia_sign_of(a->h);
     k = a->e - b->e;
-    if (k > 3) return c2d_toia_sgn(a->h);
-    if (k < -3) return -c2d_toia_sgn(b->h);
+    if (k > 3) return c2d_toia_sign_of(a->h);
+    if (k < -3) return -c2d_toia_sign_of(b->h);
     ah = a->h;
     al = a->l;
     bh = b->h;
@@ -128,11 +134,11 @@ static int c2d_toia_t_cmp(const c2d_dd *a, const c2d_dd *b)
     }
     s = c2d_two_sum(ah, -bh, &err);
     err += al - bl;
-    return c2d_toia_sgn(s + err);
+    return c2d_toia_sign_of(s + err);
 }
 
 /* t += dm 2^de, in double length. */
-static void c2d_toia_t_add(c2d_dd *t, c2d_real dm, int de)
+static void c2d_toia_time_add(c2d_dd *t, c2d_real dm, int de)
 {
     c2d_ext d;
     c2d_real s, err, dv;
@@ -155,16 +161,16 @@ static void c2d_toia_t_add(c2d_dd *t, c2d_real dm, int de)
 }
 
 /* The time rounded to the working format, or C2D_R_MAX * 2 (Inf) beyond it. */
-static c2d_real c2d_toia_t_value(const c2d_dd *t)
+static c2d_real c2d_toia_time_value(const c2d_dd *t)
 {
     if (t->h == 0) return 0;
     if (t->e > C2D_R_EMAX) return C2D_R_MAX * 2;
-    return c2d_scale2(t->h + t->l, t->e);
+    return c2d_dd_value(t);
 }
 
 /* Double-length arithmetic on (h + l) 2^e (the classical double-double
  * algorithms with an exponent; each within a few u^2). */
-static void c2d_toia_t_sum(c2d_dd *r, const c2d_dd *a, const c2d_dd *b)
+static void c2d_toia_time_sum(c2d_dd *r, const c2d_dd *a, const c2d_dd *b)
 {
     const c2d_real pa[2] = {a->h, a->l}, pb[2] = {b->h, b->l};
     const int k = a->e - b->e;
@@ -182,7 +188,7 @@ static void c2d_toia_t_sum(c2d_dd *r, const c2d_dd *a, const c2d_dd *b)
  * the smallest positive time 2^(eb - 3 MANT) below which nothing is
  * resolved (bisection of [0, b] then reaches every scale in a few dozen
  * steps; the Newton phase does the rest). */
-static void c2d_toia_t_mid(c2d_dd *m, const c2d_dd *a, const c2d_dd *b)
+static void c2d_toia_time_mid(c2d_dd *m, const c2d_dd *a, const c2d_dd *b)
 {
     int ea = a->h == 0 ? b->e - 4 * C2D_R_MANT : a->e;
     if (a->h != 0 && b->e - a->e <= 1) {
@@ -193,36 +199,16 @@ static void c2d_toia_t_mid(c2d_dd *m, const c2d_dd *a, const c2d_dd *b)
         c2d_dd_set(m, h, l, b->e - 1);
         return;
     }
-    c2d_dd_set(m, (c2d_real)1.5, 0, c2d_toia_fdiv(ea + b->e, 2));
+    c2d_dd_set(m, (c2d_real)1.5, 0, c2d_toia_floor_div(ea + b->e, 2));
 }
 /* ===================================================================== */
 /* Exact sums of products (Shewchuk expansions in a sliding window)      */
 /* ===================================================================== */
 
-/* Add b to the nonoverlapping expansion w[0..n) (increasing magnitude),
- * exactly (GROW-EXPANSION with zero elimination).  New length <= n + 1. */
-static int c2d_toia_grow(c2d_real *w, int n, c2d_real b)
-{
-    c2d_real q = b, h;
-    int i, k = 0;
-    for (i = 0; i < n; i++) {
-        q = c2d_two_sum(q, w[i], &h);
-        if (h != 0) {
-            w[k] = h;
-            k++;
-        }
-    }
-    if (q != 0) {
-        w[k] = q;
-        k++;
-    }
-    return k;
-}
-
 /* Append sgn * x * y * 2^shift as (at most) two atoms, exactly: the
  * significands' product is hi + lo by TwoProduct (both in [1, 4) or
  * a multiple of 2^-2MANT: neither over- nor underflows). */
-static int c2d_toia_push(c2d_real *m, int *e, int n, const c2d_ext *x, const c2d_ext *y, int shift, int sgn)
+static int c2d_toia_push_product(c2d_real *m, int *e, int n, const c2d_ext *x, const c2d_ext *y, int shift, int sgn)
 {
     c2d_real lo, hi;
     c2d_ext z;
@@ -246,7 +232,7 @@ static int c2d_toia_push(c2d_real *m, int *e, int n, const c2d_ext *x, const c2d
 }
 
 /* Append sgn * x as one atom. */
-static int c2d_toia_push1(c2d_real *m, int *e, int n, const c2d_ext *x, int sgn)
+static int c2d_toia_push_atom(c2d_real *m, int *e, int n, const c2d_ext *x, int sgn)
 {
     if (x->m == 0) return n;
     m[n] = sgn < 0 ? -x->m : x->m;
@@ -268,7 +254,7 @@ static int c2d_toia_push1(c2d_real *m, int *e, int n, const c2d_ext *x, int sgn)
  * Works in place: the window's atoms are moved to the front and the
  * expansion grows over them (after reading atom j it has at most j + 1
  * components), the others behind.  The atoms are overwritten. */
-C2D_COLD int c2d_toia_ext_sum(c2d_real *m, int *e, int n, c2d_real *hi, c2d_real *lo, int *k_out)
+C2D_COLD int c2d_toia_exact_sum(c2d_real *m, int *e, int n, c2d_real *hi, c2d_real *lo, int *k_out)
 {
     for (;;) {
         int i, j, k = 0, nw = 0, top = 0, found = 0;
@@ -297,7 +283,7 @@ C2D_COLD int c2d_toia_ext_sum(c2d_real *m, int *e, int n, c2d_real *hi, c2d_real
                 nw++;
             }
         }
-        for (j = 0; j < nw; j++) k = c2d_toia_grow(m, k, m[j]);
+        for (j = 0; j < nw; j++) k = c2d_grow(m, k, m[j]);
         /* Round the exact components (increasing, nonoverlapping) to
          * double length: all but the largest sum to less than an ulp of the
          * largest, so adding them in plain arithmetic errs by at most

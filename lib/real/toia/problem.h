@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/problem.h - template: the time of impact under acceleration,
- * part 2 of 7: the problem (exact differences d0, v, a, the radius) and the
- * exact signs at t = 0, degree-2 polynomials in the inputs.  See real/toia/solve.h. */
+/* real/toia/problem.h - template, accelerated time of impact: the problem
+ * (exact differences d0, v, a on common scales, the radius) and the exact
+ * signs at t = 0, degree-2 polynomials in the inputs.  See
+ * real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_PROBLEM_H
 #define C2D_REAL_TOIA_PROBLEM_H
 /* ===================================================================== */
@@ -14,17 +15,19 @@ C2D_COLD void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_ext 
 {
     c2d_ext hi, lo;
     if (k == 0) {
-        c2d_exact_diff(i == 0 ? c->bb->pos.x : c->bb->pos.y, i == 0 ? c->ba->pos.x : c->ba->pos.y, &hi, &lo);
+        c2d_exact_diff(i == 0 ? c->body_b->pos.x : c->body_b->pos.y, i == 0 ? c->body_a->pos.x : c->body_a->pos.y,
+                       &hi, &lo);
     } else if (k == 1) {
-        c2d_exact_diff(i == 0 ? c->bb->vel.x : c->bb->vel.y, i == 0 ? c->ba->vel.x : c->ba->vel.y, &hi, &lo);
+        c2d_exact_diff(i == 0 ? c->body_b->vel.x : c->body_b->vel.y, i == 0 ? c->body_a->vel.x : c->body_a->vel.y,
+                       &hi, &lo);
     } else {
-        c2d_exact_diff(i == 0 ? c->ab->x : c->ab->y, i == 0 ? c->aa->x : c->aa->y, &hi, &lo);
+        c2d_exact_diff(i == 0 ? c->acc_b->x : c->acc_b->y, i == 0 ? c->acc_a->x : c->acc_a->y, &hi, &lo);
     }
     c2d_ext_copy(x, j == 0 ? &hi : &lo);
 }
 
 /* One vector's exact difference x1 - x0 (per axis hi + lo, halved first
- * when it could overflow) as hi/lo vectors on a common scale 2^ex. */
+ * when it could overflow) as hi/lo vectors on a common scale 2^exp[k]. */
 static void c2d_toia_load_vec(c2d_toia_ctx *c, int k, c2d_real x1, c2d_real x0, c2d_real y1, c2d_real y0)
 {
     const c2d_real big = c2d_pow2(C2D_R_EMAX - 1);
@@ -46,18 +49,18 @@ static void c2d_toia_load_vec(c2d_toia_ctx *c, int k, c2d_real x1, c2d_real x0, 
             nz = 1;
         }
     }
-    c->ex[k] = top + sh;
-    c->nz[k] = nz;
+    c->exp[k] = top + sh;
+    c->nonzero[k] = nz;
     if (top >= -C2D_R_EMAX && top <= -C2D_R_EMIN) { /* 2^-top is a normal number: one exact multiply */
         c2d_real s = c2d_pow2(-top);
         for (i = 0; i < 2; i++) {
-            c->m[k][i] = h[i] * s;
-            c->ml[k][i] = l[i] * s;
+            c->hi[k][i] = h[i] * s;
+            c->lo[k][i] = l[i] * s;
         }
     } else {
         for (i = 0; i < 2; i++) {
-            c->m[k][i] = c2d_scale2(h[i], -top);
-            c->ml[k][i] = c2d_scale2(l[i], -top);
+            c->hi[k][i] = c2d_scale2(h[i], -top);
+            c->lo[k][i] = c2d_scale2(l[i], -top);
         }
     }
 }
@@ -65,14 +68,14 @@ static void c2d_toia_load_vec(c2d_toia_ctx *c, int k, c2d_real x1, c2d_real x0, 
 static void c2d_toia_load(c2d_toia_ctx *c, const c2d_real_body *a, const c2d_real_vec *aa, const c2d_real_body *b,
                           const c2d_real_vec *ab, c2d_real radius_sum)
 {
-    c->ba = a;
-    c->bb = b;
-    c->aa = aa;
-    c->ab = ab;
+    c->body_a = a;
+    c->body_b = b;
+    c->acc_a = aa;
+    c->acc_b = ab;
     c2d_toia_load_vec(c, 0, b->pos.x, a->pos.x, b->pos.y, a->pos.y);
     c2d_toia_load_vec(c, 1, b->vel.x, a->vel.x, b->vel.y, a->vel.y);
     c2d_toia_load_vec(c, 2, ab->x, aa->x, ab->y, aa->y);
-    c2d_ext_set(&c->r, radius_sum, 0);
+    c2d_ext_set(&c->radius, radius_sum, 0);
 }
 
 /* ===================================================================== */
@@ -90,20 +93,20 @@ static int c2d_toia_push_dot(const c2d_toia_ctx *c, c2d_real *m, int *e, int n, 
                 c2d_ext x, y;
                 c2d_toia_part(c, kx, i, j, &x);
                 c2d_toia_part(c, ky, i, k, &y);
-                n = c2d_toia_push(m, e, n, &x, &y, 0, sgn);
+                n = c2d_toia_push_product(m, e, n, &x, &y, 0, sgn);
             }
     return n;
 }
 
 /* Exact sign of f(0) = |d0|^2 - R^2 (which 0), g(0) = d0.v (1),
  * h(0) = |v|^2 + d0.a (2) or hp(0) / 3 = v.a (3). */
-C2D_COLD int c2d_toia_sign0(c2d_toia_ctx *c, int which)
+C2D_COLD int c2d_toia_exact_sign_at0(c2d_toia_ctx *c, int which)
 {
     c2d_real m[C2D_TOIA_ATOMS], hi, lo;
     int e[C2D_TOIA_ATOMS], n = 0, k;
     if (which == C2D_TOIA_QF) {
         n = c2d_toia_push_dot(c, m, e, n, 0, 0, 1);
-        n = c2d_toia_push(m, e, n, &c->r, &c->r, 0, -1);
+        n = c2d_toia_push_product(m, e, n, &c->radius, &c->radius, 0, -1);
     } else if (which == C2D_TOIA_QG) {
         n = c2d_toia_push_dot(c, m, e, n, 0, 1, 1);
     } else if (which == C2D_TOIA_QH) {
@@ -112,8 +115,8 @@ C2D_COLD int c2d_toia_sign0(c2d_toia_ctx *c, int which)
     } else {
         n = c2d_toia_push_dot(c, m, e, n, 1, 2, 1);
     }
-    (void)c2d_toia_ext_sum(m, e, n, &hi, &lo, &k);
-    return c2d_toia_sgn(hi);
+    (void)c2d_toia_exact_sum(m, e, n, &hi, &lo, &k);
+    return c2d_toia_sign_of(hi);
 }
 /* ===================================================================== */
 

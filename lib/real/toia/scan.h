@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/scan.h - template: the time of impact under acceleration,
- * part 6 of 7: the certified fast paths, the pieces of (0, T) on which g is
- * monotone, and the scan over them.  See real/toia/solve.h. */
+/* real/toia/scan.h - template, accelerated time of impact: the certified
+ * fast paths, the pieces of (0, T) on which g is monotone, the decisions at
+ * maxima and minima of f, and the scan over the pieces.  See
+ * real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_SCAN_H
 #define C2D_REAL_TOIA_SCAN_H
 /* Fast paths: certified shortcuts for the common cases                  */
@@ -10,7 +11,7 @@
 /* Lower bound of the squared distance from the origin to segment [A, B]:
  * the squared distance to the line through them when the origin projects
  * within (or near) the segment, else the nearer endpoint's. */
-static c2d_real c2d_toia_seg2(const c2d_real *A, const c2d_real *B)
+static c2d_real c2d_toia_segment_dist2(const c2d_real *A, const c2d_real *B)
 {
     c2d_real ex = B[0] - A[0], ey = B[1] - A[1], e2 = ex * ex + ey * ey;
     c2d_real a2 = A[0] * A[0] + A[1] * A[1], b2 = B[0] * B[0] + B[1] * B[1];
@@ -32,10 +33,11 @@ static int c2d_toia_piece_clear(const c2d_toia_frame *fr, c2d_real t0, c2d_real 
     c2d_real P[3][2], lo[2], hi[2], bx, by;
     int i;
     for (i = 0; i < 2; i++) {
-        c2d_real d0 = fr->p[i] + (fr->v[i] + fr->ha[i] * t0) * t0, d1 = fr->v[i] + fr->a[i] * t0, t1 = t0 + w;
+        c2d_real d0 = fr->pos[i] + (fr->vel[i] + fr->half_acc[i] * t0) * t0;
+        c2d_real d1 = fr->vel[i] + fr->acc[i] * t0, t1 = t0 + w;
         P[0][i] = d0;
         P[1][i] = d0 + d1 * (w * (c2d_real)0.5);
-        P[2][i] = fr->p[i] + (fr->v[i] + fr->ha[i] * t1) * t1;
+        P[2][i] = fr->pos[i] + (fr->vel[i] + fr->half_acc[i] * t1) * t1;
         lo[i] = P[0][i] < P[1][i] ? P[0][i] : P[1][i];
         lo[i] = lo[i] < P[2][i] ? lo[i] : P[2][i];
         hi[i] = P[0][i] > P[1][i] ? P[0][i] : P[1][i];
@@ -50,7 +52,8 @@ static int c2d_toia_piece_clear(const c2d_toia_frame *fr, c2d_real t0, c2d_real 
                  c2 = P[2][0] * P[0][1] - P[2][1] * P[0][0];
         if (!((c0 > 0 || c1 > 0 || c2 > 0) && (c0 < 0 || c1 < 0 || c2 < 0))) return 0; /* origin inside */
     }
-    return c2d_toia_seg2(P[0], P[1]) > lim && c2d_toia_seg2(P[1], P[2]) > lim && c2d_toia_seg2(P[2], P[0]) > lim;
+    return c2d_toia_segment_dist2(P[0], P[1]) > lim && c2d_toia_segment_dist2(P[1], P[2]) > lim &&
+           c2d_toia_segment_dist2(P[2], P[0]) > lim;
 }
 
 /* f > 0 on [0, T] certified by the curve's control polygons: on each piece
@@ -66,10 +69,10 @@ C2D_COLD int c2d_toia_hull_clear(const c2d_toia_frame *fr, c2d_real T)
 {
     const c2d_real u = c2d_pow2(-C2D_R_MANT - 1);
     c2d_real S, r, lim;
-    if (!(fr->r2 > 0) || fr->r2 >= c2d_pow2(C2D_R_EMAX - 8)) return 0;
-    S = (c2d_abs(fr->p[0]) + c2d_abs(fr->p[1])) + (c2d_abs(fr->v[0]) + c2d_abs(fr->v[1])) * T +
-        (c2d_abs(fr->a[0]) + c2d_abs(fr->a[1])) * T * T;
-    r = C2D_R_SQRT(fr->r2) * (1 + c2d_pow2(4 - C2D_R_MANT)) + 6 * u * S + c2d_pow2(C2D_R_EMIN / 2);
+    if (!(fr->radius2 > 0) || fr->radius2 >= c2d_pow2(C2D_R_EMAX - 8)) return 0;
+    S = (c2d_abs(fr->pos[0]) + c2d_abs(fr->pos[1])) + (c2d_abs(fr->vel[0]) + c2d_abs(fr->vel[1])) * T +
+        (c2d_abs(fr->acc[0]) + c2d_abs(fr->acc[1])) * T * T;
+    r = C2D_R_SQRT(fr->radius2) * (1 + c2d_pow2(4 - C2D_R_MANT)) + 6 * u * S + c2d_pow2(C2D_R_EMIN / 2);
     lim = r * r * (1 + c2d_pow2(6 - C2D_R_MANT));
     /* depth-first over the binary subdivision (pieces of [0, T] down to T/16) */
     {
@@ -106,17 +109,20 @@ C2D_COLD int c2d_toia_hull_clear(const c2d_toia_frame *fr, c2d_real T)
  * e1/3, b2 = e0 + 2e1/3 + e2/3, b3 = e0 + e1 + e2 + e3 (e_i = g_i T^i).  All
  * < 0 with a margin of 16u times the magnitudes involved (the frame's
  * rounded inputs and these few operations) means g < 0 throughout. */
-static int c2d_toia_gneg(const c2d_toia_frame *fr, c2d_real T)
+static int c2d_toia_g_negative(const c2d_toia_frame *fr, c2d_real T)
 {
     const c2d_real u = c2d_pow2(-C2D_R_MANT - 1);
     c2d_real e0, e1, e2, e3, m0, m1, m2, m3, b, mb;
-    e0 = fr->p[0] * fr->v[0] + fr->p[1] * fr->v[1];
-    m0 = c2d_abs(fr->p[0] * fr->v[0]) + c2d_abs(fr->p[1] * fr->v[1]);
-    e1 = ((fr->v[0] * fr->v[0] + fr->v[1] * fr->v[1]) + (fr->p[0] * fr->a[0] + fr->p[1] * fr->a[1])) * T;
-    m1 = ((fr->v[0] * fr->v[0] + fr->v[1] * fr->v[1]) + (c2d_abs(fr->p[0] * fr->a[0]) + c2d_abs(fr->p[1] * fr->a[1]))) * T;
-    e2 = (fr->v[0] * fr->a[0] + fr->v[1] * fr->a[1]) * (c2d_real)1.5 * T * T;
-    m2 = (c2d_abs(fr->v[0] * fr->a[0]) + c2d_abs(fr->v[1] * fr->a[1])) * (c2d_real)1.5 * T * T;
-    e3 = (fr->a[0] * fr->a[0] + fr->a[1] * fr->a[1]) * (c2d_real)0.5 * T * T * T;
+    e0 = fr->pos[0] * fr->vel[0] + fr->pos[1] * fr->vel[1];
+    m0 = c2d_abs(fr->pos[0] * fr->vel[0]) + c2d_abs(fr->pos[1] * fr->vel[1]);
+    e1 = ((fr->vel[0] * fr->vel[0] + fr->vel[1] * fr->vel[1]) + (fr->pos[0] * fr->acc[0] + fr->pos[1] * fr->acc[1])) *
+         T;
+    m1 = ((fr->vel[0] * fr->vel[0] + fr->vel[1] * fr->vel[1]) +
+          (c2d_abs(fr->pos[0] * fr->acc[0]) + c2d_abs(fr->pos[1] * fr->acc[1]))) *
+         T;
+    e2 = (fr->vel[0] * fr->acc[0] + fr->vel[1] * fr->acc[1]) * (c2d_real)1.5 * T * T;
+    m2 = (c2d_abs(fr->vel[0] * fr->acc[0]) + c2d_abs(fr->vel[1] * fr->acc[1])) * (c2d_real)1.5 * T * T;
+    e3 = (fr->acc[0] * fr->acc[0] + fr->acc[1] * fr->acc[1]) * (c2d_real)0.5 * T * T * T;
     m3 = e3;
     mb = 16 * u * (m0 + m1 + m2 + m3) + c2d_pow2(C2D_R_EMIN + 8);
     if (!(e0 < -mb)) return 0;
@@ -139,17 +145,17 @@ static int c2d_toia_gneg(const c2d_toia_frame *fr, c2d_real T)
 C2D_COLD int c2d_toia_fast(c2d_toia_ctx *c, const c2d_dd *T, int t_is_h, c2d_dd *out)
 {
     c2d_toia_frame fr;
-    c2d_toia_ev ev;
+    c2d_toia_values ev;
     c2d_dd z, x2;
     c2d_real tl, x, dphi, noise;
     int kt = T->e + 1, it, settled = 0;
     if (c2d_toia_frame_set(&fr, c, kt) == 0) return -1;
-    tl = c2d_toia_t_local(T, kt);
+    tl = c2d_toia_time_local(T, kt);
     c2d_dd_set(&z, 0, 0, 0);
-    if (c2d_toia_gneg(&fr, tl) != 0) {
+    if (c2d_toia_g_negative(&fr, tl) != 0) {
         c2d_toia_probe(c, T, C2D_TOIA_MF, 1, &ev);
-        if (ev.s[C2D_TOIA_QF] > 0) return 0;
-        if (ev.s[C2D_TOIA_QF] < 0 || t_is_h != 0) {
+        if (ev.sign[C2D_TOIA_QF] > 0) return 0;
+        if (ev.sign[C2D_TOIA_QF] < 0 || t_is_h != 0) {
             c2d_toia_root(c, &z, T, C2D_TOIA_QF, 1, out);
             return 1;
         }
@@ -159,7 +165,7 @@ C2D_COLD int c2d_toia_fast(c2d_toia_ctx *c, const c2d_dd *T, int t_is_h, c2d_dd 
     /* Newton from 0 */
     x = 0;
     for (it = 0; it < 40 && settled == 0; it++) {
-        c2d_real phi = c2d_toia_e0(&fr, C2D_TOIA_QF, x, &dphi, &noise);
+        c2d_real phi = c2d_toia_frame_eval(&fr, C2D_TOIA_QF, x, &dphi, &noise);
         if (!(dphi < 0)) return -1;
         if (c2d_abs(phi) <= noise) {
             settled = 1;
@@ -174,16 +180,17 @@ C2D_COLD int c2d_toia_fast(c2d_toia_ctx *c, const c2d_dd *T, int t_is_h, c2d_dd 
     /* a point just past the root: 2^-20 relative, or 16 noise widths */
     {
         c2d_real w = x * c2d_pow2(-20);
-        (void)c2d_toia_e0(&fr, C2D_TOIA_QF, x, &dphi, &noise);
+        (void)c2d_toia_frame_eval(&fr, C2D_TOIA_QF, x, &dphi, &noise);
         if (dphi < 0 && 16 * noise / -dphi > w) w = 16 * noise / -dphi;
         if (!(x + w <= tl)) return -1;
         c2d_dd_set(&x2, x + w, 0, kt);
     }
     c2d_toia_probe(c, &x2, C2D_TOIA_MF, 1, &ev);
-    if (ev.s[C2D_TOIA_QF] >= 0) return -1;
-    if (c2d_toia_gneg(&fr, c2d_toia_t_local(&x2, kt)) == 0) return -1;
+    if (ev.sign[C2D_TOIA_QF] >= 0) return -1;
+    if (c2d_toia_g_negative(&fr, c2d_toia_time_local(&x2, kt)) == 0) return -1;
     c2d_dd_set(out, x, 0, kt);
-    if (c2d_toia_polish(c, out, C2D_TOIA_QF, &z, &x2, C2D_R_MANT + 3) == 0) c2d_toia_root(c, &z, &x2, C2D_TOIA_QF, 1, out);
+    if (c2d_toia_polish(c, out, C2D_TOIA_QF, &z, &x2, C2D_R_MANT + 3) == 0)
+        c2d_toia_root(c, &z, &x2, C2D_TOIA_QF, 1, out);
     return 1;
 }
 
@@ -198,14 +205,14 @@ C2D_COLD int c2d_toia_vertex(c2d_toia_ctx *c, int exact, c2d_dd *mt)
 {
     c2d_dd a2, va;
     c2d_real rel;
-    c2d_toia_dotq(c, 2, 2, -1, -1, 1, exact, &a2);
-    c2d_toia_dotq(c, 1, 2, -1, -1, -1, exact, &va);
+    c2d_toia_dot_inputs(c, 2, 2, -1, -1, 1, exact, &a2);
+    c2d_toia_dot_inputs(c, 1, 2, -1, -1, -1, exact, &va);
     c2d_dd_div(mt, &va, &a2);
     if (mt->h == 0) return C2D_R_EMIN - C2D_R_MANT;
     if (exact != 0) return mt->e - 2 * C2D_R_MANT + 3; /* 8 u^2 relative */
     /* from the hi parts: 4u of sum |v_i a_i| / |v.a| (cancellation) + 4u */
-    rel = (c2d_abs(c->m[1][0] * c->m[2][0]) + c2d_abs(c->m[1][1] * c->m[2][1])) /
-          c2d_abs(c->m[1][0] * c->m[2][0] + c->m[1][1] * c->m[2][1]);
+    rel = (c2d_abs(c->hi[1][0] * c->hi[2][0]) + c2d_abs(c->hi[1][1] * c->hi[2][1])) /
+          c2d_abs(c->hi[1][0] * c->hi[2][0] + c->hi[1][1] * c->hi[2][1]);
     if (!(rel < c2d_pow2(C2D_R_MANT))) return mt->e + 1; /* no information */
     return mt->e + c2d_ilogb(rel + 1) + 4 - C2D_R_MANT;
 }
@@ -214,7 +221,7 @@ C2D_COLD int c2d_toia_vertex(c2d_toia_ctx *c, int exact, c2d_dd *mt)
  * order) as boundaries bt[] with g's sign on each one's sliver bs[] and
  * f's sign there bf[] when tier 1 gave it.  h is quadratic with leading
  * coefficient (3/2)|a|^2 > 0 and vertex m = -v.a / |a|^2; the exact signs
- * of h and h' just after 0 (phase 0) and, when m lies in (0, T), the
+ * of h and h' just after 0 (c2d_toia_signs_at0) and, when m lies in (0, T), the
  * certified sign of h(m) decide how many roots there are: h'(0+) >= 0 means
  * h increases on (0, inf) (one root, a minimum of g, iff h(0+) < 0);
  * otherwise h decreases until m, so h(0+) <= 0 gives one root beyond m
@@ -223,20 +230,20 @@ C2D_COLD int c2d_toia_vertex(c2d_toia_ctx *c, int exact, c2d_dd *mt)
  * uncertain h(m) is a near-double root of h: g then has an inflection
  * with g' ~ 0 and no usable split (the wiggle of g there is at most
  * (2/3)|h(m)| sqrt(2|h(m)|/h''), inside the band). */
-C2D_COLD int c2d_toia_splits_ext(c2d_toia_ctx *c, const c2d_dd *T, const int *s0, c2d_dd *bt,
+C2D_COLD int c2d_toia_splits_try(c2d_toia_ctx *c, const c2d_dd *T, const int *s0, c2d_dd *bt,
                                             int *bs, int *bf, int exact, int *tied)
 {
     const int sh = s0[2] != 0 ? s0[2] : (s0[3] != 0 ? s0[3] : 1);
     const int shp = s0[3] != 0 ? s0[3] : 1;
     c2d_dd rr[2];
-    c2d_toia_ev ev;
+    c2d_toia_values ev;
     int n = 0, want_m = 0, want_p = 0, k, ok, t1;
     *tied = 0;
-    if (c->nz[2] == 0) return 0;
+    if (c->nonzero[2] == 0) return 0;
     if (shp > 0 || sh < 0) {
         if (sh > 0) return 0;
         want_p = 1; /* h < 0 just after 0: one root, a minimum of g */
-        ok = c2d_toia_hroots(c, NULL, exact, &rr[0], &rr[1]);
+        ok = c2d_toia_h_roots(c, NULL, exact, &rr[0], &rr[1]);
     } else {
         /* the vertex m = -v.a / |a|^2 > 0, in double length, within 2^dm:
          * h(m~) >= min h = h(m) >= h(m~) - (h''/2) 2^2dm, so only a margin
@@ -246,26 +253,26 @@ C2D_COLD int c2d_toia_splits_ext(c2d_toia_ctx *c, const c2d_dd *T, const int *s0
         int dm = c2d_toia_vertex(c, exact, &mt);
         if (!(mt.h > 0)) return 0;
         c2d_dd_copy(&mlo, &mt);
-        c2d_toia_t_add(&mlo, -1, dm);
+        c2d_toia_time_add(&mlo, -1, dm);
         c2d_dd_copy(&mhi, &mt);
-        c2d_toia_t_add(&mhi, 1, dm);
-        if (exact == 0 && c2d_toia_t_cmp(&mlo, T) < 0 && c2d_toia_t_cmp(&mhi, T) >= 0) {
+        c2d_toia_time_add(&mhi, 1, dm);
+        if (exact == 0 && c2d_toia_time_cmp(&mlo, T) < 0 && c2d_toia_time_cmp(&mhi, T) >= 0) {
             *tied = 1; /* is the vertex before T?  not from the hints */
             return 0;
         }
-        if (c2d_toia_t_cmp(&mt, T) >= 0) {
+        if (c2d_toia_time_cmp(&mt, T) >= 0) {
             c2d_toia_probe(c, T, C2D_TOIA_MH, 1, &ev);
-            if (ev.s[C2D_TOIA_QH] >= 0) return 0;
+            if (ev.sign[C2D_TOIA_QH] >= 0) return 0;
             want_m = 1;
-            ok = c2d_toia_hroots(c, NULL, exact, &rr[0], &rr[1]);
+            ok = c2d_toia_h_roots(c, NULL, exact, &rr[0], &rr[1]);
         } else {
             c2d_ext hm, mg;
             c2d_toia_probe(c, &mt, C2D_TOIA_MH, 2, &ev);
-            c2d_ext_set(&hm, ev.q[C2D_TOIA_QH].v - ev.q[C2D_TOIA_QH].r, ev.q[C2D_TOIA_QH].e);
-            c2d_ext_set(&mg, (c2d_real)1.5 * (c->m[2][0] * c->m[2][0] + c->m[2][1] * c->m[2][1]) * 2,
-                           2 * c->ex[2] + 2 * dm);
-            if (ev.s[C2D_TOIA_QH] > 0 && c2d_toia_ext_cmp(&hm, &mg) > 0) return 0; /* h > 0 throughout */
-            if (ev.s[C2D_TOIA_QH] >= 0) {
+            c2d_ext_set(&hm, ev.qty[C2D_TOIA_QH].value - ev.qty[C2D_TOIA_QH].bound, ev.qty[C2D_TOIA_QH].exp);
+            c2d_ext_set(&mg, (c2d_real)1.5 * (c->hi[2][0] * c->hi[2][0] + c->hi[2][1] * c->hi[2][1]) * 2,
+                           2 * c->exp[2] + 2 * dm);
+            if (ev.sign[C2D_TOIA_QH] > 0 && c2d_toia_ext_cmp(&hm, &mg) > 0) return 0; /* h > 0 throughout */
+            if (ev.sign[C2D_TOIA_QH] >= 0) {
                 /* not proven: a near-double root of h (a tie) with the exact
                  * vertex, or the hints were not good enough */
                 *tied = exact == 0;
@@ -273,7 +280,7 @@ C2D_COLD int c2d_toia_splits_ext(c2d_toia_ctx *c, const c2d_dd *T, const int *s0
             }
             want_m = 1;
             want_p = 1;
-            ok = c2d_toia_hroots(c, &ev, exact, &rr[0], &rr[1]);
+            ok = c2d_toia_h_roots(c, &ev, exact, &rr[0], &rr[1]);
         }
     }
     if (ok == 0) return 0;
@@ -284,8 +291,8 @@ C2D_COLD int c2d_toia_splits_ext(c2d_toia_ctx *c, const c2d_dd *T, const int *s0
         c2d_dd_set(&lo, bt[n].h, bt[n].l, bt[n].e - 1);
         c2d_dd_set(&hi, bt[n].h, bt[n].l, bt[n].e + 1);
         (void)c2d_toia_polish(c, &bt[n], C2D_TOIA_QH, &lo, &hi, 2 * C2D_R_MANT);
-        if (!(bt[n].h > 0) || c2d_toia_t_cmp(&bt[n], T) >= 0) continue;
-        if (n > 0 && c2d_toia_t_cmp(&bt[n], &bt[n - 1]) <= 0) continue;
+        if (!(bt[n].h > 0) || c2d_toia_time_cmp(&bt[n], T) >= 0) continue;
+        if (n > 0 && c2d_toia_time_cmp(&bt[n], &bt[n - 1]) <= 0) continue;
         bs[n] = c2d_toia_split_sign(c, &bt[n], k == 0 ? -1 : 1, &bf[n], &t1);
         *tied |= t1;
         n++;
@@ -298,8 +305,8 @@ C2D_COLD int c2d_toia_splits_ext(c2d_toia_ctx *c, const c2d_dd *T, const int *s0
 C2D_COLD int c2d_toia_splits(c2d_toia_ctx *c, const c2d_dd *T, const int *s0, c2d_dd *bt, int *bs,
                                          int *bf)
 {
-    int tied = 0, n = c2d_toia_splits_ext(c, T, s0, bt, bs, bf, 0, &tied);
-    if (tied != 0) n = c2d_toia_splits_ext(c, T, s0, bt, bs, bf, 1, &tied);
+    int tied = 0, n = c2d_toia_splits_try(c, T, s0, bt, bs, bf, 0, &tied);
+    if (tied != 0) n = c2d_toia_splits_try(c, T, s0, bt, bs, bf, 1, &tied);
     return n;
 }
 
@@ -312,31 +319,31 @@ C2D_COLD int c2d_toia_splits(c2d_toia_ctx *c, const c2d_dd *T, const int *s0, c2
  * from receding to approaching; or a tie: f touches 0 from below, and
  * enters at once either way) with *out = c; else 0 with *l = a point of
  * the bracket where f > 0 is certified, the new decreasing stretch's start. */
-C2D_COLD int c2d_toia_fmax(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, c2d_dd *l,
+C2D_COLD int c2d_toia_at_f_max(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, c2d_dd *l,
                                        c2d_dd *out)
 {
-    c2d_toia_br br;
-    c2d_toia_gbracket(c, x, y, -1, &br);
-    if (c2d_toia_fturn(&br, -1, NULL) <= 0) {
-        c2d_toia_t_mid(out, &br.lo, &br.hi);
+    c2d_toia_bracket br;
+    c2d_toia_groot_bracket(c, x, y, -1, &br);
+    if (c2d_toia_f_at_turn(&br, -1, NULL) <= 0) {
+        c2d_toia_time_mid(out, &br.lo, &br.hi);
         (void)c2d_toia_polish(c, out, C2D_TOIA_QG, &br.lo, &br.hi, C2D_R_MANT + 3);
         return 1;
     }
-    c2d_dd_copy(l, br.ehi.sf > 0 ? &br.hi : &br.lo);
+    c2d_dd_copy(l, br.at_hi.sign_f > 0 ? &br.hi : &br.lo);
     return 0;
 }
 
 /* At a minimum of f in (x, y): 1 with *out = the contact time (the root of
  * f in [l, c]), 0 when f(c) > 0 or a graze tie. */
-C2D_COLD int c2d_toia_atmin(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y,
+C2D_COLD int c2d_toia_at_f_min(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y,
                                         const c2d_dd *l, c2d_dd *out)
 {
-    c2d_toia_br br;
+    c2d_toia_bracket br;
     c2d_toia_fg center;
     c2d_dd ct;
     const c2d_dd *neg;
     c2d_dd_set(&ct, 0, 0, 0);
-    if (c2d_toia_fmin(c, x, y, &br, &ct, &center, &neg) >= 0) return 0;
+    if (c2d_toia_f_min_sign(c, x, y, &br, &ct, &center, &neg) >= 0) return 0;
     if (neg != NULL) {
         c2d_toia_root(c, l, neg, C2D_TOIA_QF, 1, out);
     } else { /* shorter than the time resolution: at the minimum */
@@ -348,11 +355,11 @@ C2D_COLD int c2d_toia_atmin(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y,
 /* The signs of f, g and h at T (certified as needed for f and g). */
 C2D_COLD void c2d_toia_signs_at(c2d_toia_ctx *c, const c2d_dd *T, int *sf, int *sg, int *sh)
 {
-    c2d_toia_ev ev;
+    c2d_toia_values ev;
     c2d_toia_probe(c, T, C2D_TOIA_MF | C2D_TOIA_MG, 1, &ev);
-    *sf = ev.s[C2D_TOIA_QF];
-    *sg = ev.s[C2D_TOIA_QG];
-    *sh = ev.s[C2D_TOIA_QH];
+    *sf = ev.sign[C2D_TOIA_QF];
+    *sg = ev.sign[C2D_TOIA_QG];
+    *sh = ev.sign[C2D_TOIA_QH];
 }
 
 /* The first entry into {f < 0, g < 0} in (0, T], given no entry at 0.
@@ -401,10 +408,10 @@ C2D_COLD c2d_toia_verdict c2d_toia_scan(c2d_toia_ctx *c, const c2d_dd *T, int t_
                 c2d_toia_root(c, &l, y, C2D_TOIA_QF, 1, out);
                 return C2D_TOIA_HIT;
             }
-            if (c2d_toia_atmin(c, x, y, &l, out) != 0) return C2D_TOIA_HIT;
+            if (c2d_toia_at_f_min(c, x, y, &l, out) != 0) return C2D_TOIA_HIT;
             dec = 0; /* f(c) > 0, or a graze */
         } else { /* a maximum of f in (x, y) */
-            if (c2d_toia_fmax(c, x, y, &l, out) != 0) return C2D_TOIA_HIT;
+            if (c2d_toia_at_f_max(c, x, y, &l, out) != 0) return C2D_TOIA_HIT;
             dec = 1;
             if (bf[i + 1] < 0) {
                 c2d_toia_root(c, &l, y, C2D_TOIA_QF, 1, out);

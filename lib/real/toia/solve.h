@@ -1,15 +1,15 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/solve.h - template: c2d_time_of_impact_accel, the time of impact of
- * two disks moving with constant accelerations, part 7 of 7 (the entry);
- * parts 1-6 in real/toia/num.h, _problem.h, _eval.h, _newton.h, _turns.h,
- * _scan.h, included before it in that order.  The including translation
- * unit provides c2d_real, c2d_real_bits, c2d_real_body, c2d_real_vec,
- * C2D_R_MANT, C2D_R_EMAX, C2D_R_EMIN, C2D_R_MAX, C2D_R_SQRT(x), c2d_status,
- * and the static helpers c2d_abs, c2d_pow2, c2d_scale2, c2d_ilogb,
- * c2d_two_sum, c2d_two_prod, c2d_finite4 (as in lib/real/arith/bits.h and
- * lib/real/arith/exact.h), and C2D_COLD (internal.h).  Everything defined here is
- * static and named c2d_toia_*; no macros.  The entry point is c2d_toia_solve
- * (at the end); nothing else is meant to be called.
+/* real/toia/solve.h - template, accelerated time of impact: the derivation
+ * (below), the signs at t = 0, the bound on the roots of g, and the entry
+ * c2d_toia_solve behind c2d_time_of_impact_accel.  The other files (num.h,
+ * problem.h, eval.h, newton.h, turns.h, scan.h) are included before it in
+ * that order (real/instance.h); what each holds and the method in short:
+ * real/toia/README.md.  The including translation unit provides the
+ * format's parameters (C2D_R_*), c2d_status and C2D_COLD (internal.h); the
+ * arithmetic is real/arith/'s (bits.h, exact.h, sign.h, dd.h), included
+ * before.  Everything the toia files define is static and named
+ * c2d_toia_*; no macros.  The entry point is c2d_toia_solve (at the end);
+ * nothing else is meant to be called.
  *
  * ======================================================================
  * THE PROBLEM
@@ -67,14 +67,14 @@
  *     tier 2  double length (~16u^2 of the terms),
  *     tier 3  d(t), d'(t) EXACT (sums of exact products of the exact input
  *             differences, Shewchuk expansions in a sliding exponent window,
- *             c2d_toia_ext_sum) rounded to double length: the error is then
+ *             c2d_toia_exact_sum) rounded to double length: the error is then
  *             ~(2k + 4)u^2 of |d| itself, not of the terms that cancel in it.
  *   (u = 2^-(MANT+1).)  Each tier computes in units of powers of two chosen
  *   per evaluation from the terms' exponents, so nothing over- or
  *   underflows whatever the inputs' magnitudes; times are (h + l) 2^e with an
  *   int exponent.  Signs at t = 0 are degree-2 polynomials in the inputs and
- *   are decided EXACTLY (c2d_toia_sign0): touching pairs that stay in
- *   contact, separate, or are pushed together get the exact answer.
+ *   are decided EXACTLY (c2d_toia_exact_sign_at0): touching pairs that stay
+ *   in contact, separate, or are pushed together get the exact answer.
  *
  * WHAT CANNOT BE DECIDED: THE BAND
  *   A sign that even tier 3 cannot certify means the exact quantity is
@@ -90,7 +90,7 @@
  *     g extremum (g at a root of h within its bound)          -> no sign change.
  *   The minimum of f is located to double-length precision (a bracket
  *   [lo, hi] of the root of g with certified signs; f(c) lies in
- *   [max f(end) - 2 max|g(end)| (hi - lo), min f(end)], c2d_toia_fturn), so
+ *   [max f(end) - 2 max|g(end)| (hi - lo), min f(end)], c2d_toia_f_at_turn), so
  *   besides the relative band a minimum whose dip is smaller than what one
  *   unit of the double-length time resolution (2^-2p c) is worth remains
  *   undecided: |f(c)| <~ (|d'|^2 + |d||a|)(2^-2p c)^2.  That needs a pass
@@ -98,7 +98,8 @@
  *   elapsed); it is decided anyway for a = 0 (the minimum distance is
  *   |d0 x v|/|v| by Lagrange's identity: no time enters, c2d_toia_lin_min)
  *   and for motion along one line through the origin (c2d_toia_crosses).
- *   NOTES.md states the band precisely and measures it.
+ *   real/toia/README.md ("The band") states the band precisely, as the
+ *   tests check it, and what they measure of it.
  *
  * THE TIME
  *   The root is found by Newton in a local frame (plain arithmetic, with a
@@ -108,7 +109,8 @@
  *   is within its error bound; where the plain frame cannot represent the
  *   problem, a certified bisection/Newton in extended time takes over
  *   (c2d_toia_root_ext).  The result is within ~0.5 ulp(t) plus the time one
- *   rounding of |d| is worth at the approach speed (see NOTES.md).
+ *   rounding of |d| is worth at the approach speed (the contract in
+ *   include/collide2d.h; measured in real/toia/README.md).
  *
  * FAST PATHS (certified shortcuts for common cases, c2d_toia_fast)
  *   - g < 0 on all of [0, T] (its Bernstein coefficients on [0, T] are all
@@ -126,11 +128,11 @@
 /* sign of x 2^ex + y 2^ey (a term is absent when its flag is 0), certified
  * against the bound u8 (mx 2^ex + my 2^ey) (mx, my: the magnitudes the
  * terms' errors scale with) plus a floor for the alignment; 0 if not. */
-static int c2d_toia_sign2(c2d_real x, c2d_real mx, int hx, int ex, c2d_real y, c2d_real my, int hy, int ey)
+static int c2d_toia_sign_two_terms(c2d_real x, c2d_real mx, int hx, int ex, c2d_real y, c2d_real my, int hy, int ey)
 {
     const c2d_real u8 = c2d_pow2(-C2D_R_MANT + 2);
-    int E = hx == 0 ? ey : (hy == 0 ? ex : c2d_toia_imax(ex, ey));
-    c2d_real sx = hx != 0 ? c2d_toia_p2(ex - E) : 0, sy = hy != 0 ? c2d_toia_p2(ey - E) : 0;
+    int E = hx == 0 ? ey : (hy == 0 ? ex : c2d_toia_max_int(ex, ey));
+    c2d_real sx = hx != 0 ? c2d_toia_pow2_clamped(ex - E) : 0, sy = hy != 0 ? c2d_toia_pow2_clamped(ey - E) : 0;
     c2d_real v = x * sx + y * sy, r = u8 * (mx * sx + my * sy) + c2d_pow2(C2D_R_EMIN + 6);
     if (v > r) return 1;
     if (v < -r) return -1;
@@ -142,28 +144,29 @@ static int c2d_toia_sign2(c2d_real x, c2d_real mx, int hx, int ex, c2d_real y, c
  * certain (the lo parts are below u of the hi parts, the products and sums
  * add a few u: 8u of the terms' magnitudes bounds it all), the exact sums
  * otherwise. */
-static void c2d_toia_phase0(c2d_toia_ctx *c, int *s)
+static void c2d_toia_signs_at0(c2d_toia_ctx *c, int *s)
 {
-    c2d_real p2 = c->m[0][0] * c->m[0][0] + c->m[0][1] * c->m[0][1];
-    c2d_real v2 = c->m[1][0] * c->m[1][0] + c->m[1][1] * c->m[1][1];
-    c2d_real pv = c->m[0][0] * c->m[1][0] + c->m[0][1] * c->m[1][1];
-    c2d_real pa = c->m[0][0] * c->m[2][0] + c->m[0][1] * c->m[2][1];
-    c2d_real va = c->m[1][0] * c->m[2][0] + c->m[1][1] * c->m[2][1];
-    c2d_real mpv = c2d_abs(c->m[0][0] * c->m[1][0]) + c2d_abs(c->m[0][1] * c->m[1][1]);
-    c2d_real mpa = c2d_abs(c->m[0][0] * c->m[2][0]) + c2d_abs(c->m[0][1] * c->m[2][1]);
-    c2d_real mva = c2d_abs(c->m[1][0] * c->m[2][0]) + c2d_abs(c->m[1][1] * c->m[2][1]);
-    c2d_real r2 = c->r.m * c->r.m;
+    c2d_real p2 = c->hi[0][0] * c->hi[0][0] + c->hi[0][1] * c->hi[0][1];
+    c2d_real v2 = c->hi[1][0] * c->hi[1][0] + c->hi[1][1] * c->hi[1][1];
+    c2d_real pv = c->hi[0][0] * c->hi[1][0] + c->hi[0][1] * c->hi[1][1];
+    c2d_real pa = c->hi[0][0] * c->hi[2][0] + c->hi[0][1] * c->hi[2][1];
+    c2d_real va = c->hi[1][0] * c->hi[2][0] + c->hi[1][1] * c->hi[2][1];
+    c2d_real mpv = c2d_abs(c->hi[0][0] * c->hi[1][0]) + c2d_abs(c->hi[0][1] * c->hi[1][1]);
+    c2d_real mpa = c2d_abs(c->hi[0][0] * c->hi[2][0]) + c2d_abs(c->hi[0][1] * c->hi[2][1]);
+    c2d_real mva = c2d_abs(c->hi[1][0] * c->hi[2][0]) + c2d_abs(c->hi[1][1] * c->hi[2][1]);
+    c2d_real r2 = c->radius.m * c->radius.m;
     int k;
-    s[0] = c2d_toia_sign2(p2, p2, c->nz[0], 2 * c->ex[0], -r2, r2, 1, 2 * c->r.e);
-    s[1] = c2d_toia_sign2(pv, mpv, c->nz[0] * c->nz[1], c->ex[0] + c->ex[1], 0, 0, 0, 0);
-    s[2] = c2d_toia_sign2(v2, v2, c->nz[1], 2 * c->ex[1], pa, mpa, c->nz[0] * c->nz[2], c->ex[0] + c->ex[2]);
-    s[3] = c2d_toia_sign2(va, mva, c->nz[1] * c->nz[2], c->ex[1] + c->ex[2], 0, 0, 0, 0);
+    s[0] = c2d_toia_sign_two_terms(p2, p2, c->nonzero[0], 2 * c->exp[0], -r2, r2, 1, 2 * c->radius.e);
+    s[1] = c2d_toia_sign_two_terms(pv, mpv, c->nonzero[0] * c->nonzero[1], c->exp[0] + c->exp[1], 0, 0, 0, 0);
+    s[2] = c2d_toia_sign_two_terms(v2, v2, c->nonzero[1], 2 * c->exp[1], pa, mpa, c->nonzero[0] * c->nonzero[2],
+                                   c->exp[0] + c->exp[2]);
+    s[3] = c2d_toia_sign_two_terms(va, mva, c->nonzero[1] * c->nonzero[2], c->exp[1] + c->exp[2], 0, 0, 0, 0);
     for (k = 0; k < 4; k++)
-        if (s[k] == 0) s[k] = c2d_toia_sign0(c, k);
+        if (s[k] == 0) s[k] = c2d_toia_exact_sign_at0(c, k);
 }
 
 /* ceil(a / b), b > 0 */
-static int c2d_toia_cdiv(int a, int b) { return -c2d_toia_fdiv(-a, b); }
+static int c2d_toia_ceil_div(int a, int b) { return -c2d_toia_floor_div(-a, b); }
 
 /* An exponent eb with every real root of g below 2^eb.  g / (|a|^2 / 2) =
  * t^3 + c2 t^2 + c1 t + c0 with |c2| <= 3|v|/|a|, |c1| <= 2(|v|^2 +
@@ -173,38 +176,38 @@ static int c2d_toia_cdiv(int a, int b) { return -c2d_toia_fdiv(-a, b); }
  * has its root below |d0|/|v|. */
 static int c2d_toia_bound(c2d_toia_ctx *c)
 {
-    const int e0 = c->ex[0], e1 = c->ex[1], e2 = c->ex[2];
+    const int e0 = c->exp[0], e1 = c->exp[1], e2 = c->exp[2];
     int eb = 0, have = 0, k;
-    if (c->nz[2] == 0) return c->nz[0] != 0 ? e0 - e1 + 3 : 0;
-    if (c->nz[1] != 0) {
+    if (c->nonzero[2] == 0) return c->nonzero[0] != 0 ? e0 - e1 + 3 : 0;
+    if (c->nonzero[1] != 0) {
         eb = e1 - e2 + 4;
         have = 1;
     }
-    if (c->nz[1] != 0 || c->nz[0] != 0) {
-        k = c->nz[1] != 0 ? 2 * e1 : e0 + e2;
-        if (c->nz[0] != 0 && e0 + e2 > k) k = e0 + e2;
-        k = c2d_toia_cdiv(k + 5 - 2 * e2, 2);
+    if (c->nonzero[1] != 0 || c->nonzero[0] != 0) {
+        k = c->nonzero[1] != 0 ? 2 * e1 : e0 + e2;
+        if (c->nonzero[0] != 0 && e0 + e2 > k) k = e0 + e2;
+        k = c2d_toia_ceil_div(k + 5 - 2 * e2, 2);
         eb = (have == 0 || k > eb) ? k : eb;
         have = 1;
     }
-    if (c->nz[1] != 0 && c->nz[0] != 0) {
-        k = c2d_toia_cdiv(e0 + e1 + 3 - 2 * e2, 3);
+    if (c->nonzero[1] != 0 && c->nonzero[0] != 0) {
+        k = c2d_toia_ceil_div(e0 + e1 + 3 - 2 * e2, 3);
         eb = k > eb ? k : eb;
     }
     return have != 0 ? eb + 1 : 0;
 }
 
 /* The path keeps clear of the disk on [0, T] (hull test in a frame). */
-C2D_COLD int c2d_toia_clear(c2d_toia_ctx *c, const c2d_dd *T)
+C2D_COLD int c2d_toia_path_clear(c2d_toia_ctx *c, const c2d_dd *T)
 {
     c2d_toia_frame fr;
-    return c2d_toia_frame_set(&fr, c, T->e + 1) != 0 && c2d_toia_hull_clear(&fr, c2d_toia_t_local(T, T->e + 1)) != 0;
+    return c2d_toia_frame_set(&fr, c, T->e + 1) != 0 && c2d_toia_hull_clear(&fr, c2d_toia_time_local(T, T->e + 1)) != 0;
 }
 
 /* The contact time to the working format: RANGE beyond it; within [0, H]. */
-static c2d_status c2d_toia_out(const c2d_dd *out, c2d_real horizon, c2d_real *t)
+static c2d_status c2d_toia_result(const c2d_dd *out, c2d_real horizon, c2d_real *t)
 {
-    c2d_real v = c2d_toia_t_value(out);
+    c2d_real v = c2d_toia_time_value(out);
     if (!(v <= C2D_R_MAX)) return C2D_RANGE;
     if (v > horizon) v = horizon;
     if (v < 0) v = 0;
@@ -224,9 +227,9 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
         !(horizon >= 0))
         return C2D_INVALID;
     c2d_toia_load(&c, a, acc_a, b, acc_b, radius_sum);
-    if (c.nz[1] == 0 && c.nz[2] == 0) return C2D_SEPARATING; /* constant distance: never approaching */
+    if (c.nonzero[1] == 0 && c.nonzero[2] == 0) return C2D_SEPARATING; /* constant distance: never approaching */
     if (radius_sum == 0) return C2D_SEPARATING;              /* f >= 0: never overlapping */
-    c2d_toia_phase0(&c, s0);
+    c2d_toia_signs_at0(&c, s0);
     /* the sign of g just after 0: first nonzero of g, g', g'', g''' > 0 */
     sg0 = s0[1] != 0 ? s0[1] : (s0[2] != 0 ? s0[2] : (s0[3] != 0 ? s0[3] : 1));
     if (s0[0] <= 0 && sg0 < 0) {
@@ -241,11 +244,11 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
     if (s0[0] > 0 && sg0 < 0) { /* separated and approaching: the common case */
         int fast = c2d_toia_fast(&c, &T, t_is_h, &out);
         if (fast == 0) return C2D_SEPARATING;
-        if (fast > 0) return c2d_toia_out(&out, horizon, t);
-    } else if (s0[0] > 0 && c2d_toia_clear(&c, &T) != 0) { /* separated and receding: clear for good? */
+        if (fast > 0) return c2d_toia_result(&out, horizon, t);
+    } else if (s0[0] > 0 && c2d_toia_path_clear(&c, &T) != 0) { /* separated and receding: clear for good? */
         return C2D_SEPARATING;
     }
-    if (c2d_toia_scan(&c, &T, t_is_h, s0, sg0, &out) == C2D_TOIA_HIT) return c2d_toia_out(&out, horizon, t);
+    if (c2d_toia_scan(&c, &T, t_is_h, s0, sg0, &out) == C2D_TOIA_HIT) return c2d_toia_result(&out, horizon, t);
     return C2D_SEPARATING;
 }
 

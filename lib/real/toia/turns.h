@@ -1,20 +1,16 @@
 /* SPDX-License-Identifier: MIT */
-/* real/toia/turns.h - template: the time of impact under acceleration,
- * part 5 of 7: the turning points of f (roots of g, bracketed, with f's
- * value there) and of g (the roots of the quadratic h).  See real/toia/solve.h. */
+/* real/toia/turns.h - template, accelerated time of impact: the turning
+ * points of f (roots of g, bracketed, with f's value there; a = 0 and
+ * collinear motion decided exactly) and of g (the roots of the quadratic h,
+ * with g's sign certified on the slivers).  See real/toia/README.md. */
 #ifndef C2D_REAL_TOIA_TURNS_H
 #define C2D_REAL_TOIA_TURNS_H
 /* Turning points of f: brackets of the roots of g and f's value there   */
 /* ===================================================================== */
 
-static void c2d_toia_ext_mul(c2d_ext *r, const c2d_ext *a, const c2d_ext *b)
-{
-    c2d_ext_set(r, a->m * b->m, a->e + b->e);
-}
-
 /* val > 0 with a margin of 2^(4 - MANT) of scale (>= 0): a decision that
  * survives the few roundings the bound arithmetic made. */
-static int c2d_toia_ext_clear(const c2d_ext *val, const c2d_ext *scale)
+static int c2d_toia_ext_clearly_positive(const c2d_ext *val, const c2d_ext *scale)
 {
     if (!(val->m > 0)) return 0;
     if (scale->m == 0) return 1;
@@ -30,43 +26,39 @@ static int c2d_toia_ext_clear(const c2d_ext *val, const c2d_ext *scale)
  * and the optional center evaluation (a point of the bracket) tightens
  * the one-sided bound.  Returns -1 if f(c) < 0 is certain, +1 if f(c) > 0,
  * 0 if neither. */
-C2D_COLD int c2d_toia_fturn(const c2d_toia_br *br, int dir, const c2d_toia_fg *center)
+C2D_COLD int c2d_toia_f_at_turn(const c2d_toia_bracket *br, int dir, const c2d_toia_fg *center)
 {
-    c2d_ext w, x, y, z;
+    c2d_ext w, x, z;
     int i, res = 0;
-    c2d_toia_t_diff(&w, &br->hi, &br->lo);
+    c2d_toia_time_diff(&w, &br->hi, &br->lo);
     w.m = c2d_abs(w.m);
     for (i = 0; i < 3; i++) {
-        const c2d_toia_fg *ev = i == 0 ? &br->elo : (i == 1 ? &br->ehi : center);
+        const c2d_toia_fg *ev = i == 0 ? &br->at_lo : (i == 1 ? &br->at_hi : center);
         c2d_ext f, r, tg, lo, hi;
         if (ev == NULL) continue;
-        c2d_ext_set(&f, ev->f.v, ev->f.e);
-        c2d_ext_set(&r, ev->f.r, ev->f.e);
+        c2d_ext_set(&f, ev->f.value, ev->f.exp);
+        c2d_ext_set(&r, ev->f.bound, ev->f.exp);
         tg.m = 0;
         tg.e = 0;
         if (i < 2) {
-            c2d_ext_set(&x, c2d_abs(ev->g.v) + ev->g.r, ev->g.e + 1);
-            c2d_toia_ext_mul(&tg, &x, &w);
+            c2d_ext_set(&x, c2d_abs(ev->g.value) + ev->g.bound, ev->g.exp + 1);
+            c2d_ext_mul(&tg, &x, &w);
         }
         /* lo = f - r - (dir > 0 ? tg : 0), hi = f + r + (dir < 0 ? tg : 0);
          * each candidate judged against its own rounding scale |f| + r + tg */
-        x.m = -r.m;
-        x.e = r.e;
-        c2d_toia_ext_add(&lo, &f, &x);
-        c2d_toia_ext_add(&hi, &f, &r);
-        y.m = -tg.m;
-        y.e = tg.e;
-        if (dir > 0) c2d_toia_ext_add(&lo, &lo, &y);
-        else c2d_toia_ext_add(&hi, &hi, &tg);
+        c2d_ext_add(&lo, &f, &r, -1);
+        c2d_ext_add(&hi, &f, &r, 1);
+        if (dir > 0) c2d_ext_add(&lo, &lo, &tg, -1);
+        else c2d_ext_add(&hi, &hi, &tg, 1);
         z.m = c2d_abs(f.m);
         z.e = f.e;
-        c2d_toia_ext_add(&z, &z, &r);
-        c2d_toia_ext_add(&z, &z, &tg);
+        c2d_ext_add(&z, &z, &r, 1);
+        c2d_ext_add(&z, &z, &tg, 1);
         /* a point value bounds a minimum from above only, a maximum from below */
-        if (!(i == 2 && dir > 0) && c2d_toia_ext_clear(&lo, &z) != 0) res = 1;
+        if (!(i == 2 && dir > 0) && c2d_toia_ext_clearly_positive(&lo, &z) != 0) res = 1;
         x.m = -hi.m;
         x.e = hi.e;
-        if (!(i == 2 && dir < 0) && c2d_toia_ext_clear(&x, &z) != 0) res = -1;
+        if (!(i == 2 && dir < 0) && c2d_toia_ext_clearly_positive(&x, &z) != 0) res = -1;
     }
     return res;
 }
@@ -74,14 +66,15 @@ C2D_COLD int c2d_toia_fturn(const c2d_toia_br *br, int dir, const c2d_toia_fg *c
 /* The plain estimate of g's root in (x, y) (Newton in a local frame): 1 with
  * *r and the exponent *dw of 4 of its uncertainties, 0 if the frame's
  * values are not trustworthy there. */
-C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, int dir,
+C2D_COLD int c2d_toia_groot_plain(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, int dir,
                                          c2d_dd *r, int *dw)
 {
     c2d_toia_frame fr;
     c2d_real width = 0, xr;
     int ok = 0, kt = y->e + 1;
     if (c2d_toia_frame_set(&fr, c, kt) == 0) return 0;
-    xr = c2d_toia_newton0(&fr, C2D_TOIA_QG, c2d_toia_t_local(x, kt), c2d_toia_t_local(y, kt), -dir, &ok, &width);
+    xr = c2d_toia_frame_newton(&fr, C2D_TOIA_QG, c2d_toia_time_local(x, kt), c2d_toia_time_local(y, kt), -dir, &ok,
+                               &width);
     if (ok == 0) return 0;
     c2d_dd_set(r, xr, 0, kt);
     *dw = r->e - C2D_R_MANT + 4;
@@ -91,14 +84,14 @@ C2D_COLD int c2d_toia_gplain(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, 
 
 /* The exponent of 4 times the double-length Newton step on g at r plus
  * its noise, at least dw. */
-C2D_COLD int c2d_toia_gstep(c2d_toia_ctx *c, const c2d_dd *r, int dw)
+C2D_COLD int c2d_toia_groot_step_exp(c2d_toia_ctx *c, const c2d_dd *r, int dw)
 {
-    c2d_toia_ev ev;
-    c2d_toia_e2(c, r, &ev);
-    if (ev.q[C2D_TOIA_QH].v != 0) {
+    c2d_toia_values ev;
+    c2d_toia_eval_double(c, r, &ev);
+    if (ev.qty[C2D_TOIA_QH].value != 0) {
         c2d_ext st;
-        c2d_ext_set(&st, (c2d_abs(ev.q[C2D_TOIA_QG].v) + ev.q[C2D_TOIA_QG].r) / c2d_abs(ev.q[C2D_TOIA_QH].v),
-                       ev.q[C2D_TOIA_QG].e - ev.q[C2D_TOIA_QH].e);
+        c2d_ext_set(&st, (c2d_abs(ev.qty[C2D_TOIA_QG].value) + ev.qty[C2D_TOIA_QG].bound) / c2d_abs(ev.qty[C2D_TOIA_QH].value),
+                       ev.qty[C2D_TOIA_QG].exp - ev.qty[C2D_TOIA_QH].exp);
         if (st.m != 0 && st.e + 3 > dw) dw = st.e + 3;
     }
     return dw;
@@ -107,11 +100,11 @@ C2D_COLD int c2d_toia_gstep(c2d_toia_ctx *c, const c2d_dd *r, int dw)
 /* The double-length estimate of g's root in (x, y) (certified search and
  * Newton), with the exponent *dw of its uncertainty (at least 16 ulp of the
  * working format). */
-C2D_COLD void c2d_toia_gdd(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, int dir,
+C2D_COLD void c2d_toia_groot_double(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, int dir,
                                        c2d_dd *r, int *dw)
 {
     c2d_toia_root(c, x, y, C2D_TOIA_QG, -dir, r);
-    *dw = c2d_toia_gstep(c, r, r->e - C2D_R_MANT + 4);
+    *dw = c2d_toia_groot_step_exp(c, r, r->e - C2D_R_MANT + 4);
 }
 
 /* Bracket the root of g in the piece (x, y), where g has sign -dir at x
@@ -120,61 +113,61 @@ C2D_COLD void c2d_toia_gdd(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, in
  * g at the estimate +- 4 uncertainties (widening 64-fold: up to twice for
  * the plain estimate, three times for the other); at worst the piece
  * itself.  f and g are evaluated at both ends. */
-C2D_COLD void c2d_toia_gbracket(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, int dir,
-                                            c2d_toia_br *br)
+C2D_COLD void c2d_toia_groot_bracket(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, int dir,
+                                            c2d_toia_bracket *br)
 {
     c2d_dd r;
     int k, dw = 0, pass = 1;
-    if (c2d_toia_gplain(c, x, y, dir, &r, &dw) != 0) pass = 0;
+    if (c2d_toia_groot_plain(c, x, y, dir, &r, &dw) != 0) pass = 0;
     for (; pass < 2; pass++) {
         int widenings = 4;
-        if (pass == 1) c2d_toia_gdd(c, x, y, dir, &r, &dw);
+        if (pass == 1) c2d_toia_groot_double(c, x, y, dir, &r, &dw);
         if (pass == 0) widenings = 2;
         for (k = 0; k < widenings; k++) {
             c2d_dd_copy(&br->lo, &r);
-            c2d_toia_t_add(&br->lo, -1, dw);
-            if (c2d_toia_t_cmp(&br->lo, x) < 0) c2d_dd_copy(&br->lo, x);
+            c2d_toia_time_add(&br->lo, -1, dw);
+            if (c2d_toia_time_cmp(&br->lo, x) < 0) c2d_dd_copy(&br->lo, x);
             c2d_dd_copy(&br->hi, &r);
-            c2d_toia_t_add(&br->hi, 1, dw);
-            if (c2d_toia_t_cmp(&br->hi, y) > 0) c2d_dd_copy(&br->hi, y);
-            c2d_toia_probe_fg(c, &br->lo, 1, &br->elo);
-            if (br->elo.sg == -dir) {
-                c2d_toia_probe_fg(c, &br->hi, 1, &br->ehi);
-                if (br->ehi.sg == dir) return;
+            c2d_toia_time_add(&br->hi, 1, dw);
+            if (c2d_toia_time_cmp(&br->hi, y) > 0) c2d_dd_copy(&br->hi, y);
+            c2d_toia_probe_fg(c, &br->lo, 1, &br->at_lo);
+            if (br->at_lo.sign_g == -dir) {
+                c2d_toia_probe_fg(c, &br->hi, 1, &br->at_hi);
+                if (br->at_hi.sign_g == dir) return;
             }
             dw += 6;
         }
     }
     c2d_dd_copy(&br->lo, x);
     c2d_dd_copy(&br->hi, y);
-    c2d_toia_probe_fg(c, &br->lo, 1, &br->elo);
-    c2d_toia_probe_fg(c, &br->hi, 1, &br->ehi);
+    c2d_toia_probe_fg(c, &br->lo, 1, &br->at_lo);
+    c2d_toia_probe_fg(c, &br->hi, 1, &br->at_hi);
 }
 
 /* Tighten a bracket whose f-decision was a tie: double-length Newton on g
  * from its middle, certified signs (tiers 2-3) at +- 4 steps, and a tier-3
  * value of f at the center (*ct). */
-C2D_COLD void c2d_toia_tighten(c2d_toia_ctx *c, c2d_toia_br *br, int dir, c2d_dd *ct,
+C2D_COLD void c2d_toia_tighten(c2d_toia_ctx *c, c2d_toia_bracket *br, int dir, c2d_dd *ct,
                                            c2d_toia_fg *center)
 {
     c2d_dd lo, hi;
     c2d_toia_fg elo, ehi;
     int dw;
-    c2d_toia_t_mid(ct, &br->lo, &br->hi);
+    c2d_toia_time_mid(ct, &br->lo, &br->hi);
     (void)c2d_toia_polish(c, ct, C2D_TOIA_QG, &br->lo, &br->hi, 2 * C2D_R_MANT + 2);
-    dw = c2d_toia_gstep(c, ct, ct->e - 2 * C2D_R_MANT + 2);
+    dw = c2d_toia_groot_step_exp(c, ct, ct->e - 2 * C2D_R_MANT + 2);
     c2d_dd_copy(&lo, ct);
-    c2d_toia_t_add(&lo, -1, dw);
+    c2d_toia_time_add(&lo, -1, dw);
     c2d_dd_copy(&hi, ct);
-    c2d_toia_t_add(&hi, 1, dw);
-    if (c2d_toia_t_cmp(&lo, &br->lo) > 0 && c2d_toia_t_cmp(&hi, &br->hi) < 0) {
+    c2d_toia_time_add(&hi, 1, dw);
+    if (c2d_toia_time_cmp(&lo, &br->lo) > 0 && c2d_toia_time_cmp(&hi, &br->hi) < 0) {
         c2d_toia_probe_fg(c, &lo, 2, &elo);
         c2d_toia_probe_fg(c, &hi, 2, &ehi);
-        if (elo.sg == -dir && ehi.sg == dir) {
+        if (elo.sign_g == -dir && ehi.sign_g == dir) {
             c2d_dd_copy(&br->lo, &lo);
             c2d_dd_copy(&br->hi, &hi);
-            c2d_toia_fg_copy(&br->elo, &elo);
-            c2d_toia_fg_copy(&br->ehi, &ehi);
+            c2d_toia_fg_copy(&br->at_lo, &elo);
+            c2d_toia_fg_copy(&br->at_hi, &ehi);
         }
     }
     c2d_toia_probe_fg(c, ct, 3, center);
@@ -189,10 +182,10 @@ static int c2d_toia_push_cross(const c2d_toia_ctx *c, c2d_real *m, int *e, int n
             c2d_ext x, y;
             c2d_toia_part(c, kx, 0, j, &x);
             c2d_toia_part(c, ky, 1, k, &y);
-            n = c2d_toia_push(m, e, n, &x, &y, 0, 1);
+            n = c2d_toia_push_product(m, e, n, &x, &y, 0, 1);
             c2d_toia_part(c, kx, 1, j, &x);
             c2d_toia_part(c, ky, 0, k, &y);
-            n = c2d_toia_push(m, e, n, &x, &y, 0, -1);
+            n = c2d_toia_push_product(m, e, n, &x, &y, 0, -1);
         }
     return n;
 }
@@ -209,18 +202,18 @@ C2D_COLD int c2d_toia_lin_min(c2d_toia_ctx *c)
     c2d_real m[C2D_TOIA_ATOMS], xh, xl, vh, vl, ah = 0, al = 0, bh, bl, rh, rl, qh, ql, sa, sb, bound;
     int e[C2D_TOIA_ATOMS], n, kx, kv, ex, ev, ea, eb, E;
     n = c2d_toia_push_cross(c, m, e, 0, 0, 1);
-    ex = c2d_toia_ext_sum(m, e, n, &xh, &xl, &kx);
+    ex = c2d_toia_exact_sum(m, e, n, &xh, &xl, &kx);
     n = c2d_toia_push_dot(c, m, e, 0, 1, 1, 1);
-    ev = c2d_toia_ext_sum(m, e, n, &vh, &vl, &kv);
-    if (xh != 0) ah = c2d_toia_dmul(xh, xl, xh, xl, &al);
+    ev = c2d_toia_exact_sum(m, e, n, &vh, &vl, &kv);
+    if (xh != 0) ah = c2d_dd_mul_parts(xh, xl, xh, xl, &al);
     ea = 2 * ex;
-    rh = c2d_two_prod(c->r.m, c->r.m, &rl);
-    bh = c2d_toia_dmul(rh, rl, vh, vl, &bl);
-    eb = 2 * c->r.e + ev;
+    rh = c2d_two_prod(c->radius.m, c->radius.m, &rl);
+    bh = c2d_dd_mul_parts(rh, rl, vh, vl, &bl);
+    eb = 2 * c->radius.e + ev;
     E = (xh != 0 && ea > eb) ? ea : eb;
-    sa = c2d_toia_p2(ea - E);
-    sb = c2d_toia_p2(eb - E);
-    qh = c2d_toia_dadd(ah * sa, al * sa, -bh * sb, -bl * sb, &ql);
+    sa = c2d_toia_pow2_clamped(ea - E);
+    sb = c2d_toia_pow2_clamped(eb - E);
+    qh = c2d_toia_add_parts(ah * sa, al * sa, -bh * sb, -bl * sb, &ql);
     bound = ((c2d_real)(4 * kx + 12) * c2d_abs(ah * sa) + (c2d_real)(2 * kv + 12) * c2d_abs(bh * sb)) * u2 + fl;
     if (qh + ql > bound) return 1;
     if (qh + ql < -bound) return -1;
@@ -236,7 +229,7 @@ C2D_COLD int c2d_toia_collinear(c2d_toia_ctx *c)
     for (i = 0; i < 3; i++)
         for (j = i + 1; j < 3; j++) {
             n = c2d_toia_push_cross(c, m, e, 0, i, j);
-            (void)c2d_toia_ext_sum(m, e, n, &hi, &lo, &k);
+            (void)c2d_toia_exact_sum(m, e, n, &hi, &lo, &k);
             if (hi != 0) return 0;
         }
     return 1;
@@ -246,14 +239,14 @@ C2D_COLD int c2d_toia_collinear(c2d_toia_ctx *c)
  * the path passes through the origin between them (distance 0 < R).  d is
  * parallel to the nonzero input vector w, so d.w has no cancellation and
  * its double-length value has the exact sign. */
-C2D_COLD int c2d_toia_crosses(c2d_toia_ctx *c, const c2d_toia_br *br)
+C2D_COLD int c2d_toia_crosses(c2d_toia_ctx *c, const c2d_toia_bracket *br)
 {
     c2d_real dh[2], dlo[2], dl[2], d1h[2], d1lo[2], dl1[2], s0, s1;
-    const c2d_real *w = c->nz[0] != 0 ? c->m[0] : (c->nz[1] != 0 ? c->m[1] : c->m[2]);
+    const c2d_real *w = c->nonzero[0] != 0 ? c->hi[0] : (c->nonzero[1] != 0 ? c->hi[1] : c->hi[2]);
     int E, E1;
-    c2d_toia_dexact(c, &br->lo, dh, dlo, dl, d1h, d1lo, dl1, &E, &E1);
+    c2d_toia_d_exact(c, &br->lo, dh, dlo, dl, d1h, d1lo, dl1, &E, &E1);
     s0 = dh[0] * w[0] + dh[1] * w[1];
-    c2d_toia_dexact(c, &br->hi, dh, dlo, dl, d1h, d1lo, dl1, &E, &E1);
+    c2d_toia_d_exact(c, &br->hi, dh, dlo, dl, d1h, d1lo, dl1, &E, &E1);
     s1 = dh[0] * w[0] + dh[1] * w[1];
     return (s0 > 0 && s1 < 0) || (s0 < 0 && s1 > 0);
 }
@@ -263,36 +256,36 @@ C2D_COLD int c2d_toia_crosses(c2d_toia_ctx *c, const c2d_toia_br *br)
  * (no contact).  On -1, *neg = a time in the piece's bracket where f < 0 is
  * certified, or NULL when no representable time has f < 0 (a contact
  * shorter than the time resolution): then *ct is the minimum's location. */
-C2D_COLD int c2d_toia_fmin(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, c2d_toia_br *br,
+C2D_COLD int c2d_toia_f_min_sign(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, c2d_toia_bracket *br,
                                        c2d_dd *ct, c2d_toia_fg *center, const c2d_dd **neg)
 {
     int d, tight = 0;
     *neg = NULL;
-    center->sf = 0;
-    if (c->nz[2] == 0) {
+    center->sign_f = 0;
+    if (c->nonzero[2] == 0) {
         d = c2d_toia_lin_min(c);
         if (d >= 0) return d;
-        c2d_toia_gbracket(c, x, y, 1, br);
+        c2d_toia_groot_bracket(c, x, y, 1, br);
     } else {
-        c2d_toia_gbracket(c, x, y, 1, br);
-        d = c2d_toia_fturn(br, 1, NULL);
+        c2d_toia_groot_bracket(c, x, y, 1, br);
+        d = c2d_toia_f_at_turn(br, 1, NULL);
         if (d == 0) {
             c2d_toia_tighten(c, br, 1, ct, center);
             tight = 1;
-            d = c2d_toia_fturn(br, 1, center);
+            d = c2d_toia_f_at_turn(br, 1, center);
             if (d == 0 && c2d_toia_collinear(c) != 0 && c2d_toia_crosses(c, br) != 0) d = -1;
         }
         if (d >= 0) return d;
     }
-    if (br->elo.sf < 0) {
+    if (br->at_lo.sign_f < 0) {
         *neg = &br->lo;
-    } else if (br->ehi.sf < 0) {
+    } else if (br->at_hi.sign_f < 0) {
         *neg = &br->hi;
     } else {
         if (tight == 0) c2d_toia_tighten(c, br, 1, ct, center);
-        if (br->elo.sf < 0) *neg = &br->lo;
-        else if (br->ehi.sf < 0) *neg = &br->hi;
-        else if (center->sf < 0) *neg = ct;
+        if (br->at_lo.sign_f < 0) *neg = &br->lo;
+        else if (br->at_hi.sign_f < 0) *neg = &br->hi;
+        else if (center->sign_f < 0) *neg = ct;
     }
     return -1;
 }
@@ -316,51 +309,52 @@ C2D_COLD int c2d_toia_fmin(c2d_toia_ctx *c, const c2d_dd *x, const c2d_dd *y, c2
  * change) is returned.  *sf = f's sign at s if tier 1 certified it. */
 C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dd *s, int kind, int *sf, int *tied)
 {
-    c2d_toia_ev ev;
+    c2d_toia_values ev;
     c2d_ext h2, H, P, D, S, G, x, y;
     int tier;
     *sf = 0;
     *tied = 0;
     /* h'' = 3 |a|^2, rounded up */
     c2d_ext_set(&h2,
-                   3 * (c->m[2][0] * c->m[2][0] + c->m[2][1] * c->m[2][1]) * (1 + c2d_pow2(3 - C2D_R_MANT)),
-                   2 * c->ex[2]);
+                   3 * (c->hi[2][0] * c->hi[2][0] + c->hi[2][1] * c->hi[2][1]) * (1 + c2d_pow2(3 - C2D_R_MANT)),
+                   2 * c->exp[2]);
     for (tier = 1; tier <= 3; tier++) {
         if (tier == 1) {
-            c2d_toia_e1(c, s, &ev);
-            if (c2d_abs(ev.q[C2D_TOIA_QF].v) > ev.q[C2D_TOIA_QF].r) *sf = c2d_toia_sgn(ev.q[C2D_TOIA_QF].v);
+            c2d_toia_eval_plain(c, s, &ev);
+            if (c2d_abs(ev.qty[C2D_TOIA_QF].value) > ev.qty[C2D_TOIA_QF].bound)
+                *sf = c2d_toia_sign_of(ev.qty[C2D_TOIA_QF].value);
         } else {
             if (tier == 2) {
                 c2d_dd lo, hi;
                 c2d_dd_copy(&lo, s);
                 c2d_dd_copy(&hi, s);
-                c2d_toia_t_add(&lo, -1, s->e - 8);
-                c2d_toia_t_add(&hi, 1, s->e - 8);
+                c2d_toia_time_add(&lo, -1, s->e - 8);
+                c2d_toia_time_add(&hi, 1, s->e - 8);
                 (void)c2d_toia_polish(c, s, C2D_TOIA_QH, &lo, &hi, 2 * C2D_R_MANT);
-                c2d_toia_e2(c, s, &ev);
+                c2d_toia_eval_double(c, s, &ev);
             } else {
-                c2d_toia_e3(c, s, &ev);
+                c2d_toia_eval_exact(c, s, &ev);
             }
         }
-        if (!(c2d_abs(ev.q[C2D_TOIA_QHP].v) > ev.q[C2D_TOIA_QHP].r) ||
-            c2d_toia_sgn(ev.q[C2D_TOIA_QHP].v) != kind)
+        if (!(c2d_abs(ev.qty[C2D_TOIA_QHP].value) > ev.qty[C2D_TOIA_QHP].bound) ||
+            c2d_toia_sign_of(ev.qty[C2D_TOIA_QHP].value) != kind)
             continue;
-        c2d_ext_set(&H, c2d_abs(ev.q[C2D_TOIA_QH].v) + ev.q[C2D_TOIA_QH].r, ev.q[C2D_TOIA_QH].e);
-        c2d_ext_set(&P, c2d_abs(ev.q[C2D_TOIA_QHP].v) - ev.q[C2D_TOIA_QHP].r, ev.q[C2D_TOIA_QHP].e);
+        c2d_ext_set(&H, c2d_abs(ev.qty[C2D_TOIA_QH].value) + ev.qty[C2D_TOIA_QH].bound, ev.qty[C2D_TOIA_QH].exp);
+        c2d_ext_set(&P, c2d_abs(ev.qty[C2D_TOIA_QHP].value) - ev.qty[C2D_TOIA_QHP].bound, ev.qty[C2D_TOIA_QHP].exp);
         /* the root exists within D unless h(s) may be positive (same sign as
          * h''): then P^2 >= 2 h'' H is needed (with slack) */
-        if (!(ev.q[C2D_TOIA_QH].v + ev.q[C2D_TOIA_QH].r < 0)) {
-            c2d_toia_ext_mul(&x, &P, &P);
-            c2d_toia_ext_mul(&y, &h2, &H);
+        if (!(ev.qty[C2D_TOIA_QH].value + ev.qty[C2D_TOIA_QH].bound < 0)) {
+            c2d_ext_mul(&x, &P, &P);
+            c2d_ext_mul(&y, &h2, &H);
             y.e += 1;
             if (H.m != 0 && c2d_toia_ext_cmp(&x, &y) <= 0) continue;
         }
         /* D = 2 H / P, S = H D (rounded up by the slack in the test) */
         c2d_ext_set(&D, 2 * H.m / P.m, H.e - P.e);
-        c2d_toia_ext_mul(&S, &H, &D);
+        c2d_ext_mul(&S, &H, &D);
         S.m *= 1 + c2d_pow2(4 - C2D_R_MANT);
-        c2d_ext_set(&G, c2d_abs(ev.q[C2D_TOIA_QG].v) - ev.q[C2D_TOIA_QG].r, ev.q[C2D_TOIA_QG].e);
-        if (G.m > 0 && c2d_toia_ext_cmp(&G, &S) > 0) return c2d_toia_sgn(ev.q[C2D_TOIA_QG].v);
+        c2d_ext_set(&G, c2d_abs(ev.qty[C2D_TOIA_QG].value) - ev.qty[C2D_TOIA_QG].bound, ev.qty[C2D_TOIA_QG].exp);
+        if (G.m > 0 && c2d_toia_ext_cmp(&G, &S) > 0) return c2d_toia_sign_of(ev.qty[C2D_TOIA_QG].value);
     }
     *tied = 1;
     return kind;
@@ -369,31 +363,31 @@ C2D_COLD int c2d_toia_split_sign(c2d_toia_ctx *c, c2d_dd *s, int kind, int *sf, 
 /* x.y (+ z.w) for input differences, as a double-length number: the exact
  * sum of the exact products when exact != 0, else from the hi parts in
  * plain arithmetic (a hint; relative error a few u unless it cancels). */
-static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dd *r);
+static void c2d_toia_dot_inputs(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dd *r);
 
 /* An exact sum of products (atoms) as a double-length number. */
-static void c2d_toia_t_ext_sum(c2d_dd *r, c2d_real *m, int *e, int n)
+static void c2d_toia_exact_sum_dd(c2d_dd *r, c2d_real *m, int *e, int n)
 {
     c2d_real hi, lo;
-    int k, ex = c2d_toia_ext_sum(m, e, n, &hi, &lo, &k);
+    int k, ex = c2d_toia_exact_sum(m, e, n, &hi, &lo, &k);
     c2d_dd_set(r, hi, lo, ex);
 }
 
-static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dd *r)
+static void c2d_toia_dot_inputs(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dd *r)
 {
     if (exact != 0) {
         c2d_real m[C2D_TOIA_ATOMS];
         int e[C2D_TOIA_ATOMS], n = c2d_toia_push_dot(c, m, e, 0, kx, ky, sgn);
         if (kz >= 0) n = c2d_toia_push_dot(c, m, e, n, kz, kw, sgn);
-        c2d_toia_t_ext_sum(r, m, e, n);
+        c2d_toia_exact_sum_dd(r, m, e, n);
     } else {
         c2d_dd p, q;
-        c2d_dd_set(&p, c->nz[kx] * c->nz[ky] != 0 ? (c2d_real)sgn * (c->m[kx][0] * c->m[ky][0] + c->m[kx][1] * c->m[ky][1]) : 0,
-                       0, c->ex[kx] + c->ex[ky]);
+        c2d_dd_set(&p, c->nonzero[kx] * c->nonzero[ky] != 0 ? (c2d_real)sgn * (c->hi[kx][0] * c->hi[ky][0] + c->hi[kx][1] * c->hi[ky][1]) : 0,
+                       0, c->exp[kx] + c->exp[ky]);
         if (kz >= 0) {
-            c2d_dd_set(&q, c->nz[kz] * c->nz[kw] != 0 ? (c2d_real)sgn * (c->m[kz][0] * c->m[kw][0] + c->m[kz][1] * c->m[kw][1]) : 0,
-                           0, c->ex[kz] + c->ex[kw]);
-            c2d_toia_t_sum(r, &p, &q);
+            c2d_dd_set(&q, c->nonzero[kz] * c->nonzero[kw] != 0 ? (c2d_real)sgn * (c->hi[kz][0] * c->hi[kw][0] + c->hi[kz][1] * c->hi[kw][1]) : 0,
+                           0, c->exp[kz] + c->exp[kw]);
+            c2d_toia_time_sum(r, &p, &q);
         } else {
             c2d_dd_copy(r, &p);
         }
@@ -413,20 +407,20 @@ static void c2d_toia_dotq(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int s
  * and w is accurate to its own precision.  Returns 0 if there is no real
  * root to report.  exact = 0: the coefficients from the hi parts (cheap
  * hints); 1: from exact sums (when the cheap ones did not certify). */
-C2D_COLD int c2d_toia_hroots(c2d_toia_ctx *c, const c2d_toia_ev *at_m, int exact, c2d_dd *rm,
+C2D_COLD int c2d_toia_h_roots(c2d_toia_ctx *c, const c2d_toia_values *at_m, int exact, c2d_dd *rm,
                                          c2d_dd *rp)
 {
     c2d_dd a2, beta, gamma, x, y, sq;
-    c2d_toia_dotq(c, 2, 2, -1, -1, 1, exact, &a2);
-    c2d_toia_dotq(c, 1, 2, -1, -1, 1, exact, &x);
+    c2d_toia_dot_inputs(c, 2, 2, -1, -1, 1, exact, &a2);
+    c2d_toia_dot_inputs(c, 1, 2, -1, -1, 1, exact, &x);
     c2d_dd_div(&beta, &x, &a2);
-    c2d_toia_dotq(c, 1, 1, 0, 2, 1, exact, &x);
+    c2d_toia_dot_inputs(c, 1, 1, 0, 2, 1, exact, &x);
     c2d_dd_div(&gamma, &x, &a2);
     c2d_dd_set(&y, (c2d_real)2 / (c2d_real)3, 0, 0); /* 2/3 to double length is enough for a hint */
     c2d_dd_mul(&gamma, &gamma, &y);
     if (at_m != NULL && beta.h < 0 && gamma.h > 0) {
         /* vertex form: w^2 = -2 h(m) / (3 |a|^2) */
-        c2d_dd_set(&x, -2 * at_m->q[C2D_TOIA_QH].v, 0, at_m->q[C2D_TOIA_QH].e);
+        c2d_dd_set(&x, -2 * at_m->qty[C2D_TOIA_QH].value, 0, at_m->qty[C2D_TOIA_QH].exp);
         c2d_dd_set(&y, 3, 0, 0);
         c2d_dd_mul(&y, &y, &a2);
         c2d_dd_div(&x, &x, &y);
@@ -434,7 +428,7 @@ C2D_COLD int c2d_toia_hroots(c2d_toia_ctx *c, const c2d_toia_ev *at_m, int exact
         c2d_dd_sqrt(&sq, &x);
         c2d_dd_copy(&x, &beta);
         c2d_dd_negate(&x);
-        c2d_toia_t_sum(rp, &x, &sq); /* m + w */
+        c2d_toia_time_sum(rp, &x, &sq); /* m + w */
         /* m - w may cancel: the product of the roots is gamma */
         c2d_dd_div(rm, &gamma, rp);
         return 1;
@@ -442,13 +436,13 @@ C2D_COLD int c2d_toia_hroots(c2d_toia_ctx *c, const c2d_toia_ev *at_m, int exact
     c2d_dd_mul(&x, &beta, &beta);
     c2d_dd_copy(&y, &gamma);
     c2d_dd_negate(&y);
-    c2d_toia_t_sum(&x, &x, &y);
+    c2d_toia_time_sum(&x, &x, &y);
     if (!(x.h > 0)) return 0;
     c2d_dd_sqrt(&sq, &x);
     if (beta.h > 0) c2d_dd_negate(&sq);
     c2d_dd_copy(&x, &beta);
     c2d_dd_negate(&x);
-    c2d_toia_t_sum(&x, &x, &sq); /* -beta - sgn(beta) sqrt: no cancellation */
+    c2d_toia_time_sum(&x, &x, &sq); /* -beta - sgn(beta) sqrt: no cancellation */
     if (x.h == 0) return 0;
     c2d_dd_div(&y, &gamma, &x);
     if (beta.h > 0) {
