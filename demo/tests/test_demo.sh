@@ -154,7 +154,7 @@ bad_says() {
     else c2d_failed "bad input says '$text': $* (status $status: $(cat "$TMP/err"))"; fi
 }
 
-# --- numbers (issue 19): underflow and overflow say so, as do a stray tail,
+# --- numbers: underflow and overflow say so, as do a stray tail,
 # an empty value, a leading blank (strtoull read " -1" as 2^64 - 1) and a
 # negative count
 bad_says "'1e-320' underflows" --seconds 1e-320
@@ -178,7 +178,7 @@ bad_says "negative" --scene gas --balls -5
 "$BIN" --headless --seconds 0 --json > "$TMP/zero.json" && [ "$(json_get "$TMP/zero.json" steps)" = 0 ]
 check "--seconds 0 is no underflow" $?
 
-# --- repeated options (issue 19): --place and --shot accumulate, the
+# --- repeated options: --place and --shot accumulate, the
 # switches (--headless, --json) may repeat; any other option taking a value
 # given twice is an error naming it, and nothing is written
 for opt in "--scene break" "--response box2d" "--balls 5" "--seed 3" "--game 8ball" "--players computer,computer" \
@@ -193,7 +193,7 @@ bad_says "a.png', then '$TMP/b.png'" --screenshot "$TMP/a.png" --screenshot "$TM
 check "switches may repeat: --headless --headless --json --json" $?
 "$BIN" --help | grep -q -- "--place and --shot may repeat"; check "--help says which options may repeat" $?
 
-# --- other papercuts (issue 19): --seed=3, a switch with a value, a stray
+# --- other papercuts: --seed=3, a switch with a value, a stray
 # argument, the value out of range named
 bad_says "give the value as the next argument (--seed 3)" --seed=3
 bad_says "--json takes no value" --json=1
@@ -203,7 +203,7 @@ bad_says "got '90000'" --seconds 90000
 bad_says "got '0'" --scene gas --balls 0
 "$BIN" --help | grep -q -- "--help, -h"; check "--help lists itself" $?
 
-# --- outputs (issue 19): a value that looks like an option, two outputs in
+# --- outputs: a value that looks like an option, two outputs in
 # one file
 bad_says "looks like an option" --events --json
 bad_says "looks like an option" --trace -
@@ -212,7 +212,7 @@ ln -s same2.csv "$TMP/link.csv" && : > "$TMP/same2.csv"
 bad_says "name the same file" --events "$TMP/same2.csv" --speeds "$TMP/link.csv"
 "$BIN" --headless --seconds 0 --events /dev/null --trace /dev/null > /dev/null; check "two outputs to /dev/null are fine" $?
 
-# --- checks before simulating (issue 19): exit 2 with nothing simulated (no
+# --- checks before simulating: exit 2 with nothing simulated (no
 # summary on stdout) and no file left behind, an existing one untouched
 env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --headless --screenshot-window "$TMP/nowin.png" \
     --events "$TMP/nowin.csv" > "$TMP/out" 2> "$TMP/err"
@@ -234,7 +234,7 @@ check "a failed check leaves no new file and an existing one untouched" $?
 bad_says "--screenshot: $TMP" --screenshot "$TMP"
 bad_says "--screenshot: /nonexistent-dir" --game 8ball --screenshot /nonexistent-dir/x.png
 
-# --- stdout (issue 19): a failed write of --help, the summary or the JSON
+# --- stdout: a failed write of --help, the summary or the JSON
 # is exit 1 with a message
 "$BIN" --help > "$TMP/out" && head -1 "$TMP/out" | grep -q '^usage: billiards'; check "--help: usage, exit 0" $?
 "$BIN" --help > /dev/full 2> "$TMP/err"

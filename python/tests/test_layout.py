@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""The ctypes structs against the C ones (issue 18): size, alignment, and
+"""The ctypes structs against the C ones: size, alignment, and
 every field's name, order, offset and size, as the C compiler lays them out
 (python/tests/layout.c prints sizeof/offsetof).  make test-python builds
 that program as $(B)/python/layout and names it in COLLIDE2D_LAYOUT; run by

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Every value the binding takes is checked before it reaches C (issue 19):
+"""Every value the binding takes is checked before it reaches C:
 a TypeError for the wrong kind of thing, a ValueError for a wrong value
 (a wrong number of components, a number beyond the C type), never a silent
 zero fill, truncation or infinity.  NaN and infinities pass: the C contract

@@ -4,8 +4,8 @@
 # MAKEFLAGS from a calling make) in a fresh copy of the source tree
 # (OUTDIR/tree: the files git knows or would add, or everything but build/
 # outside a git checkout) builds build/libcollide2d.a, the shared library
-# and build/collide2d.pc (issue 19: `make` once did nothing).  Then the
-# header dependencies (-MMD -MP, issue 18): a second `make` compiles
+# and build/collide2d.pc (`make` once built nothing: a FORCE rule came first).  Then the
+# header dependencies (-MMD -MP): a second `make` compiles
 # nothing, touching a template header recompiles the objects that include
 # it and only those, touching include/collide2d.h recompiles every object.
 # The copy is left for tests/build/install.sh.  Prints

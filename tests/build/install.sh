@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # install.sh TREE OUTDIR - `make install` and `make uninstall` with spaces
-# in DESTDIR and PREFIX (issue 19), run in TREE (a copy of the source tree,
+# in DESTDIR and PREFIX, run in TREE (a copy of the source tree,
 # tests/build/default_goal.sh's, so the builds of a parallel `make test`
 # are not disturbed); scratch directories under OUTDIR/"space dir":
 #   - install into DESTDIR="OUTDIR/space dir/stage 3" PREFIX="/opt/my dir":
