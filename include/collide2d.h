@@ -44,7 +44,18 @@
  *   C2D_NO_DISPATCH [undefined] no run-time choice of CPU-specific code (gcc,
  *                  hosted x86-64 only: the batch kernel's SSE2/SSE4.2/AVX2/
  *                  AVX-512 versions and the FMA double-double tier; same bits
- *                  either way)
+ *                  either way).  Implied under ThreadSanitizer, which cannot
+ *                  run the loader's choice (an ifunc resolver) before main.
+ *   C2D_ALLOW_FAST_MATH [undefined]  build the library even under -ffast-math
+ *                  or -ffinite-math-only, which otherwise stop its build with
+ *                  an #error.  At your own risk: those flags let the compiler
+ *                  assume no NaN or Inf and reassociate, and the library's
+ *                  checks and exact arithmetic rely on neither happening; then
+ *                  NaN/Inf inputs may be accepted, C2D_OK come with NaN
+ *                  outputs, statuses be wrong, bits differ between builds.
+ *                  Your own code may use them: the library is compiled apart,
+ *                  and the inline front ends (C2D_INLINE, below) become plain
+ *                  calls of the library under either flag.
  *   C2D_HEADER     ["../include/collide2d.h" from lib/; "collide2d.h" from the
  *                  amalgamation]  how the library's sources find this file,
  *                  e.g. -DC2D_HEADER='"collide2d.h"' when both sit in one
@@ -341,7 +352,12 @@ c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed
  * (gcc 12 -O2, x86-64; bench/callsite.c), against 5 bytes for the call.
  * Same statuses, same bits as the library call (tests/unit/test_inline.c
  * checks it), provided the compiler evaluates them as written: no
- * -ffast-math and no FMA contraction.  The header turns them on
+ * -ffast-math or -ffinite-math-only (under which the compiler may drop the
+ * NaN tests the accept test relies on) and no FMA contraction.  Under
+ * either flag they are plain calls, right whatever the caller's flags: the
+ * header neither warns nor stops (your code may want fast math, and the
+ * library is compiled apart; its own build refuses the flags, see
+ * C2D_ALLOW_FAST_MATH).  The header turns them on
  * (C2D_INLINE_AS_WRITTEN 1) only where it can tell: clang (the
  * functions switch contraction off themselves), gcc in strict ISO mode
  * (-std=c99, c11, c++11...: contraction off by default) or for a target
@@ -349,7 +365,7 @@ c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed
  * One case no macro shows: -ffp-contract=fast given explicitly with -std=c99
  * on gcc for an FMA target.  Don't combine it with C2D_INLINE. */
 #if defined(C2D_INLINE)
-#if !defined(__FAST_MATH__) && (defined(__clang__) || (defined(__GNUC__) && (defined(__STRICT_ANSI__) || \
+#if !defined(__FAST_MATH__) && !(defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) && (defined(__clang__) || (defined(__GNUC__) && (defined(__STRICT_ANSI__) || \
     !(defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)))))
 #define C2D_INLINE_AS_WRITTEN 1
 #else

@@ -16,8 +16,9 @@
  *   A partial block (the tail) and a bad restitution take the scalar call.
  *
  * RUN-TIME DISPATCH
- *   On hosted x86-64 ELF with gcc or clang (C2D_DISPATCH, internal.h; off
- *   with C2D_NO_DISPATCH, and never in freestanding or MCU builds) the
+ *   On hosted x86-64 ELF with gcc (C2D_DISPATCH, internal.h; off with
+ *   C2D_NO_DISPATCH, and never in freestanding or MCU builds nor under
+ *   ThreadSanitizer, whose gcc instrumentation breaks the resolver) the
  *   kernel is compiled four times by target_clones and the loader picks one
  *   (ifunc): baseline x86-64 (SSE2: float vectorises, double does not, for
  *   want of 64-bit compares), x86-64-v2 (SSE4.2: double too), x86-64-v3
