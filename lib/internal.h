@@ -13,6 +13,9 @@
 #ifndef C2D_INTERNAL_H
 #define C2D_INTERNAL_H
 
+/* The header's internal definitions the library shares with its inline
+ * front ends (the accept test, real/collide/fast.h). */
+#define C2D_BUILDING_LIBRARY 1
 #ifdef C2D_HEADER
 #include C2D_HEADER
 #else

@@ -76,7 +76,7 @@ static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, 
 {
     c2d_real out[4][C2D_BLOCK];
     c2d_real_bits keep[C2D_BLOCK];
-    const c2d_real hi = c2d_pow2(C2D_R_QUICK), lo = c2d_pow2(-C2D_R_QUICK);
+    const c2d_real hi = C2D_R_QUICK_HI, lo = C2D_R_QUICK_LO;
     const c2d_real *pax = p->pos_ax + base, *pay = p->pos_ay + base;
     const c2d_real *pbx = p->pos_bx + base, *pby = p->pos_by + base;
     const c2d_real *vax = p->vel_ax + base, *vay = p->vel_ay + base;
