@@ -51,6 +51,15 @@ C2D_HOT c2d_real c2d_pick(c2d_real x, c2d_real_bits keep, c2d_real_bits one)
     return c2d_from_bits((c2d_bits(x) & keep) | (c2d_bits((c2d_real)1.0) & one));
 }
 
+/* x, or `old` where `immovable` is 1: a bit-mask select, branch-free for
+ * the vectoriser (an immovable body keeps its velocity's bits: -0 stays
+ * -0, which x = old + 0 would not keep). */
+C2D_HOT c2d_real c2d_keep(c2d_real x, c2d_real old, c2d_real_bits immovable)
+{
+    const c2d_real_bits keep = (c2d_real_bits)0 - immovable;
+    return c2d_from_bits((c2d_bits(x) & ~keep) | (c2d_bits(old) & keep));
+}
+
 /* From an accurate d to the new velocities, out = {va'x, va'y, vb'x, vb'y}.
  * Returns nonzero when every intermediate stayed where it is accurate to its
  * rounding; the caller falls back otherwise. */
@@ -69,10 +78,13 @@ C2D_HOT c2d_real_bits c2d_finish(c2d_real d, const c2d_pair *p, c2d_real e1, c2d
     const c2d_real c = e1 * d / den;
     const c2d_real la = c * fb, lb = c * fa;
     const c2d_real ac = c2d_abs(c);
-    out[0] = p->va.x + la * p->n.x;
-    out[1] = p->va.y + la * p->n.y;
-    out[2] = p->vb.x - lb * p->n.x;
-    out[3] = p->vb.y - lb * p->n.y;
+    /* An immovable body's velocity is returned as given, bits included: its
+     * change la n or lb n is a zero whose sign follows c and n, and
+     * -0 + +0 is +0. */
+    out[0] = c2d_keep(p->va.x + la * p->n.x, p->va.x, ia);
+    out[1] = c2d_keep(p->va.y + la * p->n.y, p->va.y, ia);
+    out[2] = c2d_keep(p->vb.x - lb * p->n.x, p->vb.x, ib);
+    out[3] = c2d_keep(p->vb.y - lb * p->n.y, p->vb.y, ib);
     /* A lambda may be 0 only for an immovable body, never by underflow; two
      * immovable bodies and NaN masses (m > 0 fails) are refused. */
     return (c2d_real_bits)(p->ma > 0) & (c2d_real_bits)(p->mb > 0) & ((ia & ib) ^ 1u) &
@@ -174,13 +186,24 @@ static inline int c2d_quick_wall(const c2d_pair *p, c2d_real *fa, c2d_real *fb)
 C2D_HOT c2d_verdict c2d_quick(const c2d_pair *p, c2d_real e1, c2d_real *out)
 {
     c2d_real fa = p->ma, fb = p->mb, msum = p->ma + p->mb, lighter = p->ma < p->mb ? p->ma : p->mb;
-    int r;
+    int r, wall = 0;
     if (p->n.x == 0 || p->n.y == 0) return C2D_VERDICT_AXIS;
     if (!(msum <= C2D_R_MAX) && c2d_quick_wall(p, &fa, &fb)) {
         msum = 0;
         lighter = 1;
+        wall = 1;
     }
     r = C2D_R_ACCEPT(p->n.x, p->n.y, p->va.x, p->va.y, p->vb.x, p->vb.y, fa, fb, msum, lighter, e1, out);
+    if (r == C2D_ACCEPT_OK && wall) {
+        /* The wall's own velocity as given (its change is a signed zero). */
+        if (fa == 0) {
+            out[2] = p->vb.x;
+            out[3] = p->vb.y;
+        } else {
+            out[0] = p->va.x;
+            out[1] = p->va.y;
+        }
+    }
     if (r == C2D_ACCEPT_OK) return C2D_VERDICT_OK;
     if (r == C2D_ACCEPT_SEPARATING) return C2D_VERDICT_SEPARATING;
     return r == C2D_ACCEPT_UNDECIDED ? C2D_VERDICT_ACCURATE : C2D_VERDICT_GENERAL;
