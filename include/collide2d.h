@@ -430,6 +430,7 @@ enum { C2D_ACCEPT_OUTSIDE = 0, C2D_ACCEPT_OK = 1, C2D_ACCEPT_SEPARATING = 2, C2D
 #define C2D_ACCEPT_FABS_(x) ((x) > -(x) ? (x) : -(x)) /* |x| for a plain variable; NaN: a NaN */
 #define C2D_ACCEPT_FABSF_(x) ((x) > -(x) ? (x) : -(x))
 #endif
+/* NOLINTBEGIN(bugprone-macro-parentheses): `real` and `body` are types */
 #define C2D_ACCEPT_DEFINE_(name, real, fabs, hi, lo)                                                                   \
     C2D_ACCEPT_INLINE_ int name(real nx, real ny, real vax, real vay, real vbx, real vby, real fa, real fb,           \
                                 real msum, real lighter, real e1, real *out)                                           \
@@ -454,6 +455,7 @@ enum { C2D_ACCEPT_OUTSIDE = 0, C2D_ACCEPT_OK = 1, C2D_ACCEPT_SEPARATING = 2, C2D
         }                                                                                                              \
         return 4 * d - k >= 0 ? C2D_ACCEPT_SEPARATING : C2D_ACCEPT_UNDECIDED;                                          \
     }
+/* NOLINTEND(bugprone-macro-parentheses) */
 #ifndef C2D_NO_DOUBLE
 C2D_ACCEPT_DEFINE_(c2d_accept, double, C2D_ACCEPT_FABS_, C2D_ACCEPT_HI, C2D_ACCEPT_LO)
 #endif
@@ -464,6 +466,7 @@ C2D_ACCEPT_DEFINE_(c2d_acceptf, float, C2D_ACCEPT_FABSF_, C2D_ACCEPT_HIF, C2D_AC
 /* The inline front ends' use of it: a pair of bodies off the axes, not a
  * wall (a mass INFINITY leaves the window: the library call takes it); 1
  * with *st set when it decides (velocities written on OK). */
+/* NOLINTBEGIN(bugprone-macro-parentheses): `real` and `body` are types */
 #define C2D_INLINE_FRONT_DEFINE_(name, accept, real, body)                                                             \
     C2D_ACCEPT_INLINE_ int name(real nx, real ny, body *a, body *b, real e1, c2d_status *st)                           \
     {                                                                                                                  \
@@ -484,6 +487,7 @@ C2D_ACCEPT_DEFINE_(c2d_acceptf, float, C2D_ACCEPT_FABSF_, C2D_ACCEPT_HIF, C2D_AC
         }                                                                                                              \
         return 0;                                                                                                      \
     }
+/* NOLINTEND(bugprone-macro-parentheses) */
 #endif /* C2D_ACCEPT_WANTED_ */
 
 #if defined(C2D_INLINE)
