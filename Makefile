@@ -222,7 +222,7 @@ LINT_TARGETS :=
 -include tests/mcu/mcu.mk
 -include tests/fuzz/fuzz.mk
 -include tests/build/lint.mk
--include tests/build/make.mk
+-include tests/build/build.mk
 -include tests/consumers/consumers.mk
 -include examples/examples.mk
 -include python/python.mk

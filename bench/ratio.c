@@ -446,8 +446,8 @@ static void run_groups(int rounds, const pass *canary, int back_to_back, run_inf
 
 /* ------------------------------------------------------------ the inputs */
 
-/* The front end's accept test (real/collide/fast.h c2d_quick; the header's inline
- * form), in double and in float: an approaching pair off the axes, inside
+/* The front end's accept test (include/collide2d.h C2D_ACCEPT_DEFINE_, which
+ * real/collide/fast.h c2d_quick and the inline forms run), in double and in float: an approaching pair off the axes, inside
  * the window, whose d does not cancel. */
 static int accepted(const ref_case *c)
 {

@@ -44,7 +44,18 @@
  *   C2D_NO_DISPATCH [undefined] no run-time choice of CPU-specific code (gcc,
  *                  hosted x86-64 only: the batch kernel's SSE2/SSE4.2/AVX2/
  *                  AVX-512 versions and the FMA double-double tier; same bits
- *                  either way)
+ *                  either way).  Implied under ThreadSanitizer, which cannot
+ *                  run the loader's choice (an ifunc resolver) before main.
+ *   C2D_ALLOW_FAST_MATH [undefined]  build the library even under -ffast-math
+ *                  or -ffinite-math-only, which otherwise stop its build with
+ *                  an #error.  At your own risk: those flags let the compiler
+ *                  assume no NaN or Inf and reassociate, and the library's
+ *                  checks and exact arithmetic rely on neither happening; then
+ *                  NaN/Inf inputs may be accepted, C2D_OK come with NaN
+ *                  outputs, statuses be wrong, bits differ between builds.
+ *                  Your own code may use them: the library is compiled apart,
+ *                  and the inline front ends (C2D_INLINE, below) become plain
+ *                  calls of the library under either flag.
  *   C2D_HEADER     ["../include/collide2d.h" from lib/; "collide2d.h" from the
  *                  amalgamation]  how the library's sources find this file,
  *                  e.g. -DC2D_HEADER='"collide2d.h"' when both sit in one
@@ -341,7 +352,12 @@ c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed
  * (gcc 12 -O2, x86-64; bench/callsite.c), against 5 bytes for the call.
  * Same statuses, same bits as the library call (tests/unit/test_inline.c
  * checks it), provided the compiler evaluates them as written: no
- * -ffast-math and no FMA contraction.  The header turns them on
+ * -ffast-math or -ffinite-math-only (under which the compiler may drop the
+ * NaN tests the accept test relies on) and no FMA contraction.  Under
+ * either flag they are plain calls, right whatever the caller's flags: the
+ * header neither warns nor stops (your code may want fast math, and the
+ * library is compiled apart; its own build refuses the flags, see
+ * C2D_ALLOW_FAST_MATH).  The header turns them on
  * (C2D_INLINE_AS_WRITTEN 1) only where it can tell: clang (the
  * functions switch contraction off themselves), gcc in strict ISO mode
  * (-std=c99, c11, c++11...: contraction off by default) or for a target
@@ -349,49 +365,134 @@ c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed
  * One case no macro shows: -ffp-contract=fast given explicitly with -std=c99
  * on gcc for an FMA target.  Don't combine it with C2D_INLINE. */
 #if defined(C2D_INLINE)
-#if !defined(__FAST_MATH__) && (defined(__clang__) || (defined(__GNUC__) && (defined(__STRICT_ANSI__) || \
+#if !defined(__FAST_MATH__) && !(defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) && (defined(__clang__) || (defined(__GNUC__) && (defined(__STRICT_ANSI__) || \
     !(defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)))))
 #define C2D_INLINE_AS_WRITTEN 1
 #else
 #define C2D_INLINE_AS_WRITTEN 0
 #endif
 
-#if C2D_INLINE_AS_WRITTEN && !defined(C2D_NO_DOUBLE)
-/* Internal to the inline front ends: the accept test for a normal (nx, ny)
- * off the axes; 1 with *st set when it decides (velocities written on OK). */
-static inline int c2d_inline_front(double nx, double ny, c2d_body *a, c2d_body *b, double e1, c2d_status *st)
-{
-#ifdef __clang__
-#pragma clang fp contract(off)
+#endif /* C2D_INLINE */
+
+/* ------------------------------------------------------- the accept test
+ * The one definition of the frictionless input-only accept test, for the
+ * inline front ends (below) and the library's own front end (c2d_quick in
+ * lib/real/collide/fast.h, which derives it: window, proof that the fast
+ * path would accept, same operations in the same order).  Internal: not
+ * part of the API, defined only for C2D_INLINE's front ends and for the
+ * library's sources (C2D_BUILDING_LIBRARY, lib/internal.h).
+ *
+ * Why here, as one macro instantiated for double and float, rather than
+ * generated from the template or kept in a second header: this header is
+ * the one file a user installs or copies beside the amalgamation
+ * (C2D_HEADER), and the library's sources already include it, so the
+ * library and its users compile the very same lines, with no generator to
+ * run and no freshness check to keep, and installs (make, CMake) stay one
+ * file.  tests/unit/test_inline.c still checks the bits and statuses.
+ *
+ * C2D_ACCEPT_DEFINE_(name, real, hi, lo) defines
+ *   int name(nx, ny, vax, vay, vbx, vby, fa, fb, msum, lighter, e1, out)
+ * for the normal (nx, ny) from a towards b, the velocities, the masses as
+ * the formula weighs them (fa, fb: the bodies' masses, or the pair (0, 1) /
+ * (1, 0) for a wall), and the masses as the window sees them (msum and
+ * lighter: fa + fb and the smaller, or 0 and 1 for a wall, whose window
+ * leaves the masses out).  Returns C2D_ACCEPT_OK (out = {va'x, va'y, vb'x,
+ * vb'y}), C2D_ACCEPT_SEPARATING, C2D_ACCEPT_UNDECIDED (inside the window,
+ * d cancels) or C2D_ACCEPT_OUTSIDE (outside the window, or on an axis).
+ * The window is [lo, hi] = [2^-200, 2^200] (double), [2^-20, 2^20] (float).
+ * |p| is the compiler's fabs (gcc, clang), else max(p, -p); the conditions are
+ * 0/1 values joined with &: one branch on all of them, not a jump per
+ * condition on data the predictor cannot learn. */
+#if defined(C2D_BUILDING_LIBRARY)
+#define C2D_ACCEPT_WANTED_ 1
+#elif defined(C2D_INLINE)
+#define C2D_ACCEPT_WANTED_ C2D_INLINE_AS_WRITTEN
+#else
+#define C2D_ACCEPT_WANTED_ 0
 #endif
-    const double hi = 1.6069380442589903e60, lo = 6.2230152778611417e-61; /* 2^200, 2^-200 */
-    const double px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
-    const double mpx = -px, mpy = -py; /* |p| as max(p, -p): maxsd, where p < 0 ? -p : p is a select */
-    const double d = px + py, k = (px > mpx ? px : mpx) + (py > mpy ? py : mpy), nn = nx * nx + ny * ny;
-    const double geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
-    const double least = geometry < lighter ? geometry : lighter;
-    /* Each condition a 0/1 value joined with &: one branch on all of
-     * them, not a jump per condition on data the predictor cannot learn. */
-    const unsigned window = (unsigned)(nx != 0) & (unsigned)(ny != 0) &
-                            (unsigned)((k + nn) + (a->mass + b->mass) <= hi) & (unsigned)(least >= lo);
-    if (window == 0u) return 0;
-    if (4 * d + k <= 0) {
-        const double den = nn * (a->mass + b->mass);
-        const double c = e1 * d / den;
-        const double la = c * b->mass, lb = c * a->mass;
-        a->vel.x = a->vel.x + la * nx;
-        a->vel.y = a->vel.y + la * ny;
-        b->vel.x = b->vel.x - lb * nx;
-        b->vel.y = b->vel.y - lb * ny;
-        *st = C2D_OK;
-        return 1;
+#if C2D_ACCEPT_WANTED_
+enum { C2D_ACCEPT_OUTSIDE = 0, C2D_ACCEPT_OK = 1, C2D_ACCEPT_SEPARATING = 2, C2D_ACCEPT_UNDECIDED = 3 };
+#define C2D_ACCEPT_HI 1.6069380442589903e60  /* 2^200 */
+#define C2D_ACCEPT_LO 6.2230152778611417e-61 /* 2^-200 */
+#define C2D_ACCEPT_HIF 1048576.0f            /* 2^20 */
+#define C2D_ACCEPT_LOF 9.5367431640625e-07f  /* 2^-20 */
+#ifdef __clang__
+#define C2D_ACCEPT_AS_WRITTEN_ _Pragma("clang fp contract(off)")
+#else
+#define C2D_ACCEPT_AS_WRITTEN_
+#endif
+#ifdef __GNUC__
+#define C2D_ACCEPT_INLINE_ static inline __attribute__((always_inline))
+#define C2D_ACCEPT_FABS_ __builtin_fabs /* one andpd; <math.h> is not assumed */
+#define C2D_ACCEPT_FABSF_ __builtin_fabsf
+#else
+#define C2D_ACCEPT_INLINE_ static inline
+#define C2D_ACCEPT_FABS_(x) ((x) > -(x) ? (x) : -(x)) /* |x| for a plain variable; NaN: a NaN */
+#define C2D_ACCEPT_FABSF_(x) ((x) > -(x) ? (x) : -(x))
+#endif
+/* NOLINTBEGIN(bugprone-macro-parentheses): `real` and `body` are types */
+#define C2D_ACCEPT_DEFINE_(name, real, fabs, hi, lo)                                                                   \
+    C2D_ACCEPT_INLINE_ int name(real nx, real ny, real vax, real vay, real vbx, real vby, real fa, real fb,           \
+                                real msum, real lighter, real e1, real *out)                                           \
+    {                                                                                                                  \
+        C2D_ACCEPT_AS_WRITTEN_                                                                                         \
+        const real px = (vbx - vax) * nx, py = (vby - vay) * ny;                                                       \
+        const real d = px + py, k = fabs(px) + fabs(py), nn = nx * nx + ny * ny;                                       \
+        const real geometry = k < nn ? k : nn;                                                                         \
+        const real least = geometry < lighter ? geometry : lighter;                                                    \
+        const unsigned window = (unsigned)(nx != 0) & (unsigned)(ny != 0) & (unsigned)((k + nn) + msum <= (hi)) &      \
+                                (unsigned)(least >= (lo));                                                             \
+        if (window == 0u) return C2D_ACCEPT_OUTSIDE;                                                                   \
+        if (4 * d + k <= 0) {                                                                                          \
+            const real den = nn * (fa + fb);                                                                           \
+            const real c = e1 * d / den;                                                                               \
+            const real la = c * fb, lb = c * fa;                                                                       \
+            out[0] = vax + la * nx;                                                                                    \
+            out[1] = vay + la * ny;                                                                                    \
+            out[2] = vbx - lb * nx;                                                                                    \
+            out[3] = vby - lb * ny;                                                                                    \
+            return C2D_ACCEPT_OK;                                                                                      \
+        }                                                                                                              \
+        return 4 * d - k >= 0 ? C2D_ACCEPT_SEPARATING : C2D_ACCEPT_UNDECIDED;                                          \
     }
-    if (4 * d - k >= 0) {
-        *st = C2D_SEPARATING;
-        return 1;
+/* NOLINTEND(bugprone-macro-parentheses) */
+#ifndef C2D_NO_DOUBLE
+C2D_ACCEPT_DEFINE_(c2d_accept, double, C2D_ACCEPT_FABS_, C2D_ACCEPT_HI, C2D_ACCEPT_LO)
+#endif
+#ifndef C2D_NO_FLOAT
+C2D_ACCEPT_DEFINE_(c2d_acceptf, float, C2D_ACCEPT_FABSF_, C2D_ACCEPT_HIF, C2D_ACCEPT_LOF)
+#endif
+
+/* The inline front ends' use of it: a pair of bodies off the axes, not a
+ * wall (a mass INFINITY leaves the window: the library call takes it); 1
+ * with *st set when it decides (velocities written on OK). */
+/* NOLINTBEGIN(bugprone-macro-parentheses): `real` and `body` are types */
+#define C2D_INLINE_FRONT_DEFINE_(name, accept, real, body)                                                             \
+    C2D_ACCEPT_INLINE_ int name(real nx, real ny, body *a, body *b, real e1, c2d_status *st)                           \
+    {                                                                                                                  \
+        real out[4];                                                                                                   \
+        const int r = accept(nx, ny, a->vel.x, a->vel.y, b->vel.x, b->vel.y, a->mass, b->mass, a->mass + b->mass,      \
+                             a->mass < b->mass ? a->mass : b->mass, e1, out);                                          \
+        if (r == C2D_ACCEPT_OK) {                                                                                      \
+            a->vel.x = out[0];                                                                                         \
+            a->vel.y = out[1];                                                                                         \
+            b->vel.x = out[2];                                                                                         \
+            b->vel.y = out[3];                                                                                         \
+            *st = C2D_OK;                                                                                              \
+            return 1;                                                                                                  \
+        }                                                                                                              \
+        if (r == C2D_ACCEPT_SEPARATING) {                                                                              \
+            *st = C2D_SEPARATING;                                                                                      \
+            return 1;                                                                                                  \
+        }                                                                                                              \
+        return 0;                                                                                                      \
     }
-    return 0;
-}
+/* NOLINTEND(bugprone-macro-parentheses) */
+#endif /* C2D_ACCEPT_WANTED_ */
+
+#if defined(C2D_INLINE)
+#if C2D_INLINE_AS_WRITTEN && !defined(C2D_NO_DOUBLE)
+C2D_INLINE_FRONT_DEFINE_(c2d_inline_front, c2d_accept, double, c2d_body)
 
 static inline c2d_status c2d_collide_inline(c2d_body *a, c2d_body *b, double restitution)
 {
@@ -424,39 +525,7 @@ static inline c2d_status c2d_collide_normal_inline(c2d_body *a, c2d_body *b, c2d
 #endif
 
 #if C2D_INLINE_AS_WRITTEN && !defined(C2D_NO_FLOAT)
-static inline int c2d_inline_frontf(float nx, float ny, c2d_bodyf *a, c2d_bodyf *b, float e1, c2d_status *st)
-{
-#ifdef __clang__
-#pragma clang fp contract(off)
-#endif
-    const float hi = 1048576.0f, lo = 9.5367431640625e-07f; /* 2^20, 2^-20 */
-    const float px = (b->vel.x - a->vel.x) * nx, py = (b->vel.y - a->vel.y) * ny;
-    const float mpx = -px, mpy = -py; /* |p| as max(p, -p): maxsd, where p < 0 ? -p : p is a select */
-    const float d = px + py, k = (px > mpx ? px : mpx) + (py > mpy ? py : mpy), nn = nx * nx + ny * ny;
-    const float geometry = k < nn ? k : nn, lighter = a->mass < b->mass ? a->mass : b->mass;
-    const float least = geometry < lighter ? geometry : lighter;
-    /* Each condition a 0/1 value joined with &: one branch on all of
-     * them, not a jump per condition on data the predictor cannot learn. */
-    const unsigned window = (unsigned)(nx != 0) & (unsigned)(ny != 0) &
-                            (unsigned)((k + nn) + (a->mass + b->mass) <= hi) & (unsigned)(least >= lo);
-    if (window == 0u) return 0;
-    if (4 * d + k <= 0) {
-        const float den = nn * (a->mass + b->mass);
-        const float c = e1 * d / den;
-        const float la = c * b->mass, lb = c * a->mass;
-        a->vel.x = a->vel.x + la * nx;
-        a->vel.y = a->vel.y + la * ny;
-        b->vel.x = b->vel.x - lb * nx;
-        b->vel.y = b->vel.y - lb * ny;
-        *st = C2D_OK;
-        return 1;
-    }
-    if (4 * d - k >= 0) {
-        *st = C2D_SEPARATING;
-        return 1;
-    }
-    return 0;
-}
+C2D_INLINE_FRONT_DEFINE_(c2d_inline_frontf, c2d_acceptf, float, c2d_bodyf)
 
 static inline c2d_status c2d_collidef_inline(c2d_bodyf *a, c2d_bodyf *b, float restitution)
 {

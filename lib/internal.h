@@ -13,6 +13,9 @@
 #ifndef C2D_INTERNAL_H
 #define C2D_INTERNAL_H
 
+/* The header's internal definitions the library shares with its inline
+ * front ends (the accept test, real/collide/fast.h). */
+#define C2D_BUILDING_LIBRARY 1
 #ifdef C2D_HEADER
 #include C2D_HEADER
 #else
@@ -44,14 +47,44 @@ float sqrtf(float x);
 #define C2D_COLD static
 #endif
 
+/* The library's arithmetic is IEEE-754's as written: NaN fails every
+ * comparison (that is how the fast path refuses NaN and Inf inputs), x - x
+ * is 0 only for finite x, and the exact sums rely on every rounding being
+ * where the source puts it.  -ffast-math and -ffinite-math-only take all of
+ * that away (issue 19: C2D_OK with NaN outputs, NaN and Inf inputs
+ * accepted, wrong statuses), so they stop the build here, unless the
+ * builder says with C2D_ALLOW_FAST_MATH that wrong results are acceptable
+ * (include/collide2d.h, CONFIGURATION).  -fassociative-math,
+ * -freciprocal-math and -fno-signed-zeros alone define no macro and cannot
+ * be caught: don't use them for lib/ either. */
+#if (defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)) && \
+    !defined(C2D_ALLOW_FAST_MATH)
+#error "collide2d: lib/ must not be built with -ffast-math or -ffinite-math-only: its NaN/Inf checks and exact arithmetic need IEEE-754 semantics (else C2D_OK with NaN outputs, NaN/Inf inputs accepted, wrong statuses). Build lib/ without them (your own code may keep them), or define C2D_ALLOW_FAST_MATH to accept wrong results."
+#endif
+
+/* Built with ThreadSanitizer (gcc: __SANITIZE_THREAD__; clang:
+ * __has_feature(thread_sanitizer)): no run-time dispatch.  gcc instruments
+ * target_clones' ifunc resolver, which the loader runs while it relocates
+ * the program, before the TSan run time exists: any program that links
+ * the library segfaulted before main (tests/build/tsan.sh).  ASan and UBSan
+ * instrument the resolver harmlessly (checked with gcc 12), and gcc has no
+ * MSan; clang does not dispatch (below). */
+#if defined(__SANITIZE_THREAD__)
+#define C2D_TSAN 1
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+#define C2D_TSAN 1
+#endif
+#endif
+
 /* Run-time dispatch (real/collide/batch.h: gcc's target_clones, an ifunc resolved
  * by the loader; real/collide/collide.h: the FMA tier): only gcc on hosted x86-64
  * ELF builds, off with C2D_NO_DISPATCH, never in freestanding or MCU
- * builds.  Not clang: clang 14 gives a static function's target_clones
- * resolver a global name, so double.c's and float.c's kernels would clash
- * at link time. */
+ * builds nor under ThreadSanitizer (C2D_TSAN, above).  Not clang: clang 14
+ * gives a static function's target_clones resolver a global name, so
+ * double.c's and float.c's kernels would clash at link time. */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) && \
-    defined(__STDC_HOSTED__) && __STDC_HOSTED__ == 1 && !defined(C2D_NO_DISPATCH)
+    defined(__STDC_HOSTED__) && __STDC_HOSTED__ == 1 && !defined(C2D_NO_DISPATCH) && !defined(C2D_TSAN)
 #define C2D_DISPATCH 1
 #endif
 

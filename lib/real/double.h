@@ -36,7 +36,11 @@
 #define C2D_R_WINDOW 600     /* exact-sum window, binades */
 #define C2D_R_MARGIN 70      /* window sum must dominate the rest by 2^70 */
 
-#define C2D_R_QUICK 200        /* front end's window: [2^-200, 2^200] (real/collide/fast.h) */
+/* The front end's accept test and its window [2^-200, 2^200]: the public
+ * header's (include/collide2d.h, C2D_ACCEPT_DEFINE_; real/collide/fast.h). */
+#define C2D_R_ACCEPT c2d_accept
+#define C2D_R_QUICK_HI C2D_ACCEPT_HI
+#define C2D_R_QUICK_LO C2D_ACCEPT_LO
 
 #define C2D_R_TOI_WINDOW 100   /* time of impact unscaled within [2^-100, 2^100] (real/toi.h) */
 

@@ -35,7 +35,11 @@
 #define C2D_R_WINDOW 72      /* exact-sum window, binades */
 #define C2D_R_MARGIN 36      /* window sum must dominate the rest by 2^36 */
 
-#define C2D_R_QUICK 20        /* front end's window: [2^-20, 2^20] (real/collide/fast.h) */
+/* The front end's accept test and its window [2^-20, 2^20]: the public
+ * header's (include/collide2d.h, C2D_ACCEPT_DEFINE_; real/collide/fast.h). */
+#define C2D_R_ACCEPT c2d_acceptf
+#define C2D_R_QUICK_HI C2D_ACCEPT_HIF
+#define C2D_R_QUICK_LO C2D_ACCEPT_LOF
 
 #define C2D_R_TOI_WINDOW 12   /* time of impact unscaled within [2^-12, 2^12] (real/toi.h) */
 

@@ -13,6 +13,15 @@ static void test_this_build_really_inlines(void **state)
     assert_int_equal(C2D_INLINE_AS_WRITTEN, 1); /* -std=c99: contraction off */
 }
 
+/* The accept test's window, written as decimals in the header (C++ before
+ * 17 has no hexadecimal floating constants), is exactly 2^+-200, 2^+-20. */
+static void test_accept_window_is_exact(void **state)
+{
+    (void)state;
+    assert_true(C2D_ACCEPT_HI == ldexp(1.0, 200) && C2D_ACCEPT_LO == ldexp(1.0, -200));
+    assert_true(C2D_ACCEPT_HIF == ldexpf(1.0f, 20) && C2D_ACCEPT_LOF == ldexpf(1.0f, -20));
+}
+
 /* A case of family k: unit scale, whole range, a wall, on an axis, bad input. */
 static void gen_family(c2d_rng *r, ref_case *c, int k, int prec, int emin, int emax)
 {
@@ -88,6 +97,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_this_build_really_inlines),
+        cmocka_unit_test(test_accept_window_is_exact),
         cmocka_unit_test(test_inline_double_is_the_library_call),
         cmocka_unit_test(test_inline_float_is_the_library_call),
         cmocka_unit_test(test_inline_refuses_like_the_library),

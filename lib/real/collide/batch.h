@@ -16,8 +16,9 @@
  *   A partial block (the tail) and a bad restitution take the scalar call.
  *
  * RUN-TIME DISPATCH
- *   On hosted x86-64 ELF with gcc or clang (C2D_DISPATCH, internal.h; off
- *   with C2D_NO_DISPATCH, and never in freestanding or MCU builds) the
+ *   On hosted x86-64 ELF with gcc (C2D_DISPATCH, internal.h; off with
+ *   C2D_NO_DISPATCH, and never in freestanding or MCU builds nor under
+ *   ThreadSanitizer, whose gcc instrumentation breaks the resolver) the
  *   kernel is compiled four times by target_clones and the loader picks one
  *   (ifunc): baseline x86-64 (SSE2: float vectorises, double does not, for
  *   want of 64-bit compares), x86-64-v2 (SSE4.2: double too), x86-64-v3
@@ -74,8 +75,8 @@ __attribute__((target_clones("default", "arch=x86-64-v2", "arch=x86-64-v3", "arc
 static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, c2d_real_bits *restrict lane)
 {
     c2d_real out[4][C2D_BLOCK];
-    c2d_real_bits keep[C2D_BLOCK];
-    const c2d_real hi = c2d_pow2(C2D_R_QUICK), lo = c2d_pow2(-C2D_R_QUICK);
+    c2d_real_bits keep_a[C2D_BLOCK], keep_b[C2D_BLOCK];
+    const c2d_real hi = C2D_R_QUICK_HI, lo = C2D_R_QUICK_LO;
     const c2d_real *pax = p->pos_ax + base, *pay = p->pos_ay + base;
     const c2d_real *pbx = p->pos_bx + base, *pby = p->pos_by + base;
     const c2d_real *vax = p->vel_ax + base, *vay = p->vel_ay + base;
@@ -114,13 +115,16 @@ static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, 
         out[1][j] = vay[j] + la * ny;
         out[2][j] = vbx[j] - lb * nx;
         out[3][j] = vby[j] - lb * ny;
-        keep[j] = (c2d_real_bits)0 - ok;
+        /* An accepted lane's immovable body keeps its velocity's bits
+         * (its change is a signed zero: -0 + +0 would be +0). */
+        keep_a[j] = (c2d_real_bits)0 - (ok & (ia ^ 1u));
+        keep_b[j] = (c2d_real_bits)0 - (ok & (ib ^ 1u));
         lane[j] = ok | (window & (c2d_real_bits)(4 * d - k >= 0)) << 1;
     }
-    c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep);
-    c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep);
-    c2d_batch_commit(&p->vel_bx[base], &out[2][0], keep);
-    c2d_batch_commit(&p->vel_by[base], &out[3][0], keep);
+    c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep_a);
+    c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep_a);
+    c2d_batch_commit(&p->vel_bx[base], &out[2][0], keep_b);
+    c2d_batch_commit(&p->vel_by[base], &out[3][0], keep_b);
 }
 
 /* One lane the kernel did not settle: the whole scalar call. */

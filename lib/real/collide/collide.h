@@ -156,10 +156,14 @@ C2D_HOT c2d_status c2d_cancelling_as(c2d_real_body *a, c2d_real_body *b, const c
     c = (1 + restitution) * d / den;
     la = c * fb;
     lb = c * fa;
-    a->vel.x = a->vel.x + la * nh->x;
-    a->vel.y = a->vel.y + la * nh->y;
-    b->vel.x = b->vel.x - lb * nh->x;
-    b->vel.y = b->vel.y - lb * nh->y;
+    if (!(a->mass > C2D_R_MAX)) { /* an immovable body keeps its velocity's bits (-0 too) */
+        a->vel.x = a->vel.x + la * nh->x;
+        a->vel.y = a->vel.y + la * nh->y;
+    }
+    if (!(b->mass > C2D_R_MAX)) {
+        b->vel.x = b->vel.x - lb * nh->x;
+        b->vel.y = b->vel.y - lb * nh->y;
+    }
     return C2D_OK;
 }
 

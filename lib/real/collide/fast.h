@@ -51,6 +51,15 @@ C2D_HOT c2d_real c2d_pick(c2d_real x, c2d_real_bits keep, c2d_real_bits one)
     return c2d_from_bits((c2d_bits(x) & keep) | (c2d_bits((c2d_real)1.0) & one));
 }
 
+/* x, or `old` where `immovable` is 1: a bit-mask select, branch-free for
+ * the vectoriser (an immovable body keeps its velocity's bits: -0 stays
+ * -0, which x = old + 0 would not keep). */
+C2D_HOT c2d_real c2d_keep(c2d_real x, c2d_real old, c2d_real_bits immovable)
+{
+    const c2d_real_bits keep = (c2d_real_bits)0 - immovable;
+    return c2d_from_bits((c2d_bits(x) & ~keep) | (c2d_bits(old) & keep));
+}
+
 /* From an accurate d to the new velocities, out = {va'x, va'y, vb'x, vb'y}.
  * Returns nonzero when every intermediate stayed where it is accurate to its
  * rounding; the caller falls back otherwise. */
@@ -69,10 +78,13 @@ C2D_HOT c2d_real_bits c2d_finish(c2d_real d, const c2d_pair *p, c2d_real e1, c2d
     const c2d_real c = e1 * d / den;
     const c2d_real la = c * fb, lb = c * fa;
     const c2d_real ac = c2d_abs(c);
-    out[0] = p->va.x + la * p->n.x;
-    out[1] = p->va.y + la * p->n.y;
-    out[2] = p->vb.x - lb * p->n.x;
-    out[3] = p->vb.y - lb * p->n.y;
+    /* An immovable body's velocity is returned as given, bits included: its
+     * change la n or lb n is a zero whose sign follows c and n, and
+     * -0 + +0 is +0. */
+    out[0] = c2d_keep(p->va.x + la * p->n.x, p->va.x, ia);
+    out[1] = c2d_keep(p->va.y + la * p->n.y, p->va.y, ia);
+    out[2] = c2d_keep(p->vb.x - lb * p->n.x, p->vb.x, ib);
+    out[3] = c2d_keep(p->vb.y - lb * p->n.y, p->vb.y, ib);
     /* A lambda may be 0 only for an immovable body, never by underflow; two
      * immovable bodies and NaN masses (m > 0 fails) are refused. */
     return (c2d_real_bits)(p->ma > 0) & (c2d_real_bits)(p->mb > 0) & ((ia & ib) ^ 1u) &
@@ -124,7 +136,7 @@ C2D_HOT c2d_verdict c2d_fast(const c2d_pair *p, c2d_real e1, c2d_real *out)
  *   c2d_finish checks its intermediates after computing them, so the
  *   verdict waits for the division.  Inside a window of the inputs those
  *   checks cannot fail, and the verdict depends only on quantities formed
- *   before the division.  With W = 2^C2D_R_QUICK (200 double, 20 float):
+ *   before the division.  With W = C2D_R_QUICK_HI (2^200 double, 2^20 float):
  *   k = |px| + |py|, n.n and both masses in [1/W, W] (a sum <= W rejects
  *   NaN and Inf too: a NaN or Inf velocity or normal makes k NaN or Inf; a
  *   minimum >= 1/W the rest).  Then, if 4d + k <= 0 (an approach with
@@ -138,14 +150,16 @@ C2D_HOT c2d_verdict c2d_fast(const c2d_pair *p, c2d_real e1, c2d_real *out)
  *   separation it would report.  Everything else goes to the fast path
  *   unchanged.  A wall (one mass INFINITY, the other in the window) takes
  *   the same test with the fast path's mass pair (0, 1).
+ *   The code is written once, in the public header (C2D_ACCEPT_DEFINE_,
+ *   include/collide2d.h), for this front end and the header's inline ones.
  */
 
 /* The front end's masses for a wall (one mass INFINITY, the other finite,
- * at least 2^-C2D_R_QUICK): c2d_finish's pair (0, 1) or (1, 0).  Returns 0
+ * at least 1/W, C2D_R_QUICK_LO): c2d_finish's pair (0, 1) or (1, 0).  Returns 0
  * for anything else. */
 static inline int c2d_quick_wall(const c2d_pair *p, c2d_real *fa, c2d_real *fb)
 {
-    const c2d_real lo = c2d_pow2(-C2D_R_QUICK);
+    const c2d_real lo = C2D_R_QUICK_LO;
     if (p->mb > C2D_R_MAX && p->ma >= lo && p->ma <= C2D_R_MAX) {
         *fa = 0;
         *fb = 1;
@@ -162,31 +176,37 @@ static inline int c2d_quick_wall(const c2d_pair *p, c2d_real *fa, c2d_real *fb)
 /* OK (out written) or SEPARATING when the accept test decides; AXIS when
  * the normal has a zero component (real/collide/axis.h); ACCURATE for a valid pair
  * inside the window whose d cancels (the double-double tier's case); else
- * GENERAL: the caller then asks the fast path (c2d_fast) as before. */
+ * GENERAL: the caller then asks the fast path (c2d_fast) as before.  The
+ * test is the public header's C2D_R_ACCEPT (c2d_accept, c2d_acceptf), the
+ * code the inline front ends run, with the masses themselves or, for a
+ * wall (their sum beyond the largest finite value), with c2d_quick_wall's
+ * pair and the masses out of the window (their sum 0, their least 1: the
+ * window is then k + nn <= W and geometry >= 1/W, as it was).  Choosing the
+ * masses first costs one comparison and keeps one copy of the test here. */
 C2D_HOT c2d_verdict c2d_quick(const c2d_pair *p, c2d_real e1, c2d_real *out)
 {
-    const c2d_real hi = c2d_pow2(C2D_R_QUICK), lo = c2d_pow2(-C2D_R_QUICK);
-    const c2d_real px = (p->vb.x - p->va.x) * p->n.x, py = (p->vb.y - p->va.y) * p->n.y;
-    const c2d_real d = px + py;
-    const c2d_real k = c2d_abs(px) + c2d_abs(py);
-    const c2d_real nn = p->n.x * p->n.x + p->n.y * p->n.y;
-    const c2d_real geometry = k < nn ? k : nn, lighter = p->ma < p->mb ? p->ma : p->mb;
-    c2d_real fa = p->ma, fb = p->mb;
+    c2d_real fa = p->ma, fb = p->mb, msum = p->ma + p->mb, lighter = p->ma < p->mb ? p->ma : p->mb;
+    int r, wall = 0;
     if (p->n.x == 0 || p->n.y == 0) return C2D_VERDICT_AXIS;
-    if (!((k + nn) + (fa + fb) <= hi && (geometry < lighter ? geometry : lighter) >= lo) &&
-        !(c2d_quick_wall(p, &fa, &fb) && k + nn <= hi && geometry >= lo))
-        return C2D_VERDICT_GENERAL;
-    if (4 * d + k <= 0) {
-        const c2d_real den = nn * (fa + fb);
-        const c2d_real c = e1 * d / den;
-        const c2d_real la = c * fb, lb = c * fa;
-        out[0] = p->va.x + la * p->n.x;
-        out[1] = p->va.y + la * p->n.y;
-        out[2] = p->vb.x - lb * p->n.x;
-        out[3] = p->vb.y - lb * p->n.y;
-        return C2D_VERDICT_OK;
+    if (!(msum <= C2D_R_MAX) && c2d_quick_wall(p, &fa, &fb)) {
+        msum = 0;
+        lighter = 1;
+        wall = 1;
     }
-    return 4 * d - k >= 0 ? C2D_VERDICT_SEPARATING : C2D_VERDICT_ACCURATE;
+    r = C2D_R_ACCEPT(p->n.x, p->n.y, p->va.x, p->va.y, p->vb.x, p->vb.y, fa, fb, msum, lighter, e1, out);
+    if (r == C2D_ACCEPT_OK && wall) {
+        /* The wall's own velocity as given (its change is a signed zero). */
+        if (fa == 0) {
+            out[2] = p->vb.x;
+            out[3] = p->vb.y;
+        } else {
+            out[0] = p->va.x;
+            out[1] = p->va.y;
+        }
+    }
+    if (r == C2D_ACCEPT_OK) return C2D_VERDICT_OK;
+    if (r == C2D_ACCEPT_SEPARATING) return C2D_VERDICT_SEPARATING;
+    return r == C2D_ACCEPT_UNDECIDED ? C2D_VERDICT_ACCURATE : C2D_VERDICT_GENERAL;
 }
 
 #endif /* C2D_REAL_FAST_H */

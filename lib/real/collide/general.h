@@ -105,7 +105,8 @@ static c2d_status c2d_general(c2d_real_body *a, c2d_real_body *b, c2d_ext nh[2],
         vel[1] = body[j]->vel.y;
         for (i = 0; i < 2; i++) {
             c2d_real dv = w[j].m == 0 ? (c2d_real)0.0 : c2d_scale2(lm * nh[i].m, le + nh[i].e);
-            out[2 * j + i] = vel[i] + sign * dv;
+            /* weight 0: the immovable body, its velocity as given (-0 too) */
+            out[2 * j + i] = w[j].m == 0 ? vel[i] : vel[i] + sign * dv;
             if (!c2d_finite4(dv, out[2 * j + i], 0, 0)) return C2D_RANGE;
         }
     }

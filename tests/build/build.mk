@@ -1,0 +1,36 @@
+# SPDX-License-Identifier: MIT
+# tests/build/build.mk - the build's own contract beyond check-build, included
+# by the top-level Makefile; each prints "NAME: N passed, N failed".
+#   make test-make        in a fresh copy of the tree ($(B)/test-make/tree):
+#                         a plain `make` builds the libraries and collide2d.pc,
+#                         the header dependencies rebuild what they should
+#                         (tests/build/default_goal.sh); install and uninstall
+#                         with spaces in DESTDIR and PREFIX stay inside them
+#                         and remove what they installed (tests/build/install.sh)
+#   make check-tsan       the library under ThreadSanitizer, gcc and clang
+#                         (tests/build/tsan.sh; skips a compiler without it)
+#   make check-fast-math  -ffast-math / -ffinite-math-only stop lib/'s build
+#                         unless C2D_ALLOW_FAST_MATH (tests/build/fast_math.sh)
+# The copy of test-make builds with the defaults whatever this make was
+# given, so under SANITIZE=1 it is skipped (the plain run covers it).
+
+MAKE_TEST_DEPS := pkg-config cmake
+
+.PHONY: test-make check-tsan check-fast-math
+ifeq ($(SANITIZE),1)
+test-make:
+	@echo "test-make: skipped under SANITIZE=1 (the Makefile, not code: the plain run covers it)"
+else
+test-make:
+	@sh scripts/deps.sh $(MAKE_TEST_DEPS)
+	@sh tests/build/default_goal.sh $(B)/test-make
+	@sh tests/build/install.sh $(B)/test-make/tree $(B)/test-make
+endif
+
+check-tsan:
+	@sh tests/build/tsan.sh $(B)/check-tsan
+
+check-fast-math:
+	@sh tests/build/fast_math.sh $(B)/check-fast-math
+
+TEST_TARGETS += test-make check-tsan check-fast-math
