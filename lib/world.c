@@ -1,0 +1,613 @@
+/* SPDX-License-Identifier: MIT */
+/* world.c - the event-driven world of disks (include/collide2d_world.h).
+ *
+ * State: each disk keeps (x, y, vx, vy, t) from its last impact (or the
+ * wrap of a periodic box), so its position at any time is x + vx (now - t):
+ * advancing the world moves nothing, and the same events give the same bits
+ * however the caller slices time.
+ *
+ * Events: one pending event per disk (its earliest: an impact with a disk in
+ * the 3 x 3 cells around it, a wall, or leaving its cell), kept in a binary
+ * heap ordered by (time, tie) with tie = kind << 62 | lower index << 31 |
+ * higher index.  An impact event remembers its partner's impact counter
+ * when predicted; if the partner has had an impact since, the event is
+ * stale and the disk predicts again.  Correctness of one event per disk:
+ * whenever a disk's motion changes it predicts against all its neighbours,
+ * so every pair whose next contact is earlier than both disks' own events
+ * is held by one of them.
+ *
+ * Cells are at least one largest diameter (x (1 + 2^-24)) wide, so disks in
+ * contact are always in neighbouring cells; a disk is filed by the cell its
+ * centre is in, and its crossing times are computed from the same cell
+ * boundaries, so a rounding that puts a centre a hair outside its cell
+ * only makes the crossing due at once.  In a periodic box the image of a
+ * neighbour is the one the cell offset says (at least 3 cells a side), the
+ * nearest image at contact.
+ */
+#include "internal.h"
+
+#ifndef C2D_NO_DOUBLE
+
+#ifndef C2D_WORLD_HEADER
+#define C2D_WORLD_HEADER "../include/collide2d_world.h"
+#endif
+#include C2D_WORLD_HEADER
+
+#ifdef __GNUC__
+#define C2D_W_SQRT __builtin_sqrt
+#else
+#define C2D_W_SQRT sqrt
+#endif
+
+#define C2D_W_NONE 0xFFFFFFFFu
+#define C2D_W_MAX_DISKS 0x7FFFFFFFu /* indices fit 31 bits of the tie key */
+#define C2D_W_INF (DBL_MAX * 2.0)
+#define C2D_W_MARGIN (1.0 + 1.0 / 16777216.0) /* cell width over the largest diameter */
+#define C2D_W_COLLAPSE_COUNT 16u
+
+enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_IDLE = 3 };
+
+typedef struct c2d_w_disk {
+    double x, y, vx, vy, t; /* the state at time t (its last impact) */
+    double mass, radius;
+    double when;            /* its next event's time */
+    double last;            /* the time of its last impact */
+    uint64_t tie;           /* kind << 62 | lower index << 31 | higher index */
+    uint64_t count;         /* impacts so far */
+    uint64_t pcount;        /* the partner's count when the event was predicted */
+    uint32_t partner;       /* a disk (impact), or a side 0..3: -x, +x, -y, +y */
+    uint32_t cell, next;    /* its cell, the next disk in that cell */
+    uint32_t slot;          /* its place in the heap */
+    uint32_t kind;          /* C2D_W_PAIR ... C2D_W_IDLE */
+    uint32_t same;          /* impacts at time `last` */
+} c2d_w_disk;
+
+struct c2d_world {
+    c2d_w_disk *disk;
+    uint32_t *heap;  /* disk indices, a min-heap on (when, tie) */
+    uint32_t *head;  /* first disk of each cell, C2D_W_NONE for none */
+    size_t capacity, count, budget;
+    size_t mx, my;   /* cells per side (0 until the first disk) */
+    double width, height, restitution, wall_restitution, collapse_speed;
+    double cw, ch;   /* cell sides */
+    double rmax;     /* the largest radius */
+    double now;      /* the world's time (also the current event's, while advancing) */
+    unsigned collapse_count;
+    int periodic;
+    c2d_world_stats stats;
+};
+
+/* ------------------------------------------------------------ layout */
+
+#define C2D_W_ROUND8(n) (((n) + 7u) / 8u * 8u)
+
+static int c2d_w_finite(double x) { return x == x && x - x == 0; }
+
+static int c2d_w_desc_ok(const c2d_world_desc *d)
+{
+    if (d == NULL) return 0;
+    if (d->capacity < 1 || d->capacity > C2D_W_MAX_DISKS) return 0;
+    if (!c2d_w_finite(d->width) || !c2d_w_finite(d->height) || !(d->width > 0) || !(d->height > 0)) return 0;
+    if (d->boundary != C2D_WALLS && d->boundary != C2D_PERIODIC) return 0;
+    if (!(d->restitution >= 0 && d->restitution <= 1)) return 0;
+    if (!(d->wall_restitution >= 0 && d->wall_restitution <= 1)) return 0;
+    if (!(d->collapse_speed >= 0) || !c2d_w_finite(d->collapse_speed)) return 0;
+    return 1;
+}
+
+/* Offsets of the disks, the heap and the cells in the memory, and the
+ * total; 0 if the sizes overflow size_t. */
+static size_t c2d_w_layout(size_t capacity, size_t *disks, size_t *heap, size_t *cells)
+{
+    const size_t top = (size_t)-1;
+    size_t budget = 2 * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)), n;
+    if (capacity > (top - 16) / 2) return 0;
+    *disks = off;
+    if (capacity > (top - off) / sizeof(c2d_w_disk)) return 0;
+    off += capacity * sizeof(c2d_w_disk);
+    *heap = off;
+    n = C2D_W_ROUND8(capacity * sizeof(uint32_t));
+    if (capacity > top / 8 || n > top - off) return 0;
+    off += n;
+    *cells = off;
+    if (budget > top / 8 || budget * sizeof(uint32_t) > top - off) return 0;
+    return off + budget * sizeof(uint32_t);
+}
+
+size_t c2d_world_bytes(const c2d_world_desc *desc)
+{
+    size_t a, b, c;
+    if (!c2d_w_desc_ok(desc)) return 0;
+    return c2d_w_layout(desc->capacity, &a, &b, &c);
+}
+
+c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c2d_world_desc *desc)
+{
+    size_t od, oh, oc, total;
+    unsigned char *m = (unsigned char *)memory;
+    c2d_world *w;
+    if (world == NULL || memory == NULL || !c2d_w_desc_ok(desc)) return C2D_INVALID;
+    if ((uintptr_t)memory % 8u != 0) return C2D_INVALID;
+    total = c2d_w_layout(desc->capacity, &od, &oh, &oc);
+    if (total == 0 || bytes < total) return C2D_INVALID;
+    w = (c2d_world *)memory;
+    w->disk = (c2d_w_disk *)(void *)(m + od);
+    w->heap = (uint32_t *)(void *)(m + oh);
+    w->head = (uint32_t *)(void *)(m + oc);
+    w->capacity = desc->capacity;
+    w->count = 0;
+    w->budget = 2 * desc->capacity + 16;
+    w->mx = w->my = 0;
+    w->width = desc->width;
+    w->height = desc->height;
+    w->restitution = desc->restitution;
+    w->wall_restitution = desc->wall_restitution;
+    w->collapse_speed = desc->collapse_speed;
+    w->collapse_count = desc->collapse_count == 0 ? C2D_W_COLLAPSE_COUNT : desc->collapse_count;
+    w->periodic = desc->boundary == C2D_PERIODIC;
+    w->cw = w->ch = 0;
+    w->rmax = 0;
+    w->now = 0;
+    w->stats.collisions = w->stats.wall_collisions = w->stats.events = 0;
+    w->stats.time = 0;
+    w->stats.virial = 0;
+    *world = w;
+    return C2D_OK;
+}
+
+size_t c2d_world_count(const c2d_world *world) { return world == NULL ? 0 : world->count; }
+
+/* ------------------------------------------------------------ heap */
+
+static int c2d_w_before(const c2d_w_disk *a, const c2d_w_disk *b)
+{
+    return a->when < b->when || (a->when == b->when && a->tie < b->tie);
+}
+
+static void c2d_w_heap_fix(c2d_world *w, uint32_t i)
+{
+    uint32_t *h = w->heap;
+    c2d_w_disk *d = w->disk, *p = &d[i];
+    size_t s = p->slot, n = w->count;
+    while (s > 0) {
+        size_t up = (s - 1) / 2;
+        if (!c2d_w_before(p, &d[h[up]])) break;
+        h[s] = h[up];
+        d[h[s]].slot = (uint32_t)s;
+        s = up;
+    }
+    for (;;) {
+        size_t l = 2 * s + 1, best;
+        if (l >= n) break;
+        best = l;
+        if (l + 1 < n && c2d_w_before(&d[h[l + 1]], &d[h[l]])) best = l + 1;
+        if (!c2d_w_before(&d[h[best]], p)) break;
+        h[s] = h[best];
+        d[h[s]].slot = (uint32_t)s;
+        s = best;
+    }
+    h[s] = i;
+    p->slot = (uint32_t)s;
+}
+
+/* ------------------------------------------------------------ cells */
+
+static size_t c2d_w_cell_1d(double x, double side, size_t m)
+{
+    double q;
+    if (!(x >= side)) return 0;
+    q = x / side;
+    return q >= (double)m ? m - 1 : (size_t)q;
+}
+
+static void c2d_w_cell_insert(c2d_world *w, uint32_t i, size_t c)
+{
+    w->disk[i].cell = (uint32_t)c;
+    w->disk[i].next = w->head[c];
+    w->head[c] = i;
+}
+
+static void c2d_w_cell_remove(c2d_world *w, uint32_t i)
+{
+    uint32_t *p = &w->head[w->disk[i].cell];
+    while (*p != i) p = &w->disk[*p].next;
+    *p = w->disk[i].next;
+}
+
+/* ------------------------------------------------------------ prediction */
+
+typedef struct c2d_w_best {
+    double when;
+    uint32_t kind, partner;
+    uint64_t pcount;
+} c2d_w_best;
+
+static void c2d_w_consider(c2d_w_best *b, double when, uint32_t kind, uint32_t partner, uint64_t pcount)
+{
+    if (when < b->when || (when == b->when && (kind < b->kind || (kind == b->kind && partner < b->partner)))) {
+        b->when = when;
+        b->kind = kind;
+        b->partner = partner;
+        b->pcount = pcount;
+    }
+}
+
+/* The image offset of a neighbour's cell coordinate cj from ci: -1 (its
+ * image lies one box to the left), 0 or 1. */
+static double c2d_w_image(size_t ci, size_t cj)
+{
+    if (cj > ci + 1) return -1.0;
+    if (ci > cj + 1) return 1.0;
+    return 0.0;
+}
+
+/* The first time >= now at which a disk at x (time t) with speed v reaches
+ * `to`. */
+static double c2d_w_reach(double t, double x, double v, double to, double now)
+{
+    double when = t + (to - x) / v;
+    return when < now ? now : when;
+}
+
+static void c2d_w_predict(c2d_world *w, uint32_t i)
+{
+    c2d_w_disk *d = w->disk, *p = &d[i];
+    const double now = w->now, dt = now - p->t;
+    const double px = p->x + p->vx * dt, py = p->y + p->vy * dt;
+    const size_t mx = w->mx, my = w->my, cx = p->cell % mx, cy = p->cell / mx;
+    c2d_w_best best;
+    c2d_body a;
+    size_t k, l;
+    best.when = C2D_W_INF;
+    best.kind = C2D_W_IDLE;
+    best.partner = 0;
+    best.pcount = 0;
+    /* Walls (the centre at radius from them), then the cell's sides. */
+    if (!w->periodic) {
+        if (p->vx < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, p->radius, now), C2D_W_WALL, 0, 0);
+        if (p->vx > 0)
+            c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, w->width - p->radius, now), C2D_W_WALL, 1, 0);
+        if (p->vy < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, p->radius, now), C2D_W_WALL, 2, 0);
+        if (p->vy > 0)
+            c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, w->height - p->radius, now), C2D_W_WALL, 3, 0);
+    }
+    if (p->vx < 0 && (cx > 0 || w->periodic))
+        c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, (double)cx * w->cw, now), C2D_W_CELL, 0, 0);
+    if (p->vx > 0 && (cx + 1 < mx || w->periodic))
+        c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, now),
+                       C2D_W_CELL, 1, 0);
+    if (p->vy < 0 && (cy > 0 || w->periodic))
+        c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, (double)cy * w->ch, now), C2D_W_CELL, 2, 0);
+    if (p->vy > 0 && (cy + 1 < my || w->periodic))
+        c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, now),
+                       C2D_W_CELL, 3, 0);
+    a.pos.x = px, a.pos.y = py, a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
+    /* The 3 x 3 cells around, each once (fewer when the grid is narrow). */
+    for (l = 0; l < 3; l++) {
+        size_t ny;
+        double sy;
+        if (w->periodic) {
+            ny = (cy + my + l - 1) % my;
+        } else {
+            if ((l == 0 && cy == 0) || (l == 2 && cy + 1 >= my)) continue;
+            ny = cy + l - 1;
+        }
+        sy = w->periodic ? c2d_w_image(cy, ny) * w->height : 0.0;
+        for (k = 0; k < 3; k++) {
+            size_t nx;
+            double sx;
+            uint32_t j;
+            if (w->periodic) {
+                nx = (cx + mx + k - 1) % mx;
+            } else {
+                if ((k == 0 && cx == 0) || (k == 2 && cx + 1 >= mx)) continue;
+                nx = cx + k - 1;
+            }
+            sx = w->periodic ? c2d_w_image(cx, nx) * w->width : 0.0;
+            for (j = w->head[ny * mx + nx]; j != C2D_W_NONE; j = d[j].next) {
+                const c2d_w_disk *q = &d[j];
+                double qdt, dx, dy, dvx, dvy, dot, mag, toi;
+                c2d_body b;
+                if (j == i) continue;
+                qdt = now - q->t;
+                b.pos.x = (q->x + q->vx * qdt) + sx;
+                b.pos.y = (q->y + q->vy * qdt) + sy;
+                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
+                /* Receding for certain (the rounding of this estimate is
+                 * far below 2^-40 of its terms, which are far from
+                 * underflow), or no relative motion: no contact. */
+                dx = b.pos.x - px, dy = b.pos.y - py, dvx = q->vx - p->vx, dvy = q->vy - p->vy;
+                dot = dx * dvx + dy * dvy;
+                mag = (dx * dvx < 0 ? -dx * dvx : dx * dvx) + (dy * dvy < 0 ? -dy * dvy : dy * dvy);
+                if ((dot > mag * 0x1p-40 && mag >= 0x1p-960) || (dvx == 0 && dvy == 0)) continue;
+                if (c2d_time_of_impact(&a, &b, p->radius + q->radius, &toi) != C2D_OK) continue;
+                c2d_w_consider(&best, now + toi, C2D_W_PAIR, j, q->count);
+            }
+        }
+    }
+    p->when = best.when;
+    p->kind = best.kind;
+    p->partner = best.partner;
+    p->pcount = best.pcount;
+    if (best.kind == C2D_W_PAIR) {
+        uint64_t lo = i < best.partner ? i : best.partner, hi = i < best.partner ? best.partner : i;
+        p->tie = (uint64_t)C2D_W_PAIR << 62 | lo << 31 | hi;
+    } else {
+        p->tie = (uint64_t)best.kind << 62 | (uint64_t)i << 31 | (uint64_t)i;
+    }
+    c2d_w_heap_fix(w, i);
+}
+
+/* ------------------------------------------------------------ grid */
+
+/* Cells for the largest radius r: as many as fit at 2 r (1 + 2^-24) wide,
+ * at most the budget. */
+static void c2d_w_grid_size(const c2d_world *w, double r, size_t *mx, size_t *my)
+{
+    const double s = 2 * r * C2D_W_MARGIN, budget = (double)w->budget;
+    const size_t lo = w->periodic ? 3 : 1;
+    double fx = w->width / s, fy = w->height / s;
+    size_t x, y;
+    if (!(fx < budget)) fx = budget;
+    if (!(fy < budget)) fy = budget;
+    x = fx < 1 ? 1 : (size_t)fx;
+    y = fy < 1 ? 1 : (size_t)fy;
+    if ((double)x * (double)y > budget) {
+        double f = C2D_W_SQRT(budget / ((double)x * (double)y));
+        x = (size_t)((double)x * f), y = (size_t)((double)y * f);
+        if (x < lo) x = lo;
+        if (y < lo) y = lo;
+    }
+    while (x * y > w->budget) {
+        if ((x >= y && x > lo) || y <= lo) x--;
+        else y--;
+    }
+    *mx = x, *my = y;
+}
+
+/* File every disk anew (at its position now) and predict every event. */
+static void c2d_w_rebuild(c2d_world *w)
+{
+    size_t c, i;
+    c2d_w_grid_size(w, w->rmax, &w->mx, &w->my);
+    w->cw = w->width / (double)w->mx;
+    w->ch = w->height / (double)w->my;
+    for (c = 0; c < w->mx * w->my; c++) w->head[c] = C2D_W_NONE;
+    for (i = 0; i < w->count; i++) {
+        c2d_w_disk *p = &w->disk[i];
+        double dt = w->now - p->t;
+        size_t cx = c2d_w_cell_1d(p->x + p->vx * dt, w->cw, w->mx), cy = c2d_w_cell_1d(p->y + p->vy * dt, w->ch, w->my);
+        c2d_w_cell_insert(w, (uint32_t)i, cy * w->mx + cx);
+    }
+    for (i = 0; i < w->count; i++) c2d_w_predict(w, (uint32_t)i);
+}
+
+/* ------------------------------------------------------------ adding */
+
+static int c2d_w_overlaps(const c2d_world *w, double x, double y, double r, const c2d_w_disk *q)
+{
+    double dt = w->now - q->t, dx = (q->x + q->vx * dt) - x, dy = (q->y + q->vy * dt) - y, rs = r + q->radius;
+    if (w->periodic) {
+        if (dx > 0.5 * w->width) dx -= w->width;
+        if (dx < -0.5 * w->width) dx += w->width;
+        if (dy > 0.5 * w->height) dy -= w->height;
+        if (dy < -0.5 * w->height) dy += w->height;
+    }
+    return dx * dx + dy * dy < rs * rs;
+}
+
+c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, size_t *index)
+{
+    c2d_world *w = world;
+    double x, y;
+    int rebuild;
+    uint32_t i;
+    c2d_w_disk *p;
+    if (w == NULL || disk == NULL || w->count >= w->capacity) return C2D_INVALID;
+    x = disk->pos.x, y = disk->pos.y;
+    if (!c2d_w_finite(x) || !c2d_w_finite(y) || !c2d_w_finite(disk->vel.x) || !c2d_w_finite(disk->vel.y) ||
+        !c2d_w_finite(disk->mass) || !(disk->mass > 0) || !c2d_w_finite(radius) || !(radius > 0))
+        return C2D_INVALID;
+    if (w->periodic) {
+        if (!(x >= 0 && x < w->width && y >= 0 && y < w->height)) return C2D_INVALID;
+        if (!(3 * (2 * radius * C2D_W_MARGIN) <= w->width && 3 * (2 * radius * C2D_W_MARGIN) <= w->height))
+            return C2D_INVALID;
+    } else {
+        if (!(x >= radius && x <= w->width - radius && y >= radius && y <= w->height - radius)) return C2D_INVALID;
+    }
+    rebuild = w->count == 0 || radius > w->rmax;
+    if (rebuild) {
+        size_t k;
+        for (k = 0; k < w->count; k++)
+            if (c2d_w_overlaps(w, x, y, radius, &w->disk[k])) return C2D_INVALID;
+    } else {
+        const size_t mx = w->mx, my = w->my, cx = c2d_w_cell_1d(x, w->cw, mx), cy = c2d_w_cell_1d(y, w->ch, my);
+        size_t k, l;
+        for (l = 0; l < 3; l++)
+            for (k = 0; k < 3; k++) {
+                size_t nx = cx + mx + k - 1, ny = cy + my + l - 1;
+                uint32_t j;
+                if (!w->periodic && (nx < mx || nx >= 2 * mx || ny < my || ny >= 2 * my)) continue;
+                for (j = w->head[(ny % my) * mx + nx % mx]; j != C2D_W_NONE; j = w->disk[j].next)
+                    if (c2d_w_overlaps(w, x, y, radius, &w->disk[j])) return C2D_INVALID;
+            }
+    }
+    i = (uint32_t)w->count;
+    p = &w->disk[i];
+    p->x = x, p->y = y, p->vx = disk->vel.x, p->vy = disk->vel.y, p->t = w->now;
+    p->mass = disk->mass, p->radius = radius;
+    p->when = C2D_W_INF;
+    p->last = -1.0;
+    p->tie = (uint64_t)C2D_W_IDLE << 62;
+    p->count = p->pcount = 0;
+    p->partner = 0;
+    p->kind = C2D_W_IDLE;
+    p->same = 0;
+    p->slot = i;
+    w->heap[i] = i;
+    w->count++;
+    if (index != NULL) *index = i;
+    if (rebuild) {
+        w->rmax = radius;
+        c2d_w_rebuild(w);
+    } else {
+        c2d_w_cell_insert(w, i, c2d_w_cell_1d(y, w->ch, w->my) * w->mx + c2d_w_cell_1d(x, w->cw, w->mx));
+        c2d_w_predict(w, i);
+    }
+    return C2D_OK;
+}
+
+/* ------------------------------------------------------------ events */
+
+static void c2d_w_impact_clock(c2d_w_disk *p, double now)
+{
+    if (p->last == now) {
+        p->same++;
+    } else {
+        p->last = now;
+        p->same = 1;
+    }
+    p->count++;
+}
+
+static void c2d_w_pair(c2d_world *w, uint32_t i)
+{
+    c2d_w_disk *d = w->disk, *p = &d[i];
+    const uint32_t j = p->partner;
+    c2d_w_disk *q = &d[j];
+    const double now = w->now, dp = now - p->t, dq = now - q->t;
+    double qx, qy, sx = 0, sy = 0, e = w->restitution;
+    c2d_body a, b;
+    if (q->count != p->pcount) { /* stale */
+        c2d_w_predict(w, i);
+        return;
+    }
+    if (w->periodic) {
+        sx = c2d_w_image(p->cell % w->mx, q->cell % w->mx) * w->width;
+        sy = c2d_w_image(p->cell / w->mx, q->cell / w->mx) * w->height;
+    }
+    qx = q->x + q->vx * dq, qy = q->y + q->vy * dq;
+    a.pos.x = p->x + p->vx * dp, a.pos.y = p->y + p->vy * dp, a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
+    b.pos.x = qx + sx, b.pos.y = qy + sy, b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
+    if (e < 1) {
+        if ((p->last == now && p->same >= w->collapse_count) || (q->last == now && q->same >= w->collapse_count))
+            e = 1;
+        if (w->collapse_speed > 0) {
+            double nx = b.pos.x - a.pos.x, ny = b.pos.y - a.pos.y;
+            double vn = -((b.vel.x - a.vel.x) * nx + (b.vel.y - a.vel.y) * ny), nn = C2D_W_SQRT(nx * nx + ny * ny);
+            if (vn < w->collapse_speed * nn) e = 1;
+        }
+    }
+    if (c2d_collide(&a, &b, e) == C2D_OK) {
+        w->stats.virial +=
+            ((b.pos.x - a.pos.x) * (b.vel.x - q->vx) + (b.pos.y - a.pos.y) * (b.vel.y - q->vy)) * q->mass;
+        p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
+        q->x = qx, q->y = qy, q->vx = b.vel.x, q->vy = b.vel.y, q->t = now;
+        c2d_w_impact_clock(p, now);
+        c2d_w_impact_clock(q, now);
+        w->stats.collisions++;
+        c2d_w_predict(w, i);
+        c2d_w_predict(w, j);
+    } else {
+        c2d_w_predict(w, i);
+    }
+}
+
+static void c2d_w_wall(c2d_world *w, uint32_t i)
+{
+    c2d_w_disk *p = &w->disk[i];
+    const double dt = w->now - p->t;
+    double x = p->x + p->vx * dt, y = p->y + p->vy * dt;
+    switch (p->partner) {
+    case 0: x = p->radius, p->vx = -w->wall_restitution * p->vx; break;
+    case 1: x = w->width - p->radius, p->vx = -w->wall_restitution * p->vx; break;
+    case 2: y = p->radius, p->vy = -w->wall_restitution * p->vy; break;
+    default: y = w->height - p->radius, p->vy = -w->wall_restitution * p->vy; break;
+    }
+    p->x = x, p->y = y, p->t = w->now;
+    p->count++;
+    w->stats.wall_collisions++;
+    c2d_w_predict(w, i);
+}
+
+static void c2d_w_cross(c2d_world *w, uint32_t i)
+{
+    c2d_w_disk *p = &w->disk[i];
+    size_t cx = p->cell % w->mx, cy = p->cell / w->mx;
+    c2d_w_cell_remove(w, i);
+    switch (p->partner) {
+    case 0:
+        if (cx == 0) cx = w->mx, p->x += w->width;
+        cx--;
+        break;
+    case 1:
+        cx++;
+        if (cx == w->mx) cx = 0, p->x -= w->width;
+        break;
+    case 2:
+        if (cy == 0) cy = w->my, p->y += w->height;
+        cy--;
+        break;
+    default:
+        cy++;
+        if (cy == w->my) cy = 0, p->y -= w->height;
+        break;
+    }
+    c2d_w_cell_insert(w, i, cy * w->mx + cx);
+    c2d_w_predict(w, i);
+}
+
+c2d_status c2d_world_advance(c2d_world *world, double t)
+{
+    c2d_world *w = world;
+    if (w == NULL || !c2d_w_finite(t) || !(t >= w->now)) return C2D_INVALID;
+    while (w->count > 0) {
+        uint32_t i = w->heap[0];
+        c2d_w_disk *p = &w->disk[i];
+        if (!(p->when <= t)) break;
+        w->now = p->when;
+        w->stats.events++;
+        switch (p->kind) {
+        case C2D_W_PAIR: c2d_w_pair(w, i); break;
+        case C2D_W_WALL: c2d_w_wall(w, i); break;
+        default: c2d_w_cross(w, i); break;
+        }
+    }
+    w->now = t;
+    w->stats.time = t;
+    return C2D_OK;
+}
+
+c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk)
+{
+    const c2d_w_disk *p;
+    double dt, x, y;
+    if (world == NULL || disk == NULL || index >= world->count) return C2D_INVALID;
+    p = &world->disk[index];
+    dt = world->now - p->t;
+    x = p->x + p->vx * dt, y = p->y + p->vy * dt;
+    if (world->periodic) {
+        if (x < 0) x += world->width;
+        if (x >= world->width) x -= world->width;
+        if (y < 0) y += world->height;
+        if (y >= world->height) y -= world->height;
+    }
+    disk->pos.x = x, disk->pos.y = y;
+    disk->vel.x = p->vx, disk->vel.y = p->vy;
+    disk->mass = p->mass;
+    return C2D_OK;
+}
+
+void c2d_world_get_stats(const c2d_world *world, c2d_world_stats *stats)
+{
+    if (stats == NULL) return;
+    if (world == NULL) {
+        stats->collisions = stats->wall_collisions = stats->events = 0;
+        stats->time = 0;
+        stats->virial = 0;
+        return;
+    }
+    *stats = world->stats;
+}
+
+#endif /* C2D_NO_DOUBLE */
