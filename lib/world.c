@@ -241,6 +241,19 @@ static double c2d_w_image(size_t ci, size_t cj)
     return 0.0;
 }
 
+/* The cells around coordinate c of m along one axis, each once, and the
+ * shift of each one's image (periodic: +-side across the wrap). */
+static size_t c2d_w_neighbours(size_t c, size_t m, int periodic, double side, size_t *cell, double *shift)
+{
+    size_t n = 0;
+    if (c > 0) cell[n] = c - 1, shift[n++] = 0;
+    else if (periodic) cell[n] = m - 1, shift[n++] = -side;
+    cell[n] = c, shift[n++] = 0;
+    if (c + 1 < m) cell[n] = c + 1, shift[n++] = 0;
+    else if (periodic) cell[n] = 0, shift[n++] = side;
+    return n;
+}
+
 /* The first time >= now at which a disk at x (time t) with speed v reaches
  * `to`. */
 static double c2d_w_reach(double t, double x, double v, double to, double now)
@@ -257,7 +270,8 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     const size_t mx = w->mx, my = w->my, cx = p->cell % mx, cy = p->cell / mx;
     c2d_w_best best;
     c2d_body a;
-    size_t k, l;
+    size_t k, l, nc, nr, col[3], row[3];
+    double colshift[3], rowshift[3];
     best.when = C2D_W_INF;
     best.kind = C2D_W_IDLE;
     best.partner = 0;
@@ -282,44 +296,47 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
         c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, now),
                        C2D_W_CELL, 3, 0);
     a.pos.x = px, a.pos.y = py, a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
-    /* The 3 x 3 cells around, each once (fewer when the grid is narrow). */
-    for (l = 0; l < 3; l++) {
-        size_t ny;
-        double sy;
-        if (w->periodic) {
-            ny = (cy + my + l - 1) % my;
-        } else {
-            if ((l == 0 && cy == 0) || (l == 2 && cy + 1 >= my)) continue;
-            ny = cy + l - 1;
-        }
-        sy = w->periodic ? c2d_w_image(cy, ny) * w->height : 0.0;
-        for (k = 0; k < 3; k++) {
-            size_t nx;
-            double sx;
+    /* The 3 x 3 cells around, each once (fewer against walls), with the
+     * image shift a periodic wrap gives each column and row. */
+    nc = c2d_w_neighbours(cx, mx, w->periodic, w->width, col, colshift);
+    nr = c2d_w_neighbours(cy, my, w->periodic, w->height, row, rowshift);
+    for (l = 0; l < nr; l++) {
+        const double sy = rowshift[l];
+        for (k = 0; k < nc; k++) {
+            const double sx = colshift[k];
             uint32_t j;
-            if (w->periodic) {
-                nx = (cx + mx + k - 1) % mx;
-            } else {
-                if ((k == 0 && cx == 0) || (k == 2 && cx + 1 >= mx)) continue;
-                nx = cx + k - 1;
-            }
-            sx = w->periodic ? c2d_w_image(cx, nx) * w->width : 0.0;
-            for (j = w->head[ny * mx + nx]; j != C2D_W_NONE; j = d[j].next) {
+            for (j = w->head[row[l] * mx + col[k]]; j != C2D_W_NONE; j = d[j].next) {
                 const c2d_w_disk *q = &d[j];
-                double qdt, dx, dy, dvx, dvy, dot, mag, toi;
+                double qdt, dx, dy, dvx, dvy, dot, mag, toi, rs, c, err, vv, dh;
                 c2d_body b;
                 if (j == i) continue;
                 qdt = now - q->t;
                 b.pos.x = (q->x + q->vx * qdt) + sx;
                 b.pos.y = (q->y + q->vy * qdt) + sy;
-                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
-                /* Receding for certain (the rounding of this estimate is
-                 * far below 2^-40 of its terms, which are far from
-                 * underflow), or no relative motion: no contact. */
+                /* Filters, each certain despite rounding (the estimates'
+                 * errors are far below 2^-40 of their terms, taken far
+                 * from underflow): receding or no relative motion; a miss
+                 * (the discriminant negative); or no contact before the
+                 * best event so far (the time of impact is at least
+                 * c / (2 |dot|), c = |d|^2 - rs^2 > 0). */
                 dx = b.pos.x - px, dy = b.pos.y - py, dvx = q->vx - p->vx, dvy = q->vy - p->vy;
                 dot = dx * dvx + dy * dvy;
                 mag = (dx * dvx < 0 ? -dx * dvx : dx * dvx) + (dy * dvy < 0 ? -dy * dvy : dy * dvy);
-                if ((dot > mag * 0x1p-40 && mag >= 0x1p-960) || (dvx == 0 && dvy == 0)) continue;
+                if (dvx == 0 && dvy == 0) continue;
+                if (mag >= 0x1p-900 && mag <= 0x1p900) {
+                    if (dot > mag * 0x1p-40) continue;
+                    rs = p->radius + q->radius;
+                    c = dx * dx + dy * dy;
+                    err = (c + rs * rs) * 0x1p-40;
+                    c = (c - rs * rs) - err;
+                    if (c > 0 && c <= 0x1p900 && err >= 0x1p-900) {
+                        dh = -dot + mag * 0x1p-40;
+                        vv = (dvx * dvx + dvy * dvy) * (1 - 0x1p-40);
+                        if (dh * dh < vv * c * (1 - 0x1p-40)) continue;
+                        if (best.when - now < c / (2 * dh) * (1 - 0x1p-40)) continue;
+                    }
+                }
+                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
                 if (c2d_time_of_impact(&a, &b, p->radius + q->radius, &toi) != C2D_OK) continue;
                 c2d_w_consider(&best, now + toi, C2D_W_PAIR, j, q->count);
             }
