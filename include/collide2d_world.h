@@ -108,6 +108,11 @@ typedef struct c2d_world_desc {
     /* More fields may follow: a zero field always means its documented default. */
     double collapse_speed;   /* >= 0, finite: impacts approaching slower are elastic [0: none] */
     unsigned collapse_count; /* impacts of one disk at one instant before the rest are elastic [0: 16] */
+    double collapse_time;    /* >= 0, finite: an impact of a disk less than this after its
+                                previous one is elastic (the TC model) [0: none] */
+    double collapse_length;  /* >= 0, finite: an impact is elastic when the pair has closed
+                                less than this (approach speed x time since either disk's
+                                previous impact) [0: 2^-20 x the smaller radius] */
 } c2d_world_desc;
 
 typedef struct c2d_world_stats {

@@ -68,7 +68,7 @@ struct c2d_world {
     uint32_t *head;  /* first disk of each cell, C2D_W_NONE for none */
     size_t capacity, count, budget;
     size_t mx, my;   /* cells per side (0 until the first disk) */
-    double width, height, restitution, wall_restitution, collapse_speed;
+    double width, height, restitution, wall_restitution, collapse_speed, collapse_time, collapse_length;
     double cw, ch;   /* cell sides */
     double rmax;     /* the largest radius */
     double now;      /* the world's time (also the current event's, while advancing) */
@@ -92,6 +92,8 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
     if (!(d->restitution >= 0 && d->restitution <= 1)) return 0;
     if (!(d->wall_restitution >= 0 && d->wall_restitution <= 1)) return 0;
     if (!(d->collapse_speed >= 0) || !c2d_w_finite(d->collapse_speed)) return 0;
+    if (!(d->collapse_time >= 0) || !c2d_w_finite(d->collapse_time)) return 0;
+    if (!(d->collapse_length >= 0) || !c2d_w_finite(d->collapse_length)) return 0;
     return 1;
 }
 
@@ -143,6 +145,8 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     w->restitution = desc->restitution;
     w->wall_restitution = desc->wall_restitution;
     w->collapse_speed = desc->collapse_speed;
+    w->collapse_time = desc->collapse_time;
+    w->collapse_length = desc->collapse_length;
     w->collapse_count = desc->collapse_count == 0 ? C2D_W_COLLAPSE_COUNT : desc->collapse_count;
     w->periodic = desc->boundary == C2D_PERIODIC;
     w->cw = w->ch = 0;
@@ -454,7 +458,7 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     p->x = x, p->y = y, p->vx = disk->vel.x, p->vy = disk->vel.y, p->t = w->now;
     p->mass = disk->mass, p->radius = radius;
     p->when = C2D_W_INF;
-    p->last = -1.0;
+    p->last = -C2D_W_INF;
     p->tie = (uint64_t)C2D_W_IDLE << 62;
     p->count = p->pcount = 0;
     p->partner = 0;
@@ -507,13 +511,18 @@ static void c2d_w_pair(c2d_world *w, uint32_t i)
     a.pos.x = p->x + p->vx * dp, a.pos.y = p->y + p->vy * dp, a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
     b.pos.x = qx + sx, b.pos.y = qy + sy, b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
     if (e < 1) {
-        if ((p->last == now && p->same >= w->collapse_count) || (q->last == now && q->same >= w->collapse_count))
+        /* The collapse rule (collide2d_world.h): elastic after collapse_count
+         * impacts at this instant, within collapse_time of the last impact,
+         * below collapse_speed, or when the pair has closed less than
+         * collapse_length since either disk's last impact. */
+        const double since = now - (p->last > q->last ? p->last : q->last);
+        const double nx = b.pos.x - a.pos.x, ny = b.pos.y - a.pos.y;
+        const double vn = -((b.vel.x - a.vel.x) * nx + (b.vel.y - a.vel.y) * ny), nn = C2D_W_SQRT(nx * nx + ny * ny);
+        const double length = w->collapse_length > 0 ? w->collapse_length
+                                                      : 0x1p-20 * (p->radius < q->radius ? p->radius : q->radius);
+        if ((p->last == now && p->same >= w->collapse_count) || (q->last == now && q->same >= w->collapse_count) ||
+            since < w->collapse_time || vn < w->collapse_speed * nn || vn * since < length * nn)
             e = 1;
-        if (w->collapse_speed > 0) {
-            double nx = b.pos.x - a.pos.x, ny = b.pos.y - a.pos.y;
-            double vn = -((b.vel.x - a.vel.x) * nx + (b.vel.y - a.vel.y) * ny), nn = C2D_W_SQRT(nx * nx + ny * ny);
-            if (vn < w->collapse_speed * nn) e = 1;
-        }
     }
     if (c2d_collide(&a, &b, e) == C2D_OK) {
         w->stats.virial +=
@@ -533,16 +542,24 @@ static void c2d_w_pair(c2d_world *w, uint32_t i)
 static void c2d_w_wall(c2d_world *w, uint32_t i)
 {
     c2d_w_disk *p = &w->disk[i];
-    const double dt = w->now - p->t;
-    double x = p->x + p->vx * dt, y = p->y + p->vy * dt;
-    switch (p->partner) {
-    case 0: x = p->radius, p->vx = -w->wall_restitution * p->vx; break;
-    case 1: x = w->width - p->radius, p->vx = -w->wall_restitution * p->vx; break;
-    case 2: y = p->radius, p->vy = -w->wall_restitution * p->vy; break;
-    default: y = w->height - p->radius, p->vy = -w->wall_restitution * p->vy; break;
+    const double now = w->now, dt = now - p->t, since = now - p->last;
+    double x = p->x + p->vx * dt, y = p->y + p->vy * dt, e = w->wall_restitution, vn;
+    vn = p->partner < 2 ? p->vx : p->vy;
+    vn = vn < 0 ? -vn : vn;
+    if (e < 1) { /* the collapse rule, as for a pair (the wall's "radius" 0) */
+        const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
+        if ((p->last == now && p->same >= w->collapse_count) || since < w->collapse_time ||
+            vn < w->collapse_speed || vn * since < length)
+            e = 1;
     }
-    p->x = x, p->y = y, p->t = w->now;
-    p->count++;
+    switch (p->partner) {
+    case 0: x = p->radius, p->vx = -e * p->vx; break;
+    case 1: x = w->width - p->radius, p->vx = -e * p->vx; break;
+    case 2: y = p->radius, p->vy = -e * p->vy; break;
+    default: y = w->height - p->radius, p->vy = -e * p->vy; break;
+    }
+    p->x = x, p->y = y, p->t = now;
+    c2d_w_impact_clock(p, now);
     w->stats.wall_collisions++;
     c2d_w_predict(w, i);
 }
