@@ -33,6 +33,28 @@
 #endif
 #include C2D_WORLD_HEADER
 
+/* The impact and the time of impact: the double instance's own templates
+ * (real/), compiled into this translation unit as double.c compiles them
+ * (the same code, the same bits), so the world needs no symbol from another
+ * object and the predictions inline.  In the one-file amalgamation the
+ * instance is already there, and the public functions are called. */
+#ifndef C2D_WORLD_IN_ONE_FILE
+#define C2D_W_INSTANCE "real/double.h"
+#ifdef __GNUC__ /* the instance's other entry points are unused here, and dropped */
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#endif
+#include C2D_W_INSTANCE
+#ifdef __GNUC__
+#pragma GCC diagnostic pop
+#endif
+#define C2D_W_COLLIDE c2d_real_collide
+#define C2D_W_TOI c2d_real_time_of_impact
+#else
+#define C2D_W_COLLIDE c2d_collide
+#define C2D_W_TOI c2d_time_of_impact
+#endif
+
 #ifdef __GNUC__
 #define C2D_W_SQRT __builtin_sqrt
 #else
@@ -159,7 +181,10 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     return C2D_OK;
 }
 
-size_t c2d_world_count(const c2d_world *world) { return world == NULL ? 0 : world->count; }
+size_t c2d_world_count(const c2d_world *world)
+{
+    return world == NULL ? 0 : world->count;
+}
 
 /* ------------------------------------------------------------ heap */
 
@@ -341,7 +366,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
                     }
                 }
                 b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
-                if (c2d_time_of_impact(&a, &b, p->radius + q->radius, &toi) != C2D_OK) continue;
+                if (C2D_W_TOI(&a, &b, p->radius + q->radius, &toi) != C2D_OK) continue;
                 c2d_w_consider(&best, now + toi, C2D_W_PAIR, j, q->count);
             }
         }
@@ -524,7 +549,7 @@ static void c2d_w_pair(c2d_world *w, uint32_t i)
             since < w->collapse_time || vn < w->collapse_speed * nn || vn * since < length * nn)
             e = 1;
     }
-    if (c2d_collide(&a, &b, e) == C2D_OK) {
+    if (C2D_W_COLLIDE(&a, &b, e) == C2D_OK) {
         w->stats.virial +=
             ((b.pos.x - a.pos.x) * (b.vel.x - q->vx) + (b.pos.y - a.pos.y) * (b.vel.y - q->vy)) * q->mass;
         p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
