@@ -97,6 +97,7 @@ INSTALL_DIRS = $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR) $(MAN3)
 install: lib
 	sh scripts/installdirs.sh create build/install-dirs.txt $(INSTALL_DIRS)
 	install -m 644 $(LIB_HDR) $(DESTDIR)$(INCLUDEDIR)/collide2d.h
+	install -m 644 include/collide2d_world.h $(DESTDIR)$(INCLUDEDIR)/collide2d_world.h
 	install -m 644 $(STATIC) $(DESTDIR)$(LIBDIR)/libcollide2d.a
 	install -m 755 $(SHARED) $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)
 	ln -sf libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
@@ -106,6 +107,7 @@ install: lib
 	sh man/links.sh $(MAN_PAGES) | while read -r page name; do ln -sf $$page $(MAN3)/$$name || exit 1; done
 
 uninstall:
+	rm -f $(DESTDIR)$(INCLUDEDIR)/collide2d_world.h
 	rm -f $(DESTDIR)$(INCLUDEDIR)/collide2d.h $(DESTDIR)$(LIBDIR)/libcollide2d.a \
 	  $(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME) \
 	  $(DESTDIR)$(LIBDIR)/libcollide2d.so $(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc \
