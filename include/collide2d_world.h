@@ -63,11 +63,13 @@
  *
  * MEMORY
  *   c2d_world_bytes(desc) bytes aligned to 8 bytes (any malloc result, or a
- *   static array of double/uint64_t): about 200 bytes, plus 104 bytes per
- *   disk of capacity (disk state 96 + heap slot 4 + 4 for the cells, of
- *   which there are at most 2 x capacity + 16).  The world lives entirely
- *   in that memory and points into it: do not move or copy it while in use
- *   (make a new world instead).  Nothing else is kept anywhere.
+ *   static array of double/uint64_t); on 64-bit targets 320 bytes plus 160
+ *   per disk of capacity: the disk's state (128 bytes; the array starts on
+ *   a 64-byte boundary within the buffer, so one cache line holds what a
+ *   prediction reads of a neighbour), its heap entry (24) and 2 cells of
+ *   the grid (4 each; at most 2 x capacity + 16 cells).  The world lives
+ *   entirely in that memory and points into it: do not move or copy it
+ *   while in use (make a new world instead).  Nothing else is kept.
  *
  * BROADPHASE AND QUEUE
  *   A uniform grid of cells at least one largest diameter wide (at most
@@ -100,7 +102,7 @@ typedef struct c2d_world c2d_world;
 typedef enum c2d_boundary { C2D_WALLS = 0, C2D_PERIODIC = 1 } c2d_boundary;
 
 typedef struct c2d_world_desc {
-    size_t capacity;         /* most disks, >= 1 and < 2^32 - 1 */
+    size_t capacity;         /* most disks, 1 to 2^31 - 1 */
     double width, height;    /* the box [0, width) x [0, height): finite, > 0 */
     c2d_boundary boundary;   /* C2D_WALLS or C2D_PERIODIC */
     double restitution;      /* disk-disk, [0, 1] */

@@ -69,24 +69,34 @@
 
 enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_IDLE = 3 };
 
+/* 128 bytes, the first cache line what a prediction reads of a neighbour. */
 typedef struct c2d_w_disk {
     double x, y, vx, vy, t; /* the state at time t (its last impact) */
-    double mass, radius;
-    double when;            /* its next event's time */
-    double last;            /* the time of its last impact */
-    uint64_t tie;           /* kind << 62 | lower index << 31 | higher index */
+    double radius;
     uint64_t count;         /* impacts so far */
+    uint32_t next, cell;    /* the next disk in its cell, its cell */
+    double mass;
+    double last;            /* the time of its last impact */
     uint64_t pcount;        /* the partner's count when the event was predicted */
     uint32_t partner;       /* a disk (impact), or a side 0..3: -x, +x, -y, +y */
-    uint32_t cell, next;    /* its cell, the next disk in that cell */
     uint32_t slot;          /* its place in the heap */
     uint32_t kind;          /* C2D_W_PAIR ... C2D_W_IDLE */
     uint32_t same;          /* impacts at time `last` */
+    uint64_t spare[3];
 } c2d_w_disk;
+typedef char c2d_w_disk_is_128_bytes[sizeof(c2d_w_disk) == 128 ? 1 : -1];
+
+/* A heap entry: a disk's next event, its time and its tie key
+ * (kind << 62 | lower index << 31 | higher index). */
+typedef struct c2d_w_entry {
+    double when;
+    uint64_t tie;
+    uint32_t disk, spare;
+} c2d_w_entry;
 
 struct c2d_world {
     c2d_w_disk *disk;
-    uint32_t *heap;  /* disk indices, a min-heap on (when, tie) */
+    c2d_w_entry *heap; /* a min-heap on (when, tie) */
     uint32_t *head;  /* first disk of each cell, C2D_W_NONE for none */
     size_t capacity, count, budget;
     size_t mx, my;   /* cells per side (0 until the first disk) */
@@ -124,14 +134,14 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
 static size_t c2d_w_layout(size_t capacity, size_t *disks, size_t *heap, size_t *cells)
 {
     const size_t top = (size_t)-1;
-    size_t budget = 2 * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)), n;
+    size_t budget = 2 * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)) + 56, n;
     if (capacity > (top - 16) / 2) return 0;
-    *disks = off;
+    *disks = off; /* the disks start on a 64-byte boundary within the 56 bytes before */
     if (capacity > (top - off) / sizeof(c2d_w_disk)) return 0;
     off += capacity * sizeof(c2d_w_disk);
     *heap = off;
-    n = C2D_W_ROUND8(capacity * sizeof(uint32_t));
-    if (capacity > top / 8 || n > top - off) return 0;
+    if (capacity > (top - off) / sizeof(c2d_w_entry)) return 0;
+    n = capacity * sizeof(c2d_w_entry);
     off += n;
     *cells = off;
     if (budget > top / 8 || budget * sizeof(uint32_t) > top - off) return 0;
@@ -155,9 +165,12 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     total = c2d_w_layout(desc->capacity, &od, &oh, &oc);
     if (total == 0 || bytes < total) return C2D_INVALID;
     w = (c2d_world *)memory;
-    w->disk = (c2d_w_disk *)(void *)(m + od);
-    w->heap = (uint32_t *)(void *)(m + oh);
-    w->head = (uint32_t *)(void *)(m + oc);
+    {
+        size_t skew = (size_t)(((uintptr_t)m + od) % 64u), back = skew; /* a multiple of 8, up to 56 */
+        w->disk = (c2d_w_disk *)(void *)(m + od - back);
+        w->heap = (c2d_w_entry *)(void *)(m + oh - back);
+        w->head = (uint32_t *)(void *)(m + oc - back);
+    }
     w->capacity = desc->capacity;
     w->count = 0;
     w->budget = 2 * desc->capacity + 16;
@@ -188,35 +201,37 @@ size_t c2d_world_count(const c2d_world *world)
 
 /* ------------------------------------------------------------ heap */
 
-static int c2d_w_before(const c2d_w_disk *a, const c2d_w_disk *b)
+static int c2d_w_before(const c2d_w_entry *a, const c2d_w_entry *b)
 {
     return a->when < b->when || (a->when == b->when && a->tie < b->tie);
 }
 
-static void c2d_w_heap_fix(c2d_world *w, uint32_t i)
+/* Disk i's event is now (when, tie): move its entry to its place. */
+static void c2d_w_heap_fix(c2d_world *w, uint32_t i, double when, uint64_t tie)
 {
-    uint32_t *h = w->heap;
-    c2d_w_disk *d = w->disk, *p = &d[i];
-    size_t s = p->slot, n = w->count;
+    c2d_w_entry *h = w->heap, e;
+    c2d_w_disk *d = w->disk;
+    size_t s = d[i].slot, n = w->count;
+    e.when = when, e.tie = tie, e.disk = i, e.spare = 0;
     while (s > 0) {
         size_t up = (s - 1) / 2;
-        if (!c2d_w_before(p, &d[h[up]])) break;
+        if (!c2d_w_before(&e, &h[up])) break;
         h[s] = h[up];
-        d[h[s]].slot = (uint32_t)s;
+        d[h[s].disk].slot = (uint32_t)s;
         s = up;
     }
     for (;;) {
         size_t l = 2 * s + 1, best;
         if (l >= n) break;
         best = l;
-        if (l + 1 < n && c2d_w_before(&d[h[l + 1]], &d[h[l]])) best = l + 1;
-        if (!c2d_w_before(&d[h[best]], p)) break;
+        if (l + 1 < n && c2d_w_before(&h[l + 1], &h[l])) best = l + 1;
+        if (!c2d_w_before(&h[best], &e)) break;
         h[s] = h[best];
-        d[h[s]].slot = (uint32_t)s;
+        d[h[s].disk].slot = (uint32_t)s;
         s = best;
     }
-    h[s] = i;
-    p->slot = (uint32_t)s;
+    h[s] = e;
+    d[i].slot = (uint32_t)s;
 }
 
 /* ------------------------------------------------------------ cells */
@@ -365,23 +380,21 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
                         if (best.when - now < c / (2 * dh) * (1 - 0x1p-40)) continue;
                     }
                 }
-                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
+                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = p->mass; /* ignored */
                 if (C2D_W_TOI(&a, &b, p->radius + q->radius, &toi) != C2D_OK) continue;
                 c2d_w_consider(&best, now + toi, C2D_W_PAIR, j, q->count);
             }
         }
     }
-    p->when = best.when;
     p->kind = best.kind;
     p->partner = best.partner;
     p->pcount = best.pcount;
     if (best.kind == C2D_W_PAIR) {
         uint64_t lo = i < best.partner ? i : best.partner, hi = i < best.partner ? best.partner : i;
-        p->tie = (uint64_t)C2D_W_PAIR << 62 | lo << 31 | hi;
+        c2d_w_heap_fix(w, i, best.when, (uint64_t)C2D_W_PAIR << 62 | lo << 31 | hi);
     } else {
-        p->tie = (uint64_t)best.kind << 62 | (uint64_t)i << 31 | (uint64_t)i;
+        c2d_w_heap_fix(w, i, best.when, (uint64_t)best.kind << 62 | (uint64_t)i << 31 | (uint64_t)i);
     }
-    c2d_w_heap_fix(w, i);
 }
 
 /* ------------------------------------------------------------ grid */
@@ -482,15 +495,17 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     p = &w->disk[i];
     p->x = x, p->y = y, p->vx = disk->vel.x, p->vy = disk->vel.y, p->t = w->now;
     p->mass = disk->mass, p->radius = radius;
-    p->when = C2D_W_INF;
     p->last = -C2D_W_INF;
-    p->tie = (uint64_t)C2D_W_IDLE << 62;
+    p->spare[0] = p->spare[1] = p->spare[2] = 0;
     p->count = p->pcount = 0;
     p->partner = 0;
     p->kind = C2D_W_IDLE;
     p->same = 0;
     p->slot = i;
-    w->heap[i] = i;
+    w->heap[i].when = C2D_W_INF;
+    w->heap[i].tie = (uint64_t)C2D_W_IDLE << 62;
+    w->heap[i].disk = i;
+    w->heap[i].spare = 0;
     w->count++;
     if (index != NULL) *index = i;
     if (rebuild) {
@@ -621,10 +636,10 @@ c2d_status c2d_world_advance(c2d_world *world, double t)
     c2d_world *w = world;
     if (w == NULL || !c2d_w_finite(t) || !(t >= w->now)) return C2D_INVALID;
     while (w->count > 0) {
-        uint32_t i = w->heap[0];
+        uint32_t i = w->heap[0].disk;
         c2d_w_disk *p = &w->disk[i];
-        if (!(p->when <= t)) break;
-        w->now = p->when;
+        if (!(w->heap[0].when <= t)) break;
+        w->now = w->heap[0].when;
         w->stats.events++;
         switch (p->kind) {
         case C2D_W_PAIR: c2d_w_pair(w, i); break;
