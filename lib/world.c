@@ -201,12 +201,16 @@ size_t c2d_world_count(const c2d_world *world)
 
 /* ------------------------------------------------------------ heap */
 
+/* (when, tie, disk): a total order, so the events come out in the same
+ * order whatever the heap's shape (both disks of a pair may hold the same
+ * event: the lower index's copy first). */
 static int c2d_w_before(const c2d_w_entry *a, const c2d_w_entry *b)
 {
-    return a->when < b->when || (a->when == b->when && a->tie < b->tie);
+    return a->when < b->when || (a->when == b->when && (a->tie < b->tie || (a->tie == b->tie && a->disk < b->disk)));
 }
 
-/* Disk i's event is now (when, tie): move its entry to its place. */
+/* Disk i's event is now (when, tie): move its entry to its place in the
+ * 4-ary heap (children of slot s: 4 s + 1 ... 4 s + 4, contiguous). */
 static void c2d_w_heap_fix(c2d_world *w, uint32_t i, double when, uint64_t tie)
 {
     c2d_w_entry *h = w->heap, e;
@@ -214,17 +218,19 @@ static void c2d_w_heap_fix(c2d_world *w, uint32_t i, double when, uint64_t tie)
     size_t s = d[i].slot, n = w->count;
     e.when = when, e.tie = tie, e.disk = i, e.spare = 0;
     while (s > 0) {
-        size_t up = (s - 1) / 2;
+        size_t up = (s - 1) / 4;
         if (!c2d_w_before(&e, &h[up])) break;
         h[s] = h[up];
         d[h[s].disk].slot = (uint32_t)s;
         s = up;
     }
     for (;;) {
-        size_t l = 2 * s + 1, best;
+        size_t l = 4 * s + 1, best, k, end;
         if (l >= n) break;
         best = l;
-        if (l + 1 < n && c2d_w_before(&h[l + 1], &h[l])) best = l + 1;
+        end = l + 4 < n ? l + 4 : n;
+        for (k = l + 1; k < end; k++)
+            if (c2d_w_before(&h[k], &h[best])) best = k;
         if (!c2d_w_before(&h[best], &e)) break;
         h[s] = h[best];
         d[h[s].disk].slot = (uint32_t)s;
@@ -531,16 +537,20 @@ static void c2d_w_impact_clock(c2d_w_disk *p, double now)
     p->count++;
 }
 
-static void c2d_w_pair(c2d_world *w, uint32_t i)
+/* The impact event of disk `owner`: stale, or resolved with the lower
+ * index as c2d_collide's a (so either disk's copy of the event gives the
+ * same bits). */
+static void c2d_w_pair(c2d_world *w, uint32_t owner)
 {
-    c2d_w_disk *d = w->disk, *p = &d[i];
-    const uint32_t j = p->partner;
-    c2d_w_disk *q = &d[j];
+    c2d_w_disk *d = w->disk;
+    const uint32_t partner = d[owner].partner;
+    const uint32_t i = owner < partner ? owner : partner, j = owner < partner ? partner : owner;
+    c2d_w_disk *p = &d[i], *q = &d[j];
     const double now = w->now, dp = now - p->t, dq = now - q->t;
     double qx, qy, sx = 0, sy = 0, e = w->restitution;
     c2d_body a, b;
-    if (q->count != p->pcount) { /* stale */
-        c2d_w_predict(w, i);
+    if (d[partner].count != d[owner].pcount) { /* stale */
+        c2d_w_predict(w, owner);
         return;
     }
     if (w->periodic) {
@@ -575,7 +585,7 @@ static void c2d_w_pair(c2d_world *w, uint32_t i)
         c2d_w_predict(w, i);
         c2d_w_predict(w, j);
     } else {
-        c2d_w_predict(w, i);
+        c2d_w_predict(w, owner);
     }
 }
 
