@@ -357,7 +357,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
             uint32_t j;
             for (j = w->head[row[l] * mx + col[k]]; j != C2D_W_NONE; j = d[j].next) {
                 const c2d_w_disk *q = &d[j];
-                double qdt, dx, dy, dvx, dvy, dot, mag, toi, rs, c, err, vv, dh;
+                double qdt, dx, dy, dvx, dvy, dot, mag, toi;
                 c2d_body b;
                 if (j == i) continue;
                 qdt = now - q->t;
@@ -374,14 +374,12 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
                 mag = (dx * dvx < 0 ? -dx * dvx : dx * dvx) + (dy * dvy < 0 ? -dy * dvy : dy * dvy);
                 if (dvx == 0 && dvy == 0) continue;
                 if (mag >= 0x1p-900 && mag <= 0x1p900) {
+                    double rs, dd, err, c;
                     if (dot > mag * 0x1p-40) continue;
-                    rs = p->radius + q->radius;
-                    c = dx * dx + dy * dy;
-                    err = (c + rs * rs) * 0x1p-40;
-                    c = (c - rs * rs) - err;
+                    rs = p->radius + q->radius, dd = dx * dx + dy * dy;
+                    err = (dd + rs * rs) * 0x1p-40, c = (dd - rs * rs) - err;
                     if (c > 0 && c <= 0x1p900 && err >= 0x1p-900) {
-                        dh = -dot + mag * 0x1p-40;
-                        vv = (dvx * dvx + dvy * dvy) * (1 - 0x1p-40);
+                        const double dh = -dot + mag * 0x1p-40, vv = (dvx * dvx + dvy * dvy) * (1 - 0x1p-40);
                         if (dh * dh < vv * c * (1 - 0x1p-40)) continue;
                         if (best.when - now < c / (2 * dh) * (1 - 0x1p-40)) continue;
                     }
@@ -397,7 +395,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     p->pcount = best.pcount;
     if (best.kind == C2D_W_PAIR) {
         uint64_t lo = i < best.partner ? i : best.partner, hi = i < best.partner ? best.partner : i;
-        c2d_w_heap_fix(w, i, best.when, (uint64_t)C2D_W_PAIR << 62 | lo << 31 | hi);
+        c2d_w_heap_fix(w, i, best.when, lo << 31 | hi); /* kind C2D_W_PAIR = 0 */
     } else {
         c2d_w_heap_fix(w, i, best.when, (uint64_t)best.kind << 62 | (uint64_t)i << 31 | (uint64_t)i);
     }
