@@ -57,8 +57,10 @@
 
 #ifdef __GNUC__
 #define C2D_W_SQRT __builtin_sqrt
+#define C2D_W_FABS __builtin_fabs
 #else
 #define C2D_W_SQRT sqrt
+#define C2D_W_FABS(x) ((x) < 0 ? -(x) : (x))
 #endif
 
 #define C2D_W_NONE 0xFFFFFFFFu
@@ -352,10 +354,11 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     nr = c2d_w_neighbours(cy, my, w->periodic, w->height, row, rowshift);
     for (l = 0; l < nr; l++) {
         const double sy = rowshift[l];
+        const uint32_t *heads = &w->head[row[l] * mx];
         for (k = 0; k < nc; k++) {
             const double sx = colshift[k];
-            uint32_t j;
-            for (j = w->head[row[l] * mx + col[k]]; j != C2D_W_NONE; j = d[j].next) {
+            uint32_t j = heads[col[k]];
+            for (; j != C2D_W_NONE; j = d[j].next) {
                 const c2d_w_disk *q = &d[j];
                 double qdt, dx, dy, dvx, dvy, dot, mag, toi;
                 c2d_body b;
@@ -371,7 +374,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
                  * c / (2 |dot|), c = |d|^2 - rs^2 > 0). */
                 dx = b.pos.x - px, dy = b.pos.y - py, dvx = q->vx - p->vx, dvy = q->vy - p->vy;
                 dot = dx * dvx + dy * dvy;
-                mag = (dx * dvx < 0 ? -dx * dvx : dx * dvx) + (dy * dvy < 0 ? -dy * dvy : dy * dvy);
+                mag = C2D_W_FABS(dx * dvx) + C2D_W_FABS(dy * dvy);
                 if (dvx == 0 && dvy == 0) continue;
                 if (mag >= 0x1p-900 && mag <= 0x1p900) {
                     double rs, dd, err, c;
