@@ -124,6 +124,16 @@ typedef struct c2d_world c2d_world;
 
 typedef enum c2d_boundary { C2D_WALLS = 0, C2D_PERIODIC = 1 } c2d_boundary;
 
+/* What c2d_world_desc.on_event receives after each impact. */
+typedef enum c2d_world_event_kind { C2D_WORLD_IMPACT = 0, C2D_WORLD_WALL = 1 } c2d_world_event_kind;
+typedef struct c2d_world_event {
+    c2d_world_event_kind kind;
+    double time;      /* when */
+    size_t a, b;      /* IMPACT: the disks, a < b; WALL: the disk, and the wall
+                         0..3 (x = 0, x = width, y = 0, y = height) */
+    c2d_vec2 impulse; /* IMPACT: on b (a gets its negative); WALL: on the disk */
+} c2d_world_event;
+
 typedef struct c2d_world_desc {
     size_t capacity;         /* most disks, 1 to 2^31 - 1 */
     double width, height;    /* the box [0, width) x [0, height): finite, > 0 */
@@ -138,6 +148,11 @@ typedef struct c2d_world_desc {
     double collapse_length;  /* >= 0, finite: an impact is elastic when the pair has closed
                                 less than this (approach speed x time since either disk's
                                 previous impact) [0: 2^-20 x the smaller radius] */
+    /* Called after each impact, during c2d_world_advance [NULL: none]: it may
+     * read the world (c2d_world_get gives states at the event's time) but
+     * not change it. */
+    void (*on_event)(void *user, const c2d_world_event *event);
+    void *user;              /* passed to on_event */
 } c2d_world_desc;
 
 typedef struct c2d_world_stats {
@@ -180,14 +195,30 @@ c2d_status c2d_world_advance(c2d_world *world, double t);
 /* Disk `index` at the world's time: position (its last event's position
  * plus velocity x elapsed time; in a periodic box within [0, width) up to
  * rounding), velocity and mass.  Changes nothing.
- *   returns  C2D_OK, or C2D_INVALID (NULL, index >= number of disks). */
+ *   returns  C2D_OK, or C2D_INVALID (NULL, index >= number of disks, a
+ *            removed disk). */
 c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk);
 
 /* The world's counters, time and virial sum (all zero for NULL world). */
 void c2d_world_get_stats(const c2d_world *world, c2d_world_stats *stats);
 
-/* The number of disks in the world (0 for NULL). */
+/* The number of disks added (removed ones included: indices stay; 0 for
+ * NULL). */
 size_t c2d_world_count(const c2d_world *world);
+
+/* Give disk `index` a new velocity at the world's time (a kick, a player's
+ * control): its position there becomes its reference, its next event is
+ * predicted anew, and its partners' predictions become stale.
+ *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed,
+ *            NaN/Inf velocity; nothing changes).
+ *   cost     one prediction (the disks of 9 cells) and a heap update. */
+c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 velocity);
+
+/* Take disk `index` out of the world at its time.  Its index is not reused
+ * (nor its capacity); c2d_world_get and the other calls refuse it after.
+ *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or already removed).
+ *   cost     O(disks in its cell) and a heap update. */
+c2d_status c2d_world_remove(c2d_world *world, size_t index);
 
 #endif /* C2D_NO_DOUBLE */
 

@@ -69,7 +69,7 @@
 #define C2D_W_MARGIN (1.0 + 1.0 / 16777216.0) /* cell width over the largest diameter */
 #define C2D_W_COLLAPSE_COUNT 16u
 
-enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_IDLE = 3 };
+enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_IDLE = 3, C2D_W_GONE = 4 };
 
 /* 128 bytes, the first cache line what a prediction reads of a neighbour. */
 typedef struct c2d_w_disk {
@@ -108,6 +108,8 @@ struct c2d_world {
     double now;      /* the world's time (also the current event's, while advancing) */
     unsigned collapse_count;
     int periodic;
+    void (*on_event)(void *user, const c2d_world_event *event);
+    void *user;
     c2d_world_stats stats;
 };
 
@@ -186,6 +188,8 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     w->collapse_length = desc->collapse_length;
     w->collapse_count = desc->collapse_count == 0 ? C2D_W_COLLAPSE_COUNT : desc->collapse_count;
     w->periodic = desc->boundary == C2D_PERIODIC;
+    w->on_event = desc->on_event;
+    w->user = desc->user;
     w->cw = w->ch = 0;
     w->rmax = 0;
     w->now = 0;
@@ -442,10 +446,13 @@ static void c2d_w_rebuild(c2d_world *w)
     for (i = 0; i < w->count; i++) {
         c2d_w_disk *p = &w->disk[i];
         double dt = w->now - p->t;
-        size_t cx = c2d_w_cell_1d(p->x + p->vx * dt, w->cw, w->mx), cy = c2d_w_cell_1d(p->y + p->vy * dt, w->ch, w->my);
+        size_t cx, cy;
+        if (p->kind == C2D_W_GONE) continue;
+        cx = c2d_w_cell_1d(p->x + p->vx * dt, w->cw, w->mx), cy = c2d_w_cell_1d(p->y + p->vy * dt, w->ch, w->my);
         c2d_w_cell_insert(w, (uint32_t)i, cy * w->mx + cx);
     }
-    for (i = 0; i < w->count; i++) c2d_w_predict(w, (uint32_t)i);
+    for (i = 0; i < w->count; i++)
+        if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, (uint32_t)i);
 }
 
 /* ------------------------------------------------------------ adding */
@@ -485,7 +492,7 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     if (rebuild) {
         size_t k;
         for (k = 0; k < w->count; k++)
-            if (c2d_w_overlaps(w, x, y, radius, &w->disk[k])) return C2D_INVALID;
+            if (w->disk[k].kind != C2D_W_GONE && c2d_w_overlaps(w, x, y, radius, &w->disk[k])) return C2D_INVALID;
     } else {
         const size_t mx = w->mx, my = w->my, cx = c2d_w_cell_1d(x, w->cw, mx), cy = c2d_w_cell_1d(y, w->ch, my);
         size_t k, l;
@@ -576,13 +583,19 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
             e = 1;
     }
     if (C2D_W_COLLIDE(&a, &b, e) == C2D_OK) {
-        w->stats.virial +=
-            ((b.pos.x - a.pos.x) * (b.vel.x - q->vx) + (b.pos.y - a.pos.y) * (b.vel.y - q->vy)) * q->mass;
+        const double vqx = q->vx, vqy = q->vy;
+        w->stats.virial += ((b.pos.x - a.pos.x) * (b.vel.x - vqx) + (b.pos.y - a.pos.y) * (b.vel.y - vqy)) * q->mass;
         p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
         q->x = qx, q->y = qy, q->vx = b.vel.x, q->vy = b.vel.y, q->t = now;
         c2d_w_impact_clock(p, now);
         c2d_w_impact_clock(q, now);
         w->stats.collisions++;
+        if (w->on_event != NULL) {
+            c2d_world_event ev;
+            ev.kind = C2D_WORLD_IMPACT, ev.time = now, ev.a = i, ev.b = j;
+            ev.impulse.x = (b.vel.x - vqx) * q->mass, ev.impulse.y = (b.vel.y - vqy) * q->mass;
+            w->on_event(w->user, &ev);
+        }
         c2d_w_predict(w, i);
         c2d_w_predict(w, j);
     } else {
@@ -595,6 +608,7 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
     c2d_w_disk *p = &w->disk[i];
     const double now = w->now, dt = now - p->t, since = now - p->last;
     double x = p->x + p->vx * dt, y = p->y + p->vy * dt, e = w->wall_restitution, vn;
+    const double vx0 = p->vx, vy0 = p->vy;
     vn = p->partner < 2 ? p->vx : p->vy;
     vn = vn < 0 ? -vn : vn;
     if (e < 1) { /* the collapse rule, as for a pair (the wall's "radius" 0) */
@@ -612,6 +626,12 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
     p->x = x, p->y = y, p->t = now;
     c2d_w_impact_clock(p, now);
     w->stats.wall_collisions++;
+    if (w->on_event != NULL) {
+        c2d_world_event ev;
+        ev.kind = C2D_WORLD_WALL, ev.time = now, ev.a = i, ev.b = p->partner;
+        ev.impulse.x = (p->vx - vx0) * p->mass, ev.impulse.y = (p->vy - vy0) * p->mass;
+        w->on_event(w->user, &ev);
+    }
     c2d_w_predict(w, i);
 }
 
@@ -669,6 +689,7 @@ c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk)
     double dt, x, y;
     if (world == NULL || disk == NULL || index >= world->count) return C2D_INVALID;
     p = &world->disk[index];
+    if (p->kind == C2D_W_GONE) return C2D_INVALID;
     dt = world->now - p->t;
     x = p->x + p->vx * dt, y = p->y + p->vy * dt;
     if (world->periodic) {
@@ -680,6 +701,36 @@ c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk)
     disk->pos.x = x, disk->pos.y = y;
     disk->vel.x = p->vx, disk->vel.y = p->vy;
     disk->mass = p->mass;
+    return C2D_OK;
+}
+
+c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 velocity)
+{
+    c2d_w_disk *p;
+    double dt;
+    if (world == NULL || index >= world->count || !c2d_w_finite(velocity.x) || !c2d_w_finite(velocity.y))
+        return C2D_INVALID;
+    p = &world->disk[index];
+    if (p->kind == C2D_W_GONE) return C2D_INVALID;
+    dt = world->now - p->t;
+    p->x = p->x + p->vx * dt, p->y = p->y + p->vy * dt, p->t = world->now;
+    p->vx = velocity.x, p->vy = velocity.y;
+    p->count++; /* the partners' predictions with it are stale */
+    c2d_w_predict(world, (uint32_t)index);
+    return C2D_OK;
+}
+
+c2d_status c2d_world_remove(c2d_world *world, size_t index)
+{
+    c2d_w_disk *p;
+    if (world == NULL || index >= world->count) return C2D_INVALID;
+    p = &world->disk[index];
+    if (p->kind == C2D_W_GONE) return C2D_INVALID;
+    c2d_w_cell_remove(world, (uint32_t)index);
+    p->cell = C2D_W_NONE, p->next = C2D_W_NONE;
+    p->kind = C2D_W_GONE;
+    p->count++;
+    c2d_w_heap_fix(world, (uint32_t)index, C2D_W_INF, (uint64_t)C2D_W_IDLE << 62 | (uint64_t)index);
     return C2D_OK;
 }
 

@@ -424,6 +424,134 @@ static void test_reading_a_world_changes_none_of_its_bytes(void **state)
     free(mem);
 }
 
+
+/* ------------------------------------------------------------ control */
+
+typedef struct event_log {
+    int impacts, walls;
+    double last_time;
+    c2d_world_event first;
+} event_log;
+
+static void log_event(void *user, const c2d_world_event *e)
+{
+    event_log *log = user;
+    if (log->impacts + log->walls == 0) log->first = *e;
+    if (e->kind == C2D_WORLD_IMPACT) log->impacts++;
+    else log->walls++;
+    assert_true(e->time >= log->last_time);
+    log->last_time = e->time;
+}
+
+static void test_the_event_callback_sees_every_impact_with_its_impulse(void **state)
+{
+    c2d_world_desc d = box_desc(100, 12, 12, C2D_WALLS, 0.9, 0.8);
+    event_log log;
+    void *mem;
+    c2d_world *w;
+    c2d_world_stats s;
+    (void)state;
+    memset(&log, 0, sizeof log);
+    d.on_event = log_event, d.user = &log;
+    w = new_world(&d, &mem);
+    fill_gas(w, &d, 10, 0.5, 1, 12);
+    assert_status(c2d_world_advance(w, 20), C2D_OK);
+    c2d_world_get_stats(w, &s);
+    assert_true(log.impacts > 0 && log.walls > 0);
+    assert_int_equal(log.impacts, s.collisions);
+    assert_int_equal(log.walls, s.wall_collisions);
+    free(mem);
+    /* Two disks: the impulse on b is b's momentum change. */
+    {
+        c2d_world_desc d2 = box_desc(2, 10, 4, C2D_WALLS, 0.5, 1);
+        c2d_body a = {{1, 2}, {2, 0.5}, 1}, b = {{3, 2.5}, {0, 0}, 3};
+        memset(&log, 0, sizeof log);
+        d2.on_event = log_event, d2.user = &log;
+        w = new_world(&d2, &mem);
+        assert_status(c2d_world_add(w, &a, 0.5, NULL), C2D_OK);
+        assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
+        assert_status(c2d_world_advance(w, 1.2), C2D_OK);
+        assert_int_equal(log.impacts, 1);
+        assert_status(c2d_world_get(w, 1, &b), C2D_OK);
+        assert_true(log.first.kind == C2D_WORLD_IMPACT && log.first.a == 0 && log.first.b == 1);
+        assert_true(log.first.impulse.x == b.vel.x * 3 && log.first.impulse.y == b.vel.y * 3);
+        free(mem);
+    }
+}
+
+static void kick_run(const c2d_world_desc *d, int sliced, c2d_body *out, size_t n)
+{
+    void *mem;
+    c2d_world *w = new_world(d, &mem);
+    const double cuts[] = {0.7, 2.9, 5.0, 5.0, 6.13, 11.0, 14.9, 20.0};
+    size_t i, k;
+    c2d_vec2 v = {4, -3};
+    fill_gas(w, d, 8, 0.4, 1, 13);
+    for (k = 0; k < sizeof cuts / sizeof cuts[0]; k++) {
+        if (sliced || cuts[k] == 5.0 || cuts[k] == 20.0) assert_status(c2d_world_advance(w, cuts[k]), C2D_OK);
+        if (cuts[k] == 5.0 && (k == 2)) {
+            assert_status(c2d_world_set_velocity(w, 17, v), C2D_OK);
+            assert_status(c2d_world_remove(w, 40), C2D_OK);
+        }
+    }
+    for (i = 0; i < n; i++) {
+        if (i == 40) {
+            assert_status(c2d_world_get(w, i, &out[i]), C2D_INVALID);
+            memset(&out[i], 0, sizeof out[i]);
+        } else {
+            assert_status(c2d_world_get(w, i, &out[i]), C2D_OK);
+        }
+    }
+    free(mem);
+}
+
+static void test_kicks_and_removals_keep_frame_independence(void **state)
+{
+    c2d_world_desc d = box_desc(64, 10, 10, C2D_PERIODIC, 1, 0);
+    c2d_body one[64], many[64];
+    (void)state;
+    kick_run(&d, 0, one, 64);
+    kick_run(&d, 1, many, 64);
+    assert_memory_equal(one, many, sizeof one);
+}
+
+static void test_a_kicked_disk_moves_and_a_removed_one_is_passed_through(void **state)
+{
+    c2d_world_desc d = box_desc(3, 20, 4, C2D_WALLS, 1, 1);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    c2d_body a = {{2, 2}, {0, 0}, 1}, b = {{6, 2}, {0, 0}, 1}, c = {{10, 2}, {0, 0}, 1};
+    c2d_vec2 go = {1, 0}, bad = {NAN, 0};
+    size_t bytes = c2d_world_bytes(&d);
+    unsigned char *copy = malloc(bytes);
+    (void)state;
+    assert_status(c2d_world_add(w, &a, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &c, 1, NULL), C2D_OK);
+    assert_status(c2d_world_advance(w, 1), C2D_OK);
+    assert_status(c2d_world_set_velocity(w, 0, go), C2D_OK); /* at t = 1 from x = 2: meets b at t = 3 */
+    assert_status(c2d_world_remove(w, 1), C2D_OK);
+    memcpy(copy, mem, bytes);
+    assert_status(c2d_world_remove(w, 1), C2D_INVALID);
+    assert_status(c2d_world_remove(w, 3), C2D_INVALID);
+    assert_status(c2d_world_remove(NULL, 0), C2D_INVALID);
+    assert_status(c2d_world_set_velocity(w, 1, go), C2D_INVALID);
+    assert_status(c2d_world_set_velocity(w, 0, bad), C2D_INVALID);
+    assert_status(c2d_world_set_velocity(w, 5, go), C2D_INVALID);
+    assert_status(c2d_world_set_velocity(NULL, 0, go), C2D_INVALID);
+    assert_status(c2d_world_get(w, 1, &b), C2D_INVALID);
+    assert_memory_equal(copy, mem, bytes);
+    assert_status(c2d_world_advance(w, 8), C2D_OK); /* passes where b was, meets c at t = 7 */
+    assert_int_equal(collisions(w), 1);
+    assert_status(c2d_world_get(w, 0, &a), C2D_OK);
+    assert_status(c2d_world_get(w, 2, &c), C2D_OK);
+    assert_true(a.vel.x == 0 && a.pos.x == 8 && c.vel.x == 1 && c.pos.x == 11);
+    b.pos.x = 4, b.pos.y = 2; /* its place is free, but its capacity is not given back */
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    free(copy);
+    free(mem);
+}
+
 /* ------------------------------------------------------------ refusals */
 
 static void test_every_refusal_is_invalid_and_changes_nothing(void **state)
@@ -568,6 +696,9 @@ int main(void)
         cmocka_unit_test(test_a_disk_pinned_against_a_wall_by_a_heavy_one_does_not_hang),
         cmocka_unit_test(test_one_advance_and_many_uneven_ones_give_the_same_bits),
         cmocka_unit_test(test_reading_a_world_changes_none_of_its_bytes),
+        cmocka_unit_test(test_the_event_callback_sees_every_impact_with_its_impulse),
+        cmocka_unit_test(test_kicks_and_removals_keep_frame_independence),
+        cmocka_unit_test(test_a_kicked_disk_moves_and_a_removed_one_is_passed_through),
         cmocka_unit_test(test_every_refusal_is_invalid_and_changes_nothing),
     };
     const int total = (int)(sizeof tests / sizeof tests[0]);
