@@ -68,6 +68,12 @@
 #define C2D_W_INF (DBL_MAX * 2.0)
 #define C2D_W_MARGIN (1.0 + 1.0 / 16777216.0) /* cell width over the largest diameter */
 #define C2D_W_COLLAPSE_COUNT 16u
+#ifndef C2D_W_CELLS_PER_DISK
+#define C2D_W_CELLS_PER_DISK 2u /* the grid's budget: cells per disk of capacity (+ 16) */
+#endif
+#ifndef C2D_W_CELL_SCALE
+#define C2D_W_CELL_SCALE 1.0 /* cell side over the largest diameter, at least */
+#endif
 
 enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_IDLE = 3, C2D_W_GONE = 4 };
 
@@ -138,8 +144,8 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
 static size_t c2d_w_layout(size_t capacity, size_t *disks, size_t *heap, size_t *cells)
 {
     const size_t top = (size_t)-1;
-    size_t budget = 2 * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)) + 56, n;
-    if (capacity > (top - 16) / 2) return 0;
+    size_t budget = C2D_W_CELLS_PER_DISK * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)) + 56, n;
+    if (capacity > (top - 16) / C2D_W_CELLS_PER_DISK) return 0;
     *disks = off; /* the disks start on a 64-byte boundary within the 56 bytes before */
     if (capacity > (top - off) / sizeof(c2d_w_disk)) return 0;
     off += capacity * sizeof(c2d_w_disk);
@@ -177,7 +183,7 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     }
     w->capacity = desc->capacity;
     w->count = 0;
-    w->budget = 2 * desc->capacity + 16;
+    w->budget = C2D_W_CELLS_PER_DISK * desc->capacity + 16;
     w->mx = w->my = 0;
     w->width = desc->width;
     w->height = desc->height;
@@ -414,7 +420,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
  * at most the budget. */
 static void c2d_w_grid_size(const c2d_world *w, double r, size_t *mx, size_t *my)
 {
-    const double s = 2 * r * C2D_W_MARGIN, budget = (double)w->budget;
+    const double s = 2 * r * C2D_W_MARGIN * C2D_W_CELL_SCALE, budget = (double)w->budget;
     const size_t lo = w->periodic ? 3 : 1;
     double fx = w->width / s, fy = w->height / s;
     size_t x, y;
