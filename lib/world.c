@@ -333,6 +333,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     c2d_w_best best;
     c2d_body a;
     size_t k, l, nc, nr, col[3], row[3];
+    uint32_t first[9];
     double colshift[3], rowshift[3];
     best.when = C2D_W_INF;
     best.kind = C2D_W_IDLE;
@@ -362,12 +363,22 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
      * image shift a periodic wrap gives each column and row. */
     nc = c2d_w_neighbours(cx, mx, w->periodic, w->width, col, colshift);
     nr = c2d_w_neighbours(cy, my, w->periodic, w->height, row, rowshift);
+    /* The cells' first disks, loaded (and their states fetched) all at
+     * once before any is used: with many disks these are cache misses, and
+     * independent ones overlap. */
+    for (l = 0; l < nr; l++)
+        for (k = 0; k < nc; k++) {
+            uint32_t j = w->head[row[l] * mx + col[k]];
+            first[l * 3 + k] = j;
+#ifdef __GNUC__
+            if (j != C2D_W_NONE) __builtin_prefetch(&d[j]);
+#endif
+        }
     for (l = 0; l < nr; l++) {
         const double sy = rowshift[l];
-        const uint32_t *heads = &w->head[row[l] * mx];
         for (k = 0; k < nc; k++) {
             const double sx = colshift[k];
-            uint32_t j = heads[col[k]];
+            uint32_t j = first[l * 3 + k];
             for (; j != C2D_W_NONE; j = d[j].next) {
                 const c2d_w_disk *q = &d[j];
                 double qdt, dx, dy, dvx, dvy, dot, mag, toi;
