@@ -16,11 +16,11 @@
  *   N        eta 0.5           eta 0.2           (M collisions per CPU s)
  *   1,024    0.89 - 1.18       0.66 - 0.79
  *   10,000   0.58 - 0.98       0.31 - 0.67
- *   100,489  0.26 - 0.30       0.18 - 0.19
+ *   100,489  0.30 - 0.39       0.18 - 0.20
  *   callgrind, N = 1,024: 3,480 instructions per collision at eta 0.5
  *   (1.6 events per collision), 4,730 at eta 0.2 (2.9).
- * At N = 100,489 two thirds of the time are cache misses on the
- * neighbours' states and the cells' heads (perf). */
+ * At N = 100,489 two thirds of the time were cache misses on the
+ * neighbours' states and the cells' heads (perf), before the prefetch. */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdint.h>
