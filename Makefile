@@ -125,12 +125,13 @@ $(AMALGAMATION): scripts/amalgamate.sh $(LIB_SRC) $(LIB_TEMPLATES)
 # uninstall removes those (once empty) and no other (scripts/installdirs.sh).
 # Every path is quoted: PREFIX, DESTDIR and the directories may hold spaces
 # (not quotes).
+PUBLIC_HDRS := include/collide2d.h include/collide2d_world.h
 MAN_PAGES := $(wildcard man/*.3)
 MAN3 = $(DESTDIR)$(MANDIR)/man3
 INSTALL_DIRS = "$(DESTDIR)$(LIBDIR)/pkgconfig" "$(DESTDIR)$(CMAKEDIR)" "$(DESTDIR)$(INCLUDEDIR)" "$(MAN3)"
 install: lib cmake-package
 	sh scripts/installdirs.sh create build/install-dirs.txt $(INSTALL_DIRS)
-	install -m 644 $(LIB_HDR) "$(DESTDIR)$(INCLUDEDIR)/collide2d.h"
+	install -m 644 $(PUBLIC_HDRS) "$(DESTDIR)$(INCLUDEDIR)"
 	install -m 644 $(STATIC) "$(DESTDIR)$(LIBDIR)/libcollide2d.a"
 	install -m 755 $(SHARED) "$(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)"
 	ln -sf libcollide2d.so.$(VERSION) "$(DESTDIR)$(LIBDIR)/$(SONAME)"
@@ -141,7 +142,8 @@ install: lib cmake-package
 	sh man/links.sh $(MAN_PAGES) | while read -r page name; do ln -sf "$$page" "$(MAN3)/$$name" || exit 1; done
 
 uninstall:
-	rm -f "$(DESTDIR)$(INCLUDEDIR)/collide2d.h" "$(DESTDIR)$(LIBDIR)/libcollide2d.a" \
+	for f in $(notdir $(PUBLIC_HDRS)); do rm -f "$(DESTDIR)$(INCLUDEDIR)/$$f"; done
+	rm -f "$(DESTDIR)$(LIBDIR)/libcollide2d.a" \
 	  "$(DESTDIR)$(LIBDIR)/libcollide2d.so.$(VERSION)" "$(DESTDIR)$(LIBDIR)/$(SONAME)" \
 	  "$(DESTDIR)$(LIBDIR)/libcollide2d.so" "$(DESTDIR)$(LIBDIR)/pkgconfig/collide2d.pc"
 	for f in $(CMAKE_PKG_FILES); do rm -f "$(DESTDIR)$(CMAKEDIR)/$$f"; done

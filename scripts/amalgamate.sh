@@ -87,5 +87,10 @@ instance_macros() {
     inline "$lib/float.c"
     for n in $(template_names); do echo "#undef $n"; done
     for m in $(instance_macros); do echo "#undef $m"; done
+    echo "/* ---- lib/world.c (the event-driven world: collide2d_world.h beside collide2d.h) */"
+    echo "#ifndef C2D_WORLD_HEADER"
+    echo "#define C2D_WORLD_HEADER \"collide2d_world.h\""
+    echo "#endif"
+    inline "$lib/world.c"
 } >"$tmp"
 mv "$tmp" "$out"

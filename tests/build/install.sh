@@ -56,7 +56,7 @@ listing "$work" >"$logs/work.before"
 version=$(sed -n 's/^#define C2D_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\)$/\2/p' include/collide2d.h | paste -sd.)
 major=${version%%.*}
 expected() {
-    printf '%s\n' include/collide2d.h lib/libcollide2d.a "lib/libcollide2d.so.$version" "lib/libcollide2d.so.$major" \
+    printf '%s\n' include/collide2d.h include/collide2d_world.h lib/libcollide2d.a "lib/libcollide2d.so.$version" "lib/libcollide2d.so.$major" \
         lib/libcollide2d.so lib/pkgconfig/collide2d.pc lib/cmake/collide2d/collide2dConfig.cmake \
         lib/cmake/collide2d/collide2dConfigVersion.cmake lib/cmake/collide2d/collide2dTargets.cmake
     for p in man/*.3; do printf 'share/man/man3/%s\n' "${p#man/}"; done

@@ -1,0 +1,228 @@
+/* SPDX-License-Identifier: MIT */
+/* collide2d_world.h - an event-driven world of hard disks on collide2d.
+ * C99, double precision, no allocation (the caller gives the memory), no
+ * globals, freestanding (only sqrt).
+ *
+ * WHAT IT DOES
+ *   Disks move in straight lines in a rectangular box [0, width) x
+ *   [0, height) with walls or periodic boundaries.  The world jumps from one
+ *   event to the next, exactly in time order: a disk-disk impact (predicted
+ *   by c2d_time_of_impact, resolved by c2d_collide: frictionless, one
+ *   coefficient of restitution), a disk meeting a wall (the velocity's
+ *   normal component negated and multiplied by the wall restitution), or a
+ *   disk's centre crossing into another cell of the world's own broadphase.
+ *   Nothing is integrated with a time step: between events every disk's
+ *   motion is exact, and the state at any time is computed from the disk's
+ *   last event.
+ *
+ * EXAMPLE
+ *   c2d_world_desc d = {0};
+ *   c2d_world *w;
+ *   static double mem[4096];                     // 8-byte aligned
+ *   c2d_body a = {{1, 1}, {1, 0}, 1}, b = {{3, 1}, {0, 0}, 1};
+ *   size_t ia, ib;
+ *   d.capacity = 2, d.width = 10, d.height = 2, d.boundary = C2D_WALLS;
+ *   d.restitution = 1, d.wall_restitution = 1;
+ *   if (c2d_world_bytes(&d) <= sizeof mem && c2d_world_init(&w, mem, sizeof mem, &d) == C2D_OK) {
+ *       c2d_world_add(w, &a, 0.5, &ia);
+ *       c2d_world_add(w, &b, 0.5, &ib);
+ *       c2d_world_advance(w, 2.0);              // they meet at t = 1
+ *       c2d_world_get(w, ib, &b);               // b.vel == (1, 0), b.pos == (4, 1)
+ *   }
+ *
+ * CONVENTIONS
+ *   - Units: any consistent ones (lengths, times, masses; velocities are
+ *     length per time).  Masses finite and > 0, radii finite and > 0.
+ *   - A disk lies inside the box: with walls radius <= x <= width - radius
+ *     (and the same in y); periodic: 0 <= x < width.  Disks may touch
+ *     (distance == sum of radii) but not overlap.  Touching disks that
+ *     approach collide at once (time of impact 0): Newton's cradle works.
+ *   - Periodic boundaries: the pair's relative position is the nearest
+ *     image, and the box must be at least 3 cells of the broadphase a side,
+ *     so width, height >= 3 x the largest diameter (x (1 + 2^-24)).
+ *   - Every function returns C2D_INVALID for a NULL pointer, NaN or Inf in
+ *     any input, a mass or radius <= 0, a disk outside the box or overlapping
+ *     another, a time before the world's time, too small or misaligned a
+ *     buffer, a full world; on any status but C2D_OK nothing is written
+ *     (the world's memory is unchanged bit for bit).  Impacts themselves
+ *     never fail: a pair that c2d_collide finds separating (a graze) is
+ *     left alone, and a time of impact beyond DBL_MAX is no event.
+ *   - Accuracy: each impact is c2d_collide's (energy and momentum to a few
+ *     ulp; a gas at e = 1 keeps its energy to ~1e-15 relative over 10^5
+ *     impacts); times are c2d_time_of_impact's from positions rounded once
+ *     per extrapolation, so disks may overlap by rounding (a few ulp of
+ *     their coordinates; an overlapping, approaching pair meets at once).  Times are absolute doubles: a world run to time T resolves
+ *     events ulp(T) apart.
+ *   - Indices are given in order of addition from 0.
+ *   - Determinism: the same calls give the same bits (events, states,
+ *     statistics) on every target that evaluates double as double without
+ *     FMA contraction (see collide2d.h).  Frame independence: advancing in
+ *     one call or in many uneven ones gives the same bits; c2d_world_get
+ *     extrapolates without storing anything.
+ *   - Simultaneous events are processed in the order: time, then kind
+ *     (disk-disk impact, then wall, then cell crossing), then the lower
+ *     disk index, then the higher (for a wall or a crossing: x before y,
+ *     low side before high side).  A pair is always resolved with the lower
+ *     index as c2d_collide's a.  An impact at time t changes the disks'
+ *     velocities at t; touching disks that approach then meet at once, so
+ *     a chain of contacts is resolved one impact after the other at the
+ *     same t (Newton's cradle: N - 1 impacts for N disks).
+ *   - Inelastic collapse (restitution < 1): a cluster closing in can need
+ *     infinitely many impacts in finite time.  An impact (disk-disk, or a
+ *     disk with a wall of wall_restitution < 1) is resolved as elastic
+ *     (e = 1) when
+ *       - either disk has already had collapse_count impacts (default 16)
+ *         at the very same time (the same double), or
+ *       - the pair closed less than collapse_length since either disk's
+ *         previous impact (approach speed x time since; default 2^-20 of
+ *         the smaller radius: scale-free, and far below a gas's mean free
+ *         path), or
+ *       - either disk's previous impact was less than collapse_time ago
+ *         (the "TC model" of Luding and McNamara, 1998; default none), or
+ *       - they approach slower than collapse_speed (default none).
+ *     tests/unit/test_world.c measures the effect: a dense gas at e = 0.2
+ *     cools to 5e-5 to 9e-5 of its energy by t = 200 under each rule, with
+ *     10^4 to 3 x 10^4 impacts; without a rule it stalls in clusters.
+ *
+ * MEMORY
+ *   c2d_world_bytes(desc) bytes aligned to 8 bytes (any malloc result, or a
+ *   static array of double/uint64_t); on 64-bit targets 320 bytes plus 160
+ *   per disk of capacity: the disk's state (128 bytes; the array starts on
+ *   a 64-byte boundary within the buffer, so one cache line holds what a
+ *   prediction reads of a neighbour), its heap entry (24) and 2 cells of
+ *   the grid (4 each; at most 2 x capacity + 16 cells).  The world lives
+ *   entirely in that memory and points into it: do not move or copy it
+ *   while in use (make a new world instead).  Nothing else is kept.
+ *
+ * BROADPHASE AND QUEUE
+ *   A uniform grid of cells at least one largest diameter wide (at most
+ *   2 x capacity + 16 of them); each disk's next event is sought among the
+ *   disks of the 3 x 3 cells around its own, and leaving its cell is an
+ *   event.  One pending event per disk, in a binary heap; an event whose
+ *   partner has had an impact since it was predicted is stale (per-disk
+ *   impact counters) and leads to a new prediction instead.
+ *   Cost per event: O(log N) for the heap and O(disks in 9 cells) for the
+ *   predictions; adding a disk larger than all before rebuilds the grid
+ *   (O(N)).
+ *
+ * THREAD SAFETY: the functions touch only their arguments; one world may
+ * be read (c2d_world_get, c2d_world_get_stats) from several threads at once
+ * while no thread changes it.
+ */
+#ifndef COLLIDE2D_WORLD_H
+#define COLLIDE2D_WORLD_H
+
+#include "collide2d.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#ifndef C2D_NO_DOUBLE
+
+typedef struct c2d_world c2d_world;
+
+typedef enum c2d_boundary { C2D_WALLS = 0, C2D_PERIODIC = 1 } c2d_boundary;
+
+/* What c2d_world_desc.on_event receives after each impact. */
+typedef enum c2d_world_event_kind { C2D_WORLD_IMPACT = 0, C2D_WORLD_WALL = 1 } c2d_world_event_kind;
+typedef struct c2d_world_event {
+    c2d_world_event_kind kind;
+    double time;      /* when */
+    size_t a, b;      /* IMPACT: the disks, a < b; WALL: the disk, and the wall
+                         0..3 (x = 0, x = width, y = 0, y = height) */
+    c2d_vec2 impulse; /* IMPACT: on b (a gets its negative); WALL: on the disk */
+} c2d_world_event;
+
+typedef struct c2d_world_desc {
+    size_t capacity;         /* most disks, 1 to 2^31 - 1 */
+    double width, height;    /* the box [0, width) x [0, height): finite, > 0 */
+    c2d_boundary boundary;   /* C2D_WALLS or C2D_PERIODIC */
+    double restitution;      /* disk-disk, [0, 1] */
+    double wall_restitution; /* the box's walls, [0, 1]; unused when periodic */
+    /* More fields may follow: a zero field always means its documented default. */
+    double collapse_speed;   /* >= 0, finite: impacts approaching slower are elastic [0: none] */
+    unsigned collapse_count; /* impacts of one disk at one instant before the rest are elastic [0: 16] */
+    double collapse_time;    /* >= 0, finite: an impact of a disk less than this after its
+                                previous one is elastic (the TC model) [0: none] */
+    double collapse_length;  /* >= 0, finite: an impact is elastic when the pair has closed
+                                less than this (approach speed x time since either disk's
+                                previous impact) [0: 2^-20 x the smaller radius] */
+    /* Called after each impact, during c2d_world_advance [NULL: none]: it may
+     * read the world (c2d_world_get gives states at the event's time) but
+     * not change it. */
+    void (*on_event)(void *user, const c2d_world_event *event);
+    void *user;              /* passed to on_event */
+} c2d_world_desc;
+
+typedef struct c2d_world_stats {
+    unsigned long long collisions, wall_collisions, events;
+    double time;   /* the world's time */
+    double virial; /* sum over disk-disk impacts of r_ij . dp_j (r_ij from i to j at
+                      contact, nearest image; dp_j the impulse on j) */
+} c2d_world_stats;
+
+/* Bytes of memory a world with this description needs (aligned to 8);
+ * 0 when desc is NULL or invalid (c2d_world_init would refuse it). */
+size_t c2d_world_bytes(const c2d_world_desc *desc);
+
+/* Make an empty world at time 0 in `memory` (bytes of it, aligned to 8,
+ * at least c2d_world_bytes(desc)); *world points into memory.
+ *   returns  C2D_OK, or C2D_INVALID (NULL pointer, invalid desc, a buffer
+ *            too small or misaligned): then neither *world nor memory is
+ *            written. */
+c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c2d_world_desc *desc);
+
+/* Add a disk at the world's time: disk->pos, disk->vel, disk->mass and its
+ * radius; *index (if index is not NULL) receives its index (the number of
+ * disks before it).
+ *   returns  C2D_OK, or C2D_INVALID (NULL world or disk, NaN/Inf, mass or
+ *            radius <= 0, outside the box, overlapping a disk (distance <
+ *            sum of radii, computed in double at the world's time), the
+ *            world full, or periodic and the diameter over a third of the
+ *            box).
+ *   cost     O(disks in 9 cells); O(N) when the disk is the largest yet
+ *            (the grid is rebuilt). */
+c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, size_t *index);
+
+/* Process every event with time <= t, in order, and set the world's time
+ * to t.  Stored disk states stay at their last event (frame independence).
+ *   returns  C2D_OK; C2D_INVALID for NULL, NaN/Inf t, or t before the
+ *            world's time (nothing changes).
+ *   cost     per event O(log N) plus the predictions of its disks. */
+c2d_status c2d_world_advance(c2d_world *world, double t);
+
+/* Disk `index` at the world's time: position (its last event's position
+ * plus velocity x elapsed time; in a periodic box within [0, width) up to
+ * rounding), velocity and mass.  Changes nothing.
+ *   returns  C2D_OK, or C2D_INVALID (NULL, index >= number of disks, a
+ *            removed disk). */
+c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk);
+
+/* The world's counters, time and virial sum (all zero for NULL world). */
+void c2d_world_get_stats(const c2d_world *world, c2d_world_stats *stats);
+
+/* The number of disks added (removed ones included: indices stay; 0 for
+ * NULL). */
+size_t c2d_world_count(const c2d_world *world);
+
+/* Give disk `index` a new velocity at the world's time (a kick, a player's
+ * control): its position there becomes its reference, its next event is
+ * predicted anew, and its partners' predictions become stale.
+ *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed,
+ *            NaN/Inf velocity; nothing changes).
+ *   cost     one prediction (the disks of 9 cells) and a heap update. */
+c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 velocity);
+
+/* Take disk `index` out of the world at its time.  Its index is not reused
+ * (nor its capacity); c2d_world_get and the other calls refuse it after.
+ *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or already removed).
+ *   cost     O(disks in its cell) and a heap update. */
+c2d_status c2d_world_remove(c2d_world *world, size_t index);
+
+#endif /* C2D_NO_DOUBLE */
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* COLLIDE2D_WORLD_H */

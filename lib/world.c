@@ -1,0 +1,749 @@
+/* SPDX-License-Identifier: MIT */
+/* world.c - the event-driven world of disks (include/collide2d_world.h).
+ *
+ * State: each disk keeps (x, y, vx, vy, t) from its last impact (or the
+ * wrap of a periodic box), so its position at any time is x + vx (now - t):
+ * advancing the world moves nothing, and the same events give the same bits
+ * however the caller slices time.
+ *
+ * Events: one pending event per disk (its earliest: an impact with a disk in
+ * the 3 x 3 cells around it, a wall, or leaving its cell), kept in a binary
+ * heap ordered by (time, tie) with tie = kind << 62 | lower index << 31 |
+ * higher index.  An impact event remembers its partner's impact counter
+ * when predicted; if the partner has had an impact since, the event is
+ * stale and the disk predicts again.  Correctness of one event per disk:
+ * whenever a disk's motion changes it predicts against all its neighbours,
+ * so every pair whose next contact is earlier than both disks' own events
+ * is held by one of them.
+ *
+ * Cells are at least one largest diameter (x (1 + 2^-24)) wide, so disks in
+ * contact are always in neighbouring cells; a disk is filed by the cell its
+ * centre is in, and its crossing times are computed from the same cell
+ * boundaries, so a rounding that puts a centre a hair outside its cell
+ * only makes the crossing due at once.  In a periodic box the image of a
+ * neighbour is the one the cell offset says (at least 3 cells a side), the
+ * nearest image at contact.
+ */
+#include "internal.h"
+
+#ifndef C2D_NO_DOUBLE
+
+#ifndef C2D_WORLD_HEADER
+#define C2D_WORLD_HEADER "../include/collide2d_world.h"
+#endif
+#include C2D_WORLD_HEADER
+
+/* The impact and the time of impact are the library's own public calls
+ * (double.c): one copy of their code in any build, the same bits. */
+#define C2D_W_COLLIDE c2d_collide
+#define C2D_W_TOI c2d_time_of_impact
+
+#ifdef __GNUC__
+#define C2D_W_SQRT __builtin_sqrt
+#define C2D_W_FABS __builtin_fabs
+#else
+#define C2D_W_SQRT sqrt
+#define C2D_W_FABS(x) ((x) < 0 ? -(x) : (x))
+#endif
+
+#define C2D_W_NONE 0xFFFFFFFFu
+#define C2D_W_MAX_DISKS 0x7FFFFFFFu /* indices fit 31 bits of the tie key */
+#define C2D_W_INF (DBL_MAX * 2.0)
+#define C2D_W_MARGIN (1.0 + 1.0 / 16777216.0) /* cell width over the largest diameter */
+#define C2D_W_COLLAPSE_COUNT 16u
+#ifndef C2D_W_CELLS_PER_DISK
+#define C2D_W_CELLS_PER_DISK 2u /* the grid's budget: cells per disk of capacity (+ 16) */
+#endif
+#ifndef C2D_W_CELL_SCALE
+#define C2D_W_CELL_SCALE 1.0 /* cell side over the largest diameter, at least */
+#endif
+
+enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_IDLE = 3, C2D_W_GONE = 4 };
+
+/* 128 bytes, the first cache line what a prediction reads of a neighbour. */
+typedef struct c2d_w_disk {
+    double x, y, vx, vy, t; /* the state at time t (its last impact) */
+    double radius;
+    uint64_t count;         /* impacts so far */
+    uint32_t next, cell;    /* the next disk in its cell, its cell */
+    double mass;
+    double last;            /* the time of its last impact */
+    uint64_t pcount;        /* the partner's count when the event was predicted */
+    uint32_t partner;       /* a disk (impact), or a side 0..3: -x, +x, -y, +y */
+    uint32_t slot;          /* its place in the heap */
+    uint32_t kind;          /* C2D_W_PAIR ... C2D_W_IDLE */
+    uint32_t same;          /* impacts at time `last` */
+    uint64_t spare[3];
+} c2d_w_disk;
+typedef char c2d_w_disk_is_128_bytes[sizeof(c2d_w_disk) == 128 ? 1 : -1];
+
+/* A heap entry: a disk's next event, its time and its tie key
+ * (kind << 62 | lower index << 31 | higher index). */
+typedef struct c2d_w_entry {
+    double when;
+    uint64_t tie;
+    uint32_t disk, spare;
+} c2d_w_entry;
+
+struct c2d_world {
+    c2d_w_disk *disk;
+    c2d_w_entry *heap; /* a min-heap on (when, tie) */
+    uint32_t *head;  /* first disk of each cell, C2D_W_NONE for none */
+    size_t capacity, count, budget;
+    size_t mx, my;   /* cells per side (0 until the first disk) */
+    double width, height, restitution, wall_restitution, collapse_speed, collapse_time, collapse_length;
+    double cw, ch;   /* cell sides */
+    double rmax;     /* the largest radius */
+    double now;      /* the world's time (also the current event's, while advancing) */
+    unsigned collapse_count;
+    int periodic;
+    void (*on_event)(void *user, const c2d_world_event *event);
+    void *user;
+    c2d_world_stats stats;
+};
+
+/* ------------------------------------------------------------ layout */
+
+#define C2D_W_ROUND8(n) (((n) + 7u) / 8u * 8u)
+
+static int c2d_w_finite(double x) { return x == x && x - x == 0; }
+
+static int c2d_w_desc_ok(const c2d_world_desc *d)
+{
+    if (d == NULL) return 0;
+    if (d->capacity < 1 || d->capacity > C2D_W_MAX_DISKS) return 0;
+    if (!c2d_w_finite(d->width) || !c2d_w_finite(d->height) || !(d->width > 0) || !(d->height > 0)) return 0;
+    if (d->boundary != C2D_WALLS && d->boundary != C2D_PERIODIC) return 0;
+    if (!(d->restitution >= 0 && d->restitution <= 1)) return 0;
+    if (!(d->wall_restitution >= 0 && d->wall_restitution <= 1)) return 0;
+    if (!(d->collapse_speed >= 0) || !c2d_w_finite(d->collapse_speed)) return 0;
+    if (!(d->collapse_time >= 0) || !c2d_w_finite(d->collapse_time)) return 0;
+    if (!(d->collapse_length >= 0) || !c2d_w_finite(d->collapse_length)) return 0;
+    return 1;
+}
+
+/* Offsets of the disks, the heap and the cells in the memory, and the
+ * total; 0 if the sizes overflow size_t. */
+static size_t c2d_w_layout(size_t capacity, size_t *disks, size_t *heap, size_t *cells)
+{
+    const size_t top = (size_t)-1;
+    size_t budget = C2D_W_CELLS_PER_DISK * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)) + 56, n;
+    if (capacity > (top - 16) / C2D_W_CELLS_PER_DISK) return 0;
+    *disks = off; /* the disks start on a 64-byte boundary within the 56 bytes before */
+    if (capacity > (top - off) / sizeof(c2d_w_disk)) return 0;
+    off += capacity * sizeof(c2d_w_disk);
+    *heap = off;
+    if (capacity > (top - off) / sizeof(c2d_w_entry)) return 0;
+    n = capacity * sizeof(c2d_w_entry);
+    off += n;
+    *cells = off;
+    if (budget > top / 8 || budget * sizeof(uint32_t) > top - off) return 0;
+    return off + budget * sizeof(uint32_t);
+}
+
+size_t c2d_world_bytes(const c2d_world_desc *desc)
+{
+    size_t a, b, c;
+    if (!c2d_w_desc_ok(desc)) return 0;
+    return c2d_w_layout(desc->capacity, &a, &b, &c);
+}
+
+c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c2d_world_desc *desc)
+{
+    size_t od, oh, oc, total;
+    unsigned char *m = (unsigned char *)memory;
+    c2d_world *w;
+    if (world == NULL || memory == NULL || !c2d_w_desc_ok(desc)) return C2D_INVALID;
+    if ((uintptr_t)memory % 8u != 0) return C2D_INVALID;
+    total = c2d_w_layout(desc->capacity, &od, &oh, &oc);
+    if (total == 0 || bytes < total) return C2D_INVALID;
+    w = (c2d_world *)memory;
+    {
+        size_t skew = (size_t)(((uintptr_t)m + od) % 64u), back = skew; /* a multiple of 8, up to 56 */
+        w->disk = (c2d_w_disk *)(void *)(m + od - back);
+        w->heap = (c2d_w_entry *)(void *)(m + oh - back);
+        w->head = (uint32_t *)(void *)(m + oc - back);
+    }
+    w->capacity = desc->capacity;
+    w->count = 0;
+    w->budget = C2D_W_CELLS_PER_DISK * desc->capacity + 16;
+    w->mx = w->my = 0;
+    w->width = desc->width;
+    w->height = desc->height;
+    w->restitution = desc->restitution;
+    w->wall_restitution = desc->wall_restitution;
+    w->collapse_speed = desc->collapse_speed;
+    w->collapse_time = desc->collapse_time;
+    w->collapse_length = desc->collapse_length;
+    w->collapse_count = desc->collapse_count == 0 ? C2D_W_COLLAPSE_COUNT : desc->collapse_count;
+    w->periodic = desc->boundary == C2D_PERIODIC;
+    w->on_event = desc->on_event;
+    w->user = desc->user;
+    w->cw = w->ch = 0;
+    w->rmax = 0;
+    w->now = 0;
+    w->stats.collisions = w->stats.wall_collisions = w->stats.events = 0;
+    w->stats.time = 0;
+    w->stats.virial = 0;
+    *world = w;
+    return C2D_OK;
+}
+
+size_t c2d_world_count(const c2d_world *world)
+{
+    return world == NULL ? 0 : world->count;
+}
+
+/* ------------------------------------------------------------ heap */
+
+/* (when, tie, disk): a total order, so the events come out in the same
+ * order whatever the heap's shape (both disks of a pair may hold the same
+ * event: the lower index's copy first). */
+static int c2d_w_before(const c2d_w_entry *a, const c2d_w_entry *b)
+{
+    return a->when < b->when || (a->when == b->when && (a->tie < b->tie || (a->tie == b->tie && a->disk < b->disk)));
+}
+
+/* Disk i's event is now (when, tie): move its entry to its place in the
+ * 4-ary heap (children of slot s: 4 s + 1 ... 4 s + 4, contiguous). */
+static void c2d_w_heap_fix(c2d_world *w, uint32_t i, double when, uint64_t tie)
+{
+    c2d_w_entry *h = w->heap, e;
+    c2d_w_disk *d = w->disk;
+    size_t s = d[i].slot, n = w->count;
+    e.when = when, e.tie = tie, e.disk = i, e.spare = 0;
+    while (s > 0) {
+        size_t up = (s - 1) / 4;
+        if (!c2d_w_before(&e, &h[up])) break;
+        h[s] = h[up];
+        d[h[s].disk].slot = (uint32_t)s;
+        s = up;
+    }
+    for (;;) {
+        size_t l = 4 * s + 1, best, k, end;
+        if (l >= n) break;
+        best = l;
+        end = l + 4 < n ? l + 4 : n;
+        for (k = l + 1; k < end; k++)
+            if (c2d_w_before(&h[k], &h[best])) best = k;
+        if (!c2d_w_before(&h[best], &e)) break;
+        h[s] = h[best];
+        d[h[s].disk].slot = (uint32_t)s;
+        s = best;
+    }
+    h[s] = e;
+    d[i].slot = (uint32_t)s;
+}
+
+/* ------------------------------------------------------------ cells */
+
+static size_t c2d_w_cell_1d(double x, double side, size_t m)
+{
+    double q;
+    if (!(x >= side)) return 0;
+    q = x / side;
+    return q >= (double)m ? m - 1 : (size_t)q;
+}
+
+static void c2d_w_cell_insert(c2d_world *w, uint32_t i, size_t c)
+{
+    w->disk[i].cell = (uint32_t)c;
+    w->disk[i].next = w->head[c];
+    w->head[c] = i;
+}
+
+static void c2d_w_cell_remove(c2d_world *w, uint32_t i)
+{
+    uint32_t *p = &w->head[w->disk[i].cell];
+    while (*p != i) p = &w->disk[*p].next;
+    *p = w->disk[i].next;
+}
+
+/* ------------------------------------------------------------ prediction */
+
+typedef struct c2d_w_best {
+    double when;
+    uint32_t kind, partner;
+    uint64_t pcount;
+} c2d_w_best;
+
+static void c2d_w_consider(c2d_w_best *b, double when, uint32_t kind, uint32_t partner, uint64_t pcount)
+{
+    if (when < b->when || (when == b->when && (kind < b->kind || (kind == b->kind && partner < b->partner)))) {
+        b->when = when;
+        b->kind = kind;
+        b->partner = partner;
+        b->pcount = pcount;
+    }
+}
+
+/* The image offset of a neighbour's cell coordinate cj from ci: -1 (its
+ * image lies one box to the left), 0 or 1. */
+static double c2d_w_image(size_t ci, size_t cj)
+{
+    if (cj > ci + 1) return -1.0;
+    if (ci > cj + 1) return 1.0;
+    return 0.0;
+}
+
+/* The cells around coordinate c of m along one axis, each once, and the
+ * shift of each one's image (periodic: +-side across the wrap). */
+static size_t c2d_w_neighbours(size_t c, size_t m, int periodic, double side, size_t *cell, double *shift)
+{
+    size_t n = 0;
+    if (c > 0) cell[n] = c - 1, shift[n++] = 0;
+    else if (periodic) cell[n] = m - 1, shift[n++] = -side;
+    cell[n] = c, shift[n++] = 0;
+    if (c + 1 < m) cell[n] = c + 1, shift[n++] = 0;
+    else if (periodic) cell[n] = 0, shift[n++] = side;
+    return n;
+}
+
+/* The first time >= now at which a disk at x (time t) with speed v reaches
+ * `to`. */
+static double c2d_w_reach(double t, double x, double v, double to, double now)
+{
+    double when = t + (to - x) / v;
+    return when < now ? now : when;
+}
+
+static void c2d_w_predict(c2d_world *w, uint32_t i)
+{
+    c2d_w_disk *d = w->disk, *p = &d[i];
+    const double now = w->now, dt = now - p->t;
+    const double px = p->x + p->vx * dt, py = p->y + p->vy * dt;
+    const size_t mx = w->mx, my = w->my, cx = p->cell % mx, cy = p->cell / mx;
+    c2d_w_best best;
+    c2d_body a;
+    size_t k, l, nc, nr, col[3], row[3];
+    uint32_t first[9];
+    double colshift[3], rowshift[3];
+    best.when = C2D_W_INF;
+    best.kind = C2D_W_IDLE;
+    best.partner = 0;
+    best.pcount = 0;
+    /* Walls (the centre at radius from them), then the cell's sides. */
+    if (!w->periodic) {
+        if (p->vx < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, p->radius, now), C2D_W_WALL, 0, 0);
+        if (p->vx > 0)
+            c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, w->width - p->radius, now), C2D_W_WALL, 1, 0);
+        if (p->vy < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, p->radius, now), C2D_W_WALL, 2, 0);
+        if (p->vy > 0)
+            c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, w->height - p->radius, now), C2D_W_WALL, 3, 0);
+    }
+    if (p->vx < 0 && (cx > 0 || w->periodic))
+        c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, (double)cx * w->cw, now), C2D_W_CELL, 0, 0);
+    if (p->vx > 0 && (cx + 1 < mx || w->periodic))
+        c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, now),
+                       C2D_W_CELL, 1, 0);
+    if (p->vy < 0 && (cy > 0 || w->periodic))
+        c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, (double)cy * w->ch, now), C2D_W_CELL, 2, 0);
+    if (p->vy > 0 && (cy + 1 < my || w->periodic))
+        c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, now),
+                       C2D_W_CELL, 3, 0);
+    a.pos.x = px, a.pos.y = py, a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
+    /* The 3 x 3 cells around, each once (fewer against walls), with the
+     * image shift a periodic wrap gives each column and row. */
+    nc = c2d_w_neighbours(cx, mx, w->periodic, w->width, col, colshift);
+    nr = c2d_w_neighbours(cy, my, w->periodic, w->height, row, rowshift);
+    /* The cells' first disks, loaded (and their states fetched) all at
+     * once before any is used: with many disks these are cache misses, and
+     * independent ones overlap. */
+    for (l = 0; l < nr; l++)
+        for (k = 0; k < nc; k++) {
+            uint32_t j = w->head[row[l] * mx + col[k]];
+            first[l * 3 + k] = j;
+#ifdef __GNUC__
+            if (j != C2D_W_NONE) __builtin_prefetch(&d[j]);
+#endif
+        }
+    for (l = 0; l < nr; l++) {
+        const double sy = rowshift[l];
+        for (k = 0; k < nc; k++) {
+            const double sx = colshift[k];
+            uint32_t j = first[l * 3 + k];
+            for (; j != C2D_W_NONE; j = d[j].next) {
+                const c2d_w_disk *q = &d[j];
+                double qdt, dx, dy, dvx, dvy, dot, mag, toi;
+                c2d_body b;
+                if (j == i) continue;
+                qdt = now - q->t;
+                b.pos.x = (q->x + q->vx * qdt) + sx;
+                b.pos.y = (q->y + q->vy * qdt) + sy;
+                /* Filters, each certain despite rounding (the estimates'
+                 * errors are far below 2^-40 of their terms, taken far
+                 * from underflow): receding or no relative motion; a miss
+                 * (the discriminant negative); or no contact before the
+                 * best event so far (the time of impact is at least
+                 * c / (2 |dot|), c = |d|^2 - rs^2 > 0). */
+                dx = b.pos.x - px, dy = b.pos.y - py, dvx = q->vx - p->vx, dvy = q->vy - p->vy;
+                dot = dx * dvx + dy * dvy;
+                mag = C2D_W_FABS(dx * dvx) + C2D_W_FABS(dy * dvy);
+                if (dvx == 0 && dvy == 0) continue;
+                if (mag >= 0x1p-900 && mag <= 0x1p900) {
+                    double rs, dd, err, c;
+                    if (dot > mag * 0x1p-40) continue;
+                    rs = p->radius + q->radius, dd = dx * dx + dy * dy;
+                    err = (dd + rs * rs) * 0x1p-40, c = (dd - rs * rs) - err;
+                    if (c > 0 && c <= 0x1p900 && err >= 0x1p-900) {
+                        const double dh = -dot + mag * 0x1p-40, vv = (dvx * dvx + dvy * dvy) * (1 - 0x1p-40);
+                        if (dh * dh < vv * c * (1 - 0x1p-40)) continue;
+                        if (best.when - now < c / (2 * dh) * (1 - 0x1p-40)) continue;
+                    }
+                }
+                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = p->mass; /* ignored */
+                if (C2D_W_TOI(&a, &b, p->radius + q->radius, &toi) != C2D_OK) continue;
+                c2d_w_consider(&best, now + toi, C2D_W_PAIR, j, q->count);
+            }
+        }
+    }
+    p->kind = best.kind;
+    p->partner = best.partner;
+    p->pcount = best.pcount;
+    if (best.kind == C2D_W_PAIR) {
+        uint64_t lo = i < best.partner ? i : best.partner, hi = i < best.partner ? best.partner : i;
+        c2d_w_heap_fix(w, i, best.when, lo << 31 | hi); /* kind C2D_W_PAIR = 0 */
+    } else {
+        c2d_w_heap_fix(w, i, best.when, (uint64_t)best.kind << 62 | (uint64_t)i << 31 | (uint64_t)i);
+    }
+}
+
+/* ------------------------------------------------------------ grid */
+
+/* Cells for the largest radius r: as many as fit at 2 r (1 + 2^-24) wide,
+ * at most the budget. */
+static void c2d_w_grid_size(const c2d_world *w, double r, size_t *mx, size_t *my)
+{
+    const double s = 2 * r * C2D_W_MARGIN * C2D_W_CELL_SCALE, budget = (double)w->budget;
+    const size_t lo = w->periodic ? 3 : 1;
+    double fx = w->width / s, fy = w->height / s;
+    size_t x, y;
+    if (!(fx < budget)) fx = budget;
+    if (!(fy < budget)) fy = budget;
+    x = fx < 1 ? 1 : (size_t)fx;
+    y = fy < 1 ? 1 : (size_t)fy;
+    if ((double)x * (double)y > budget) {
+        double f = C2D_W_SQRT(budget / ((double)x * (double)y));
+        x = (size_t)((double)x * f), y = (size_t)((double)y * f);
+        if (x < lo) x = lo;
+        if (y < lo) y = lo;
+    }
+    while (x * y > w->budget) {
+        if ((x >= y && x > lo) || y <= lo) x--;
+        else y--;
+    }
+    *mx = x, *my = y;
+}
+
+/* File every disk anew (at its position now) and predict every event. */
+static void c2d_w_rebuild(c2d_world *w)
+{
+    size_t c, i;
+    c2d_w_grid_size(w, w->rmax, &w->mx, &w->my);
+    w->cw = w->width / (double)w->mx;
+    w->ch = w->height / (double)w->my;
+    for (c = 0; c < w->mx * w->my; c++) w->head[c] = C2D_W_NONE;
+    for (i = 0; i < w->count; i++) {
+        c2d_w_disk *p = &w->disk[i];
+        double dt = w->now - p->t;
+        size_t cx, cy;
+        if (p->kind == C2D_W_GONE) continue;
+        cx = c2d_w_cell_1d(p->x + p->vx * dt, w->cw, w->mx), cy = c2d_w_cell_1d(p->y + p->vy * dt, w->ch, w->my);
+        c2d_w_cell_insert(w, (uint32_t)i, cy * w->mx + cx);
+    }
+    for (i = 0; i < w->count; i++)
+        if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, (uint32_t)i);
+}
+
+/* ------------------------------------------------------------ adding */
+
+static int c2d_w_overlaps(const c2d_world *w, double x, double y, double r, const c2d_w_disk *q)
+{
+    double dt = w->now - q->t, dx = (q->x + q->vx * dt) - x, dy = (q->y + q->vy * dt) - y, rs = r + q->radius;
+    if (w->periodic) {
+        if (dx > 0.5 * w->width) dx -= w->width;
+        if (dx < -0.5 * w->width) dx += w->width;
+        if (dy > 0.5 * w->height) dy -= w->height;
+        if (dy < -0.5 * w->height) dy += w->height;
+    }
+    return dx * dx + dy * dy < rs * rs;
+}
+
+c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, size_t *index)
+{
+    c2d_world *w = world;
+    double x, y;
+    int rebuild;
+    uint32_t i;
+    c2d_w_disk *p;
+    if (w == NULL || disk == NULL || w->count >= w->capacity) return C2D_INVALID;
+    x = disk->pos.x, y = disk->pos.y;
+    if (!c2d_w_finite(x) || !c2d_w_finite(y) || !c2d_w_finite(disk->vel.x) || !c2d_w_finite(disk->vel.y) ||
+        !c2d_w_finite(disk->mass) || !(disk->mass > 0) || !c2d_w_finite(radius) || !(radius > 0))
+        return C2D_INVALID;
+    if (w->periodic) {
+        if (!(x >= 0 && x < w->width && y >= 0 && y < w->height)) return C2D_INVALID;
+        if (!(3 * (2 * radius * C2D_W_MARGIN) <= w->width && 3 * (2 * radius * C2D_W_MARGIN) <= w->height))
+            return C2D_INVALID;
+    } else {
+        if (!(x >= radius && x <= w->width - radius && y >= radius && y <= w->height - radius)) return C2D_INVALID;
+    }
+    rebuild = w->count == 0 || radius > w->rmax;
+    if (rebuild) {
+        size_t k;
+        for (k = 0; k < w->count; k++)
+            if (w->disk[k].kind != C2D_W_GONE && c2d_w_overlaps(w, x, y, radius, &w->disk[k])) return C2D_INVALID;
+    } else {
+        const size_t mx = w->mx, my = w->my, cx = c2d_w_cell_1d(x, w->cw, mx), cy = c2d_w_cell_1d(y, w->ch, my);
+        size_t k, l;
+        for (l = 0; l < 3; l++)
+            for (k = 0; k < 3; k++) {
+                size_t nx = cx + mx + k - 1, ny = cy + my + l - 1;
+                uint32_t j;
+                if (!w->periodic && (nx < mx || nx >= 2 * mx || ny < my || ny >= 2 * my)) continue;
+                for (j = w->head[(ny % my) * mx + nx % mx]; j != C2D_W_NONE; j = w->disk[j].next)
+                    if (c2d_w_overlaps(w, x, y, radius, &w->disk[j])) return C2D_INVALID;
+            }
+    }
+    i = (uint32_t)w->count;
+    p = &w->disk[i];
+    p->x = x, p->y = y, p->vx = disk->vel.x, p->vy = disk->vel.y, p->t = w->now;
+    p->mass = disk->mass, p->radius = radius;
+    p->last = -C2D_W_INF;
+    p->spare[0] = p->spare[1] = p->spare[2] = 0;
+    p->count = p->pcount = 0;
+    p->partner = 0;
+    p->kind = C2D_W_IDLE;
+    p->same = 0;
+    p->slot = i;
+    w->heap[i].when = C2D_W_INF;
+    w->heap[i].tie = (uint64_t)C2D_W_IDLE << 62;
+    w->heap[i].disk = i;
+    w->heap[i].spare = 0;
+    w->count++;
+    if (index != NULL) *index = i;
+    if (rebuild) {
+        w->rmax = radius;
+        c2d_w_rebuild(w);
+    } else {
+        c2d_w_cell_insert(w, i, c2d_w_cell_1d(y, w->ch, w->my) * w->mx + c2d_w_cell_1d(x, w->cw, w->mx));
+        c2d_w_predict(w, i);
+    }
+    return C2D_OK;
+}
+
+/* ------------------------------------------------------------ events */
+
+static void c2d_w_impact_clock(c2d_w_disk *p, double now)
+{
+    if (p->last == now) {
+        p->same++;
+    } else {
+        p->last = now;
+        p->same = 1;
+    }
+    p->count++;
+}
+
+/* The impact event of disk `owner`: stale, or resolved with the lower
+ * index as c2d_collide's a (so either disk's copy of the event gives the
+ * same bits). */
+static void c2d_w_pair(c2d_world *w, uint32_t owner)
+{
+    c2d_w_disk *d = w->disk;
+    const uint32_t partner = d[owner].partner;
+    const uint32_t i = owner < partner ? owner : partner, j = owner < partner ? partner : owner;
+    c2d_w_disk *p = &d[i], *q = &d[j];
+    const double now = w->now, dp = now - p->t, dq = now - q->t;
+    double qx, qy, sx = 0, sy = 0, e = w->restitution;
+    c2d_body a, b;
+    if (d[partner].count != d[owner].pcount) { /* stale */
+        c2d_w_predict(w, owner);
+        return;
+    }
+    if (w->periodic) {
+        sx = c2d_w_image(p->cell % w->mx, q->cell % w->mx) * w->width;
+        sy = c2d_w_image(p->cell / w->mx, q->cell / w->mx) * w->height;
+    }
+    qx = q->x + q->vx * dq, qy = q->y + q->vy * dq;
+    a.pos.x = p->x + p->vx * dp, a.pos.y = p->y + p->vy * dp, a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
+    b.pos.x = qx + sx, b.pos.y = qy + sy, b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
+    if (e < 1) {
+        /* The collapse rule (collide2d_world.h): elastic after collapse_count
+         * impacts at this instant, within collapse_time of the last impact,
+         * below collapse_speed, or when the pair has closed less than
+         * collapse_length since either disk's last impact. */
+        const double since = now - (p->last > q->last ? p->last : q->last);
+        const double nx = b.pos.x - a.pos.x, ny = b.pos.y - a.pos.y;
+        const double vn = -((b.vel.x - a.vel.x) * nx + (b.vel.y - a.vel.y) * ny), nn = C2D_W_SQRT(nx * nx + ny * ny);
+        const double length = w->collapse_length > 0 ? w->collapse_length
+                                                      : 0x1p-20 * (p->radius < q->radius ? p->radius : q->radius);
+        if ((p->last == now && p->same >= w->collapse_count) || (q->last == now && q->same >= w->collapse_count) ||
+            since < w->collapse_time || vn < w->collapse_speed * nn || vn * since < length * nn)
+            e = 1;
+    }
+    if (C2D_W_COLLIDE(&a, &b, e) == C2D_OK) {
+        const double vqx = q->vx, vqy = q->vy;
+        w->stats.virial += ((b.pos.x - a.pos.x) * (b.vel.x - vqx) + (b.pos.y - a.pos.y) * (b.vel.y - vqy)) * q->mass;
+        p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
+        q->x = qx, q->y = qy, q->vx = b.vel.x, q->vy = b.vel.y, q->t = now;
+        c2d_w_impact_clock(p, now);
+        c2d_w_impact_clock(q, now);
+        w->stats.collisions++;
+        if (w->on_event != NULL) {
+            c2d_world_event ev;
+            ev.kind = C2D_WORLD_IMPACT, ev.time = now, ev.a = i, ev.b = j;
+            ev.impulse.x = (b.vel.x - vqx) * q->mass, ev.impulse.y = (b.vel.y - vqy) * q->mass;
+            w->on_event(w->user, &ev);
+        }
+        c2d_w_predict(w, i);
+        c2d_w_predict(w, j);
+    } else {
+        c2d_w_predict(w, owner);
+    }
+}
+
+static void c2d_w_wall(c2d_world *w, uint32_t i)
+{
+    c2d_w_disk *p = &w->disk[i];
+    const double now = w->now, dt = now - p->t, since = now - p->last;
+    double x = p->x + p->vx * dt, y = p->y + p->vy * dt, e = w->wall_restitution, vn;
+    const double vx0 = p->vx, vy0 = p->vy;
+    vn = p->partner < 2 ? p->vx : p->vy;
+    vn = vn < 0 ? -vn : vn;
+    if (e < 1) { /* the collapse rule, as for a pair (the wall's "radius" 0) */
+        const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
+        if ((p->last == now && p->same >= w->collapse_count) || since < w->collapse_time ||
+            vn < w->collapse_speed || vn * since < length)
+            e = 1;
+    }
+    switch (p->partner) {
+    case 0: x = p->radius, p->vx = -e * p->vx; break;
+    case 1: x = w->width - p->radius, p->vx = -e * p->vx; break;
+    case 2: y = p->radius, p->vy = -e * p->vy; break;
+    default: y = w->height - p->radius, p->vy = -e * p->vy; break;
+    }
+    p->x = x, p->y = y, p->t = now;
+    c2d_w_impact_clock(p, now);
+    w->stats.wall_collisions++;
+    if (w->on_event != NULL) {
+        c2d_world_event ev;
+        ev.kind = C2D_WORLD_WALL, ev.time = now, ev.a = i, ev.b = p->partner;
+        ev.impulse.x = (p->vx - vx0) * p->mass, ev.impulse.y = (p->vy - vy0) * p->mass;
+        w->on_event(w->user, &ev);
+    }
+    c2d_w_predict(w, i);
+}
+
+static void c2d_w_cross(c2d_world *w, uint32_t i)
+{
+    c2d_w_disk *p = &w->disk[i];
+    size_t cx = p->cell % w->mx, cy = p->cell / w->mx;
+    c2d_w_cell_remove(w, i);
+    switch (p->partner) {
+    case 0:
+        if (cx == 0) cx = w->mx, p->x += w->width;
+        cx--;
+        break;
+    case 1:
+        cx++;
+        if (cx == w->mx) cx = 0, p->x -= w->width;
+        break;
+    case 2:
+        if (cy == 0) cy = w->my, p->y += w->height;
+        cy--;
+        break;
+    default:
+        cy++;
+        if (cy == w->my) cy = 0, p->y -= w->height;
+        break;
+    }
+    c2d_w_cell_insert(w, i, cy * w->mx + cx);
+    c2d_w_predict(w, i);
+}
+
+c2d_status c2d_world_advance(c2d_world *world, double t)
+{
+    c2d_world *w = world;
+    if (w == NULL || !c2d_w_finite(t) || !(t >= w->now)) return C2D_INVALID;
+    while (w->count > 0) {
+        uint32_t i = w->heap[0].disk;
+        c2d_w_disk *p = &w->disk[i];
+        if (!(w->heap[0].when <= t)) break;
+        w->now = w->heap[0].when;
+        w->stats.events++;
+        switch (p->kind) {
+        case C2D_W_PAIR: c2d_w_pair(w, i); break;
+        case C2D_W_WALL: c2d_w_wall(w, i); break;
+        default: c2d_w_cross(w, i); break;
+        }
+    }
+    w->now = t;
+    w->stats.time = t;
+    return C2D_OK;
+}
+
+c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk)
+{
+    const c2d_w_disk *p;
+    double dt, x, y;
+    if (world == NULL || disk == NULL || index >= world->count) return C2D_INVALID;
+    p = &world->disk[index];
+    if (p->kind == C2D_W_GONE) return C2D_INVALID;
+    dt = world->now - p->t;
+    x = p->x + p->vx * dt, y = p->y + p->vy * dt;
+    if (world->periodic) {
+        if (x < 0) x += world->width;
+        if (x >= world->width) x -= world->width;
+        if (y < 0) y += world->height;
+        if (y >= world->height) y -= world->height;
+    }
+    disk->pos.x = x, disk->pos.y = y;
+    disk->vel.x = p->vx, disk->vel.y = p->vy;
+    disk->mass = p->mass;
+    return C2D_OK;
+}
+
+c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 velocity)
+{
+    c2d_w_disk *p;
+    double dt;
+    if (world == NULL || index >= world->count || !c2d_w_finite(velocity.x) || !c2d_w_finite(velocity.y))
+        return C2D_INVALID;
+    p = &world->disk[index];
+    if (p->kind == C2D_W_GONE) return C2D_INVALID;
+    dt = world->now - p->t;
+    p->x = p->x + p->vx * dt, p->y = p->y + p->vy * dt, p->t = world->now;
+    p->vx = velocity.x, p->vy = velocity.y;
+    p->count++; /* the partners' predictions with it are stale */
+    c2d_w_predict(world, (uint32_t)index);
+    return C2D_OK;
+}
+
+c2d_status c2d_world_remove(c2d_world *world, size_t index)
+{
+    c2d_w_disk *p;
+    if (world == NULL || index >= world->count) return C2D_INVALID;
+    p = &world->disk[index];
+    if (p->kind == C2D_W_GONE) return C2D_INVALID;
+    c2d_w_cell_remove(world, (uint32_t)index);
+    p->cell = C2D_W_NONE, p->next = C2D_W_NONE;
+    p->kind = C2D_W_GONE;
+    p->count++;
+    c2d_w_heap_fix(world, (uint32_t)index, C2D_W_INF, (uint64_t)C2D_W_IDLE << 62 | (uint64_t)index);
+    return C2D_OK;
+}
+
+void c2d_world_get_stats(const c2d_world *world, c2d_world_stats *stats)
+{
+    if (stats == NULL) return;
+    if (world == NULL) {
+        stats->collisions = stats->wall_collisions = stats->events = 0;
+        stats->time = 0;
+        stats->virial = 0;
+        return;
+    }
+    *stats = world->stats;
+}
+
+#endif /* C2D_NO_DOUBLE */

@@ -1,0 +1,711 @@
+/* SPDX-License-Identifier: MIT */
+/* The event-driven world (collide2d_world.h): exact dynamics as physical
+ * properties (energy, momentum, no overlap, the pressure of a hard-disk
+ * fluid), frame independence and determinism bit for bit, Newton's cradle,
+ * inelastic collapse, and every refusal leaving the memory untouched. */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "check.h"
+#include "collide2d_world.h"
+
+#define PI 3.14159265358979323846
+
+static uint64_t rng_state;
+static double uniform(void) /* splitmix64 -> [-1, 1) */
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return (double)(z >> 11) * 0x1p-52 - 1.0;
+}
+
+static c2d_world_desc box_desc(size_t capacity, double width, double height, c2d_boundary boundary, double e,
+                               double ew)
+{
+    c2d_world_desc d;
+    memset(&d, 0, sizeof d);
+    d.capacity = capacity, d.width = width, d.height = height, d.boundary = boundary;
+    d.restitution = e, d.wall_restitution = ew;
+    return d;
+}
+
+static c2d_world *new_world(const c2d_world_desc *d, void **mem)
+{
+    size_t bytes = c2d_world_bytes(d);
+    c2d_world *w = NULL;
+    assert_true(bytes > 0);
+    *mem = malloc(bytes);
+    assert_non_null(*mem);
+    assert_status(c2d_world_init(&w, *mem, bytes, d), C2D_OK);
+    return w;
+}
+
+/* A gas: side x side disks on a lattice filling the box, random velocities
+ * (zero total momentum), radii and masses varied when `mixed`. */
+static void fill_gas(c2d_world *w, const c2d_world_desc *d, size_t side, double radius, int mixed, uint64_t seed)
+{
+    size_t i, n = side * side;
+    double px = 0, py = 0;
+    c2d_body *b = malloc(n * sizeof *b);
+    double *r = malloc(n * sizeof *r);
+    rng_state = seed;
+    for (i = 0; i < n; i++) {
+        b[i].pos.x = ((double)(i % side) + 0.5) * d->width / (double)side;
+        b[i].pos.y = ((double)(i / side) + 0.5) * d->height / (double)side;
+        b[i].vel.x = uniform(), b[i].vel.y = uniform();
+        b[i].mass = mixed ? 1 + 0.9 * uniform() : 1;
+        r[i] = mixed ? radius * (0.75 + 0.25 * uniform()) : radius;
+        px += b[i].mass * b[i].vel.x, py += b[i].mass * b[i].vel.y;
+    }
+    for (i = 0; i < n; i++) {
+        size_t k;
+        b[i].vel.x -= px / ((double)n * b[i].mass), b[i].vel.y -= py / ((double)n * b[i].mass);
+        assert_status(c2d_world_add(w, &b[i], r[i], &k), C2D_OK);
+        assert_int_equal(k, i);
+    }
+    free(b);
+    free(r);
+}
+
+static double kinetic(const c2d_world *w)
+{
+    size_t i, n = c2d_world_count(w);
+    double e = 0;
+    for (i = 0; i < n; i++) {
+        c2d_body b;
+        assert_status(c2d_world_get(w, i, &b), C2D_OK);
+        e += 0.5 * b.mass * (b.vel.x * b.vel.x + b.vel.y * b.vel.y);
+    }
+    return e;
+}
+
+static void momentum(const c2d_world *w, double *px, double *py, double *scale)
+{
+    size_t i, n = c2d_world_count(w);
+    *px = *py = *scale = 0;
+    for (i = 0; i < n; i++) {
+        c2d_body b;
+        assert_status(c2d_world_get(w, i, &b), C2D_OK);
+        *px += b.mass * b.vel.x, *py += b.mass * b.vel.y;
+        *scale += b.mass * (fabs(b.vel.x) + fabs(b.vel.y));
+    }
+}
+
+static unsigned long long collisions(const c2d_world *w)
+{
+    c2d_world_stats s;
+    c2d_world_get_stats(w, &s);
+    return s.collisions;
+}
+
+/* ------------------------------------------------------------ the basics */
+
+static void test_two_disks_meet_and_exchange_velocities(void **state)
+{
+    c2d_world_desc d = box_desc(2, 10, 2, C2D_WALLS, 1, 1);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    c2d_body a = {{1, 1}, {1, 0}, 1}, b = {{3, 1}, {0, 0}, 1};
+    c2d_world_stats s;
+    (void)state;
+    assert_status(c2d_world_add(w, &a, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_advance(w, 2.0), C2D_OK);
+    assert_status(c2d_world_get(w, 0, &a), C2D_OK);
+    assert_status(c2d_world_get(w, 1, &b), C2D_OK);
+    assert_true(a.vel.x == 0 && a.vel.y == 0 && a.pos.x == 2 && a.pos.y == 1);
+    assert_true(b.vel.x == 1 && b.vel.y == 0 && b.pos.x == 4 && b.pos.y == 1);
+    c2d_world_get_stats(w, &s);
+    assert_true(s.collisions == 1 && s.wall_collisions == 0 && s.time == 2.0);
+    assert_true(s.virial == 1.0); /* r_ij = (1, 0), dp_j = (1, 0) */
+    free(mem);
+}
+
+static void test_a_wall_negates_the_normal_velocity_times_its_restitution(void **state)
+{
+    c2d_world_desc d = box_desc(1, 4, 4, C2D_WALLS, 1, 0.5);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    c2d_body a = {{2, 2}, {1, 0.25}, 3};
+    c2d_world_stats s;
+    (void)state;
+    assert_status(c2d_world_add(w, &a, 1, NULL), C2D_OK);
+    assert_status(c2d_world_advance(w, 2), C2D_OK); /* the wall at x = 3 (centre) at t = 1 */
+    assert_status(c2d_world_get(w, 0, &a), C2D_OK);
+    assert_true(a.vel.x == -0.5 && a.vel.y == 0.25 && a.pos.x == 2.5 && a.pos.y == 2.5 && a.mass == 3);
+    c2d_world_get_stats(w, &s);
+    assert_true(s.wall_collisions == 1 && s.collisions == 0);
+    free(mem);
+}
+
+/* Newton's cradle: a striker against a row of touching equal disks, e = 1:
+ * one impact per contact (N - 1 for N disks), and only the last disk moves,
+ * at the striker's speed exactly. */
+static void test_newtons_cradle_passes_the_striker_speed_to_the_last_disk(void **state)
+{
+    enum { N = 7 };
+    c2d_world_desc d = box_desc(N, 40, 4, C2D_WALLS, 1, 1);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    c2d_body b;
+    size_t i;
+    (void)state;
+    b.pos.x = 2, b.pos.y = 2, b.vel.x = 0.75, b.vel.y = 0, b.mass = 1;
+    assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
+    for (i = 1; i < N; i++) {
+        b.pos.x = 10 + (double)i, b.vel.x = 0;
+        assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
+    }
+    assert_status(c2d_world_advance(w, 12), C2D_OK); /* contact at t = 8: 7.5 / 0.75 - ... */
+    assert_int_equal(collisions(w), N - 1);
+    for (i = 0; i < N; i++) {
+        assert_status(c2d_world_get(w, i, &b), C2D_OK);
+        assert_true(b.vel.y == 0);
+        assert_true(b.vel.x == (i == N - 1 ? 0.75 : 0));
+    }
+    free(mem);
+}
+
+/* ------------------------------------------------------------ physics */
+
+static void test_an_elastic_gas_keeps_its_energy_over_a_hundred_thousand_impacts(void **state)
+{
+    c2d_world_desc d = box_desc(400, 30, 30, C2D_WALLS, 1, 1);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    double e0, e1, t = 0;
+    (void)state;
+    fill_gas(w, &d, 20, 0.5, 1, 3);
+    e0 = kinetic(w);
+    while (collisions(w) < 100000) assert_status(c2d_world_advance(w, t += 1), C2D_OK);
+    e1 = kinetic(w);
+    printf("test_world: elastic gas, %llu impacts: relative energy change %.2e\n", collisions(w), e1 / e0 - 1);
+    assert_true(fabs(e1 / e0 - 1) < 1e-12);
+    free(mem);
+}
+
+static void test_a_periodic_gas_keeps_its_momentum(void **state)
+{
+    c2d_world_desc d = box_desc(400, 30, 30, C2D_PERIODIC, 1, 0);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    double px0, py0, s0, px1, py1, s1, t = 0;
+    (void)state;
+    fill_gas(w, &d, 20, 0.5, 1, 4);
+    momentum(w, &px0, &py0, &s0);
+    while (collisions(w) < 50000) assert_status(c2d_world_advance(w, t += 1), C2D_OK);
+    momentum(w, &px1, &py1, &s1);
+    printf("test_world: periodic gas, %llu impacts: momentum change (%.2e, %.2e) of %.3g\n", collisions(w),
+           px1 - px0, py1 - py0, s0);
+    assert_true(fabs(px1 - px0) < 1e-12 * s0 && fabs(py1 - py0) < 1e-12 * s0);
+    free(mem);
+}
+
+static void check_no_overlap(const c2d_world *w, const c2d_world_desc *d, const double *radius, double *worst)
+{
+    size_t i, j, n = c2d_world_count(w);
+    for (i = 0; i < n; i++) {
+        c2d_body a;
+        assert_status(c2d_world_get(w, i, &a), C2D_OK);
+        if (d->boundary == C2D_WALLS) {
+            assert_true(a.pos.x >= radius[i] * (1 - 1e-12) && a.pos.x <= d->width - radius[i] * (1 - 1e-12));
+            assert_true(a.pos.y >= radius[i] * (1 - 1e-12) && a.pos.y <= d->height - radius[i] * (1 - 1e-12));
+        } else {
+            assert_true(a.pos.x >= 0 && a.pos.x < d->width && a.pos.y >= 0 && a.pos.y < d->height);
+        }
+        for (j = i + 1; j < n; j++) {
+            c2d_body b;
+            double dx, dy, gap;
+            assert_status(c2d_world_get(w, j, &b), C2D_OK);
+            dx = b.pos.x - a.pos.x, dy = b.pos.y - a.pos.y;
+            if (d->boundary == C2D_PERIODIC) {
+                dx -= d->width * round(dx / d->width);
+                dy -= d->height * round(dy / d->height);
+            }
+            gap = sqrt(dx * dx + dy * dy) / (radius[i] + radius[j]) - 1;
+            if (gap < *worst) *worst = gap;
+            assert_true(gap > -1e-9);
+        }
+    }
+}
+
+static void test_disks_never_overlap_nor_leave_the_box(void **state)
+{
+    int periodic;
+    (void)state;
+    for (periodic = 0; periodic <= 1; periodic++) {
+        c2d_world_desc d = box_desc(64, 14, 11, periodic ? C2D_PERIODIC : C2D_WALLS, periodic ? 1 : 0.97, 1);
+        void *mem;
+        c2d_world *w = new_world(&d, &mem);
+        double radius[64], worst = INFINITY;
+        size_t i, k;
+        rng_state = 9 + (uint64_t)periodic;
+        for (i = 0; i < 64; i++) { /* radii growing and shrinking: the grid is rebuilt on the way */
+            c2d_body b = {{((double)(i % 8) + 0.5) * 14 / 8, ((double)(i / 8) + 0.5) * 11 / 8}, {0, 0}, 1};
+            b.vel.x = 3 * uniform(), b.vel.y = 3 * uniform(), b.mass = 1 + 0.5 * uniform();
+            radius[i] = 0.3 + 0.3 * (double)(i % 5) / 4;
+            assert_status(c2d_world_add(w, &b, radius[i], NULL), C2D_OK);
+        }
+        for (k = 1; k <= 400; k++) {
+            assert_status(c2d_world_advance(w, 0.037 * (double)k), C2D_OK);
+            check_no_overlap(w, &d, radius, &worst);
+        }
+        printf("test_world: %s, %llu impacts: closest gap %.2e of the radius sum\n", periodic ? "periodic" : "walls",
+               collisions(w), worst);
+        assert_true(collisions(w) > 1000);
+        free(mem);
+    }
+}
+
+/* The pressure of the hard-disk fluid at area fraction 0.3 from the
+ * collision virial.  In two dimensions the virial theorem gives
+ *     P A = N k T + (1 / (2 t)) sum over impacts of r_ij . dp_j
+ * (r_ij from i to j at contact, dp_j the impulse on j: each term positive),
+ * and N k T is the kinetic energy E, so Z = P A / (N k T) = 1 + V / (2 t E).
+ * Henderson (1975): Z = (1 + eta^2 / 8) / (1 - eta)^2, within 0.1 % of the
+ * virial series at 0.3.  Tolerance: 4 standard errors of 10 block means,
+ * plus 0.2 % for the equation and N = 400's finite size. */
+static void test_the_virial_pressure_at_eta_0_3_matches_henderson(void **state)
+{
+    enum { SIDE = 20, N = SIDE * SIDE, BLOCKS = 10 };
+    const double eta = 0.3, box = sqrt(N * PI / (4 * eta));
+    c2d_world_desc d = box_desc(N, box, box, C2D_PERIODIC, 1, 0);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    double z[BLOCKS], mean = 0, var = 0, err, ref = (1 + eta * eta / 8) / ((1 - eta) * (1 - eta)), e, t = 0;
+    c2d_world_stats s0, s1;
+    int k;
+    (void)state;
+    fill_gas(w, &d, SIDE, 0.5, 0, 5);
+    e = kinetic(w);
+    while (collisions(w) < 50ull * N) assert_status(c2d_world_advance(w, t += 1), C2D_OK);
+    for (k = 0; k < BLOCKS; k++) {
+        c2d_world_get_stats(w, &s0);
+        while (collisions(w) < s0.collisions + 30ull * N) assert_status(c2d_world_advance(w, t += 1), C2D_OK);
+        c2d_world_get_stats(w, &s1);
+        z[k] = 1 + (s1.virial - s0.virial) / (2 * (s1.time - s0.time) * e);
+        mean += z[k] / BLOCKS;
+    }
+    for (k = 0; k < BLOCKS; k++) var += (z[k] - mean) * (z[k] - mean) / (BLOCKS - 1);
+    err = sqrt(var / BLOCKS);
+    printf("test_world: eta 0.3, N %d: Z = %.4f +- %.4f, Henderson %.4f (%+.2f%%, %+.1f error bars); energy drift %.1e\n",
+           N, mean, err, ref, 100 * (mean / ref - 1), (mean - ref) / err, kinetic(w) / e - 1);
+    assert_true(fabs(mean - ref) <= 4 * err + 0.002 * ref);
+    free(mem);
+}
+
+/* Inelastic collapse: a dense gas at e = 0.2 between walls of e = 0.5 cools
+ * towards clusters in which impacts would come ever faster; the collapse
+ * rule (by default: elastic when the pair closed less than 2^-20 of the
+ * smaller radius since either disk's last impact, or after 16 impacts of a
+ * disk at one instant; optionally within a time or below a speed) keeps
+ * the number of events modest, and energy never grows. */
+static void test_inelastic_collapse_never_hangs_and_energy_only_falls(void **state)
+{
+    int rule;
+    (void)state;
+    for (rule = 0; rule <= 2; rule++) {
+        c2d_world_desc d = box_desc(100, 12, 12, C2D_WALLS, 0.2, 0.5);
+        void *mem;
+        c2d_world *w;
+        double e0, prev, t;
+        c2d_world_stats s;
+        d.collapse_time = rule == 1 ? 1e-3 : 0;
+        d.collapse_speed = rule == 2 ? 1e-2 : 0;
+        w = new_world(&d, &mem);
+        fill_gas(w, &d, 10, 0.55, 0, 6);
+        e0 = prev = kinetic(w);
+        for (t = 1; t <= 200; t += 1) {
+            double e;
+            assert_status(c2d_world_advance(w, t), C2D_OK);
+            e = kinetic(w);
+            assert_true(e <= prev * (1 + 1e-12));
+            prev = e;
+        }
+        c2d_world_get_stats(w, &s);
+        printf("test_world: e = 0.2, collapse rule %s: %llu impacts, %llu events by t = 200, energy left %.3e\n",
+               rule == 0 ? "default (length 2^-20 r)" : rule == 1 ? "time 1e-3" : "speed 1e-2", s.collisions, s.events,
+               prev / e0);
+        assert_true(s.events < 1000000);
+        free(mem);
+    }
+}
+
+/* A light disk between a wall and a heavy one driving it towards the wall,
+ * e = 0.5 everywhere: without a rule, infinitely many impacts in finite
+ * time as the heavy disk comes to rest on the light one. */
+static void test_a_disk_pinned_against_a_wall_by_a_heavy_one_does_not_hang(void **state)
+{
+    c2d_world_desc d = box_desc(2, 20, 4, C2D_WALLS, 0.5, 0.5);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    c2d_body light = {{3, 2}, {0, 0}, 1}, heavy = {{8, 2}, {-1, 0}, 100};
+    c2d_world_stats s;
+    (void)state;
+    assert_status(c2d_world_add(w, &light, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &heavy, 1, NULL), C2D_OK);
+    assert_status(c2d_world_advance(w, 100), C2D_OK);
+    c2d_world_get_stats(w, &s);
+    assert_status(c2d_world_get(w, 1, &heavy), C2D_OK);
+    printf("test_world: pinned disk: %llu impacts, %llu at the wall, heavy disk at x = %.6f moving %.3e\n",
+           s.collisions, s.wall_collisions, heavy.pos.x, heavy.vel.x);
+    assert_true(s.events < 100000);
+    assert_true(heavy.pos.x >= 3 - 1e-9);
+    free(mem);
+}
+
+/* ------------------------------------------------------------ bits */
+
+static void run_sliced(const c2d_world_desc *d, int slices, c2d_body *out, c2d_world_stats *stats, size_t n)
+{
+    void *mem;
+    c2d_world *w = new_world(d, &mem);
+    size_t i;
+    fill_gas(w, d, 12, 0.45, 1, 7);
+    if (slices == 1) {
+        assert_status(c2d_world_advance(w, 40.0), C2D_OK);
+    } else {
+        double t = 0;
+        rng_state = 99;
+        while (t < 40.0) {
+            c2d_body probe;
+            t += 0.3 * (1 + uniform()); /* uneven, some tiny */
+            if (t > 40.0) t = 40.0;
+            assert_status(c2d_world_advance(w, t), C2D_OK);
+            assert_status(c2d_world_advance(w, t), C2D_OK); /* again at the same time: nothing */
+            assert_status(c2d_world_get(w, (size_t)(t * 7) % n, &probe), C2D_OK);
+        }
+    }
+    for (i = 0; i < n; i++) assert_status(c2d_world_get(w, i, &out[i]), C2D_OK);
+    c2d_world_get_stats(w, stats);
+    free(mem);
+}
+
+static void test_one_advance_and_many_uneven_ones_give_the_same_bits(void **state)
+{
+    int periodic;
+    (void)state;
+    for (periodic = 0; periodic <= 1; periodic++) {
+        c2d_world_desc d = box_desc(144, 16, 16, periodic ? C2D_PERIODIC : C2D_WALLS, periodic ? 1 : 0.85, 0.9);
+        c2d_body one[144], many[144], again[144];
+        c2d_world_stats s1, sm, sa;
+        run_sliced(&d, 1, one, &s1, 144);
+        run_sliced(&d, 2, many, &sm, 144);
+        run_sliced(&d, 1, again, &sa, 144);
+        assert_true(s1.collisions > 1000);
+        assert_memory_equal(one, many, sizeof one);
+        assert_memory_equal(&s1, &sm, sizeof s1);
+        assert_memory_equal(one, again, sizeof one); /* deterministic */
+        assert_memory_equal(&s1, &sa, sizeof s1);
+    }
+}
+
+static void test_reading_a_world_changes_none_of_its_bytes(void **state)
+{
+    c2d_world_desc d = box_desc(100, 12, 12, C2D_PERIODIC, 1, 0);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    size_t bytes = c2d_world_bytes(&d), i;
+    unsigned char *copy = malloc(bytes);
+    c2d_world_stats s;
+    (void)state;
+    fill_gas(w, &d, 10, 0.5, 1, 8);
+    assert_status(c2d_world_advance(w, 3.3), C2D_OK);
+    memcpy(copy, mem, bytes);
+    for (i = 0; i < 100; i++) {
+        c2d_body b;
+        assert_status(c2d_world_get(w, i, &b), C2D_OK);
+    }
+    c2d_world_get_stats(w, &s);
+    assert_memory_equal(copy, mem, bytes);
+    free(copy);
+    free(mem);
+}
+
+
+/* ------------------------------------------------------------ control */
+
+typedef struct event_log {
+    int impacts, walls;
+    double last_time;
+    c2d_world_event first;
+} event_log;
+
+static void log_event(void *user, const c2d_world_event *e)
+{
+    event_log *log = user;
+    if (log->impacts + log->walls == 0) log->first = *e;
+    if (e->kind == C2D_WORLD_IMPACT) log->impacts++;
+    else log->walls++;
+    assert_true(e->time >= log->last_time);
+    log->last_time = e->time;
+}
+
+static void test_the_event_callback_sees_every_impact_with_its_impulse(void **state)
+{
+    c2d_world_desc d = box_desc(100, 12, 12, C2D_WALLS, 0.9, 0.8);
+    event_log log;
+    void *mem;
+    c2d_world *w;
+    c2d_world_stats s;
+    (void)state;
+    memset(&log, 0, sizeof log);
+    d.on_event = log_event, d.user = &log;
+    w = new_world(&d, &mem);
+    fill_gas(w, &d, 10, 0.5, 1, 12);
+    assert_status(c2d_world_advance(w, 20), C2D_OK);
+    c2d_world_get_stats(w, &s);
+    assert_true(log.impacts > 0 && log.walls > 0);
+    assert_int_equal(log.impacts, s.collisions);
+    assert_int_equal(log.walls, s.wall_collisions);
+    free(mem);
+    /* Two disks: the impulse on b is b's momentum change. */
+    {
+        c2d_world_desc d2 = box_desc(2, 10, 4, C2D_WALLS, 0.5, 1);
+        c2d_body a = {{1, 2}, {2, 0.5}, 1}, b = {{3, 2.5}, {0, 0}, 3};
+        memset(&log, 0, sizeof log);
+        d2.on_event = log_event, d2.user = &log;
+        w = new_world(&d2, &mem);
+        assert_status(c2d_world_add(w, &a, 0.5, NULL), C2D_OK);
+        assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
+        assert_status(c2d_world_advance(w, 1.2), C2D_OK);
+        assert_int_equal(log.impacts, 1);
+        assert_status(c2d_world_get(w, 1, &b), C2D_OK);
+        assert_true(log.first.kind == C2D_WORLD_IMPACT && log.first.a == 0 && log.first.b == 1);
+        assert_true(log.first.impulse.x == b.vel.x * 3 && log.first.impulse.y == b.vel.y * 3);
+        free(mem);
+    }
+}
+
+static void kick_run(const c2d_world_desc *d, int sliced, c2d_body *out, size_t n)
+{
+    void *mem;
+    c2d_world *w = new_world(d, &mem);
+    const double cuts[] = {0.7, 2.9, 5.0, 5.0, 6.13, 11.0, 14.9, 20.0};
+    size_t i, k;
+    c2d_vec2 v = {4, -3};
+    fill_gas(w, d, 8, 0.4, 1, 13);
+    for (k = 0; k < sizeof cuts / sizeof cuts[0]; k++) {
+        if (sliced || cuts[k] == 5.0 || cuts[k] == 20.0) assert_status(c2d_world_advance(w, cuts[k]), C2D_OK);
+        if (cuts[k] == 5.0 && (k == 2)) {
+            assert_status(c2d_world_set_velocity(w, 17, v), C2D_OK);
+            assert_status(c2d_world_remove(w, 40), C2D_OK);
+        }
+    }
+    for (i = 0; i < n; i++) {
+        if (i == 40) {
+            assert_status(c2d_world_get(w, i, &out[i]), C2D_INVALID);
+            memset(&out[i], 0, sizeof out[i]);
+        } else {
+            assert_status(c2d_world_get(w, i, &out[i]), C2D_OK);
+        }
+    }
+    free(mem);
+}
+
+static void test_kicks_and_removals_keep_frame_independence(void **state)
+{
+    c2d_world_desc d = box_desc(64, 10, 10, C2D_PERIODIC, 1, 0);
+    c2d_body one[64], many[64];
+    (void)state;
+    kick_run(&d, 0, one, 64);
+    kick_run(&d, 1, many, 64);
+    assert_memory_equal(one, many, sizeof one);
+}
+
+static void test_a_kicked_disk_moves_and_a_removed_one_is_passed_through(void **state)
+{
+    c2d_world_desc d = box_desc(3, 20, 4, C2D_WALLS, 1, 1);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    c2d_body a = {{2, 2}, {0, 0}, 1}, b = {{6, 2}, {0, 0}, 1}, c = {{10, 2}, {0, 0}, 1};
+    c2d_vec2 go = {1, 0}, bad = {NAN, 0};
+    size_t bytes = c2d_world_bytes(&d);
+    unsigned char *copy = malloc(bytes);
+    (void)state;
+    assert_status(c2d_world_add(w, &a, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &c, 1, NULL), C2D_OK);
+    assert_status(c2d_world_advance(w, 1), C2D_OK);
+    assert_status(c2d_world_set_velocity(w, 0, go), C2D_OK); /* at t = 1 from x = 2: meets b at t = 3 */
+    assert_status(c2d_world_remove(w, 1), C2D_OK);
+    memcpy(copy, mem, bytes);
+    assert_status(c2d_world_remove(w, 1), C2D_INVALID);
+    assert_status(c2d_world_remove(w, 3), C2D_INVALID);
+    assert_status(c2d_world_remove(NULL, 0), C2D_INVALID);
+    assert_status(c2d_world_set_velocity(w, 1, go), C2D_INVALID);
+    assert_status(c2d_world_set_velocity(w, 0, bad), C2D_INVALID);
+    assert_status(c2d_world_set_velocity(w, 5, go), C2D_INVALID);
+    assert_status(c2d_world_set_velocity(NULL, 0, go), C2D_INVALID);
+    assert_status(c2d_world_get(w, 1, &b), C2D_INVALID);
+    assert_memory_equal(copy, mem, bytes);
+    assert_status(c2d_world_advance(w, 8), C2D_OK); /* passes where b was, meets c at t = 7 */
+    assert_int_equal(collisions(w), 1);
+    assert_status(c2d_world_get(w, 0, &a), C2D_OK);
+    assert_status(c2d_world_get(w, 2, &c), C2D_OK);
+    assert_true(a.vel.x == 0 && a.pos.x == 8 && c.vel.x == 1 && c.pos.x == 11);
+    b.pos.x = 4, b.pos.y = 2; /* its place is free, but its capacity is not given back */
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    free(copy);
+    free(mem);
+}
+
+/* ------------------------------------------------------------ refusals */
+
+static void test_every_refusal_is_invalid_and_changes_nothing(void **state)
+{
+    c2d_world_desc d = box_desc(3, 10, 10, C2D_WALLS, 1, 1), bad;
+    size_t bytes = c2d_world_bytes(&d), k;
+    double *mem = malloc(bytes + 16), *copy = malloc(bytes + 16), nan = NAN, inf = INFINITY;
+    c2d_world *w = NULL, *w0;
+    c2d_body ok = {{2, 2}, {1, 0}, 1}, b;
+    c2d_world_stats s;
+    const double bad_values[] = {NAN, INFINITY, -INFINITY};
+    (void)state;
+    /* Descriptions */
+    assert_int_equal(c2d_world_bytes(NULL), 0);
+    for (k = 0; k < 16; k++) {
+        bad = d;
+        switch (k) {
+        case 0: bad.capacity = 0; break;
+        case 1: bad.width = 0; break;
+        case 2: bad.height = -1; break;
+        case 3: bad.width = nan; break;
+        case 4: bad.height = inf; break;
+        case 5: bad.boundary = (c2d_boundary)2; break;
+        case 6: bad.restitution = 1.5; break;
+        case 7: bad.restitution = nan; break;
+        case 8: bad.wall_restitution = -0.1; break;
+        case 9: bad.collapse_speed = -1; break;
+        case 10: bad.collapse_speed = inf; break;
+        case 11: bad.collapse_time = -1; break;
+        case 12: bad.collapse_time = nan; break;
+        case 13: bad.collapse_length = -1e-300; break;
+        case 14: bad.collapse_length = inf; break;
+        default: bad.capacity = (size_t)-1; break;
+        }
+        assert_int_equal(c2d_world_bytes(&bad), 0);
+        memset(mem, 0x5A, bytes);
+        memcpy(copy, mem, bytes);
+        assert_status(c2d_world_init(&w, mem, bytes, &bad), C2D_INVALID);
+        assert_null(w);
+        assert_memory_equal(mem, copy, bytes);
+    }
+    /* Memory: too small, misaligned, NULL */
+    assert_status(c2d_world_init(&w, mem, bytes - 1, &d), C2D_INVALID);
+    assert_status(c2d_world_init(&w, (char *)mem + 4, bytes, &d), C2D_INVALID);
+    assert_status(c2d_world_init(&w, NULL, bytes, &d), C2D_INVALID);
+    assert_status(c2d_world_init(NULL, mem, bytes, &d), C2D_INVALID);
+    assert_status(c2d_world_init(&w, mem, bytes, NULL), C2D_INVALID);
+    assert_memory_equal(mem, copy, bytes);
+    assert_null(w);
+    assert_status(c2d_world_init(&w, mem, bytes, &d), C2D_OK);
+    assert_non_null(w);
+    assert_status(c2d_world_add(w, &ok, 1, NULL), C2D_OK);
+    assert_status(c2d_world_advance(w, 1), C2D_OK);
+    w0 = w;
+    memcpy(copy, mem, bytes);
+    /* Disks: NaN/Inf anywhere, mass or radius <= 0, outside, overlapping */
+    for (k = 0; k < 3; k++) {
+        int f;
+        for (f = 0; f < 5; f++) {
+            b = ok;
+            b.pos.y = 8;
+            if (f == 0) b.pos.x = bad_values[k];
+            if (f == 1) b.pos.y = bad_values[k];
+            if (f == 2) b.vel.x = bad_values[k];
+            if (f == 3) b.vel.y = bad_values[k];
+            if (f == 4) b.mass = bad_values[k];
+            assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+        }
+        b = ok, b.pos.y = 8;
+        assert_status(c2d_world_add(w, &b, bad_values[k], NULL), C2D_INVALID);
+    }
+    b = ok, b.pos.y = 8;
+    b.mass = 0;
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    b.mass = -1;
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    b.mass = 1;
+    assert_status(c2d_world_add(w, &b, 0, NULL), C2D_INVALID);
+    assert_status(c2d_world_add(w, &b, -1, NULL), C2D_INVALID);
+    b.pos.x = 0.5; /* the wall cuts it */
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    b.pos.x = 9.5;
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    b.pos.x = 5, b.pos.y = 9.25;
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    b.pos.x = 3, b.pos.y = 3.5; /* disk 0 is at (3, 2) now: distance 1.5 < 2 */
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    b.pos.x = 3, b.pos.y = 3.5; /* larger than all: the brute-force check */
+    assert_status(c2d_world_add(w, &b, 1.2, NULL), C2D_INVALID);
+    assert_status(c2d_world_add(NULL, &b, 1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add(w, NULL, 1, NULL), C2D_INVALID);
+    /* Times: NaN, Inf, before now */
+    assert_status(c2d_world_advance(w, nan), C2D_INVALID);
+    assert_status(c2d_world_advance(w, inf), C2D_INVALID);
+    assert_status(c2d_world_advance(w, 0.5), C2D_INVALID);
+    assert_status(c2d_world_advance(NULL, 2), C2D_INVALID);
+    /* Reads: a disk that is not there */
+    assert_status(c2d_world_get(w, 1, &b), C2D_INVALID);
+    assert_status(c2d_world_get(NULL, 0, &b), C2D_INVALID);
+    assert_status(c2d_world_get(w, 0, NULL), C2D_INVALID);
+    c2d_world_get_stats(NULL, &s);
+    assert_true(s.collisions == 0 && s.time == 0);
+    c2d_world_get_stats(w, NULL);
+    assert_memory_equal(mem, copy, bytes);
+    /* A full world; periodic disks too large for the box, or outside it */
+    b = ok, b.pos.x = 8, b.pos.y = 8;
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_OK); /* touching is fine */
+    b.pos.x = 8, b.pos.y = 2;
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_OK);
+    memcpy(copy, mem, bytes);
+    b.pos.x = 5, b.pos.y = 5;
+    assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_INVALID);
+    assert_memory_equal(mem, copy, bytes);
+    assert_ptr_equal(w, w0);
+    d.boundary = C2D_PERIODIC;
+    assert_status(c2d_world_init(&w, mem, bytes, &d), C2D_OK);
+    memcpy(copy, mem, bytes);
+    b.pos.x = 5, b.pos.y = 5;
+    assert_status(c2d_world_add(w, &b, 1.7, NULL), C2D_INVALID); /* 3 diameters > 10 */
+    b.pos.x = 10;
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    b.pos.x = -0.0 - 1e-300;
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_INVALID);
+    assert_memory_equal(mem, copy, bytes);
+    b.pos.x = 0;
+    assert_status(c2d_world_add(w, &b, 1.6, NULL), C2D_OK);
+    free(mem);
+    free(copy);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_two_disks_meet_and_exchange_velocities),
+        cmocka_unit_test(test_a_wall_negates_the_normal_velocity_times_its_restitution),
+        cmocka_unit_test(test_newtons_cradle_passes_the_striker_speed_to_the_last_disk),
+        cmocka_unit_test(test_an_elastic_gas_keeps_its_energy_over_a_hundred_thousand_impacts),
+        cmocka_unit_test(test_a_periodic_gas_keeps_its_momentum),
+        cmocka_unit_test(test_disks_never_overlap_nor_leave_the_box),
+        cmocka_unit_test(test_the_virial_pressure_at_eta_0_3_matches_henderson),
+        cmocka_unit_test(test_inelastic_collapse_never_hangs_and_energy_only_falls),
+        cmocka_unit_test(test_a_disk_pinned_against_a_wall_by_a_heavy_one_does_not_hang),
+        cmocka_unit_test(test_one_advance_and_many_uneven_ones_give_the_same_bits),
+        cmocka_unit_test(test_reading_a_world_changes_none_of_its_bytes),
+        cmocka_unit_test(test_the_event_callback_sees_every_impact_with_its_impulse),
+        cmocka_unit_test(test_kicks_and_removals_keep_frame_independence),
+        cmocka_unit_test(test_a_kicked_disk_moves_and_a_removed_one_is_passed_through),
+        cmocka_unit_test(test_every_refusal_is_invalid_and_changes_nothing),
+    };
+    const int total = (int)(sizeof tests / sizeof tests[0]);
+    int failed = cmocka_run_group_tests_name("world", tests, NULL, NULL);
+    c2d_tally tally;
+    tally.passed = total - failed, tally.failed = failed;
+    fflush(stdout);
+    c2d_put_tally("test_world", &tally);
+    return c2d_tally_status(&tally);
+}
