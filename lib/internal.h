@@ -21,6 +21,9 @@
 #else
 #include "../include/collide2d.h"
 #endif
+#ifndef C2D_ACCEPT_HI
+#error "collide2d.h was included before lib/internal.h, so without the accept test the library needs: include internal.h first (a white-box test too)"
+#endif
 #include <float.h>
 
 /* The time of impact's square roots.  gcc and clang get the FPU instruction

@@ -3,8 +3,8 @@
  * (body in axis_filter.h): the library's templates instantiated here with
  * lib/float.c's parameters (lib/real/float.h), so the filter's decisions can
  * be counted. */
+#include "../../lib/internal.h" /* first: it asks the header for the library's internals */
 #include "check.h"
-#include "../../lib/internal.h"
 
 #pragma GCC diagnostic ignored "-Wunused-function" /* the templates hold more than the filter */
 

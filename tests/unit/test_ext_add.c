@@ -16,8 +16,8 @@
  * 1 + 2^(4 - MANT), real/toia/turns.h) only asks for the sign of a
  * difference against a relative slack (c2d_toia_ext_cmp), which the two cuts
  * decide alike: shown below with the old copy kept here as the witness. */
+#include "../../lib/internal.h" /* first: it asks the header for the library's internals */
 #include "check.h"
-#include "../../lib/internal.h"
 
 #pragma GCC diagnostic ignored "-Wunused-function" /* the templates hold more than the sum */
 
