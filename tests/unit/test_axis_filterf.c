@@ -3,8 +3,11 @@
  * (body in axis_filter.h): the library's templates instantiated here with
  * lib/float.c's parameters (lib/real/float.h), so the filter's decisions can
  * be counted. */
-#include "check.h"
+/* internal.h first: it asks the public header for the internals it shares
+ * with the library (C2D_BUILDING_LIBRARY), which check.h's include of it
+ * would otherwise leave out (include guard). */
 #include "../../lib/internal.h"
+#include "check.h"
 
 #pragma GCC diagnostic ignored "-Wunused-function" /* the templates hold more than the filter */
 
