@@ -52,7 +52,7 @@ float sqrtf(float x);
  * comparison (that is how the fast path refuses NaN and Inf inputs), x - x
  * is 0 only for finite x, and the exact sums rely on every rounding being
  * where the source puts it.  -ffast-math and -ffinite-math-only take all of
- * that away (issue 19: C2D_OK with NaN outputs, NaN and Inf inputs
+ * that away (C2D_OK with NaN outputs, NaN and Inf inputs
  * accepted, wrong statuses), so they stop the build here, unless the
  * builder says with C2D_ALLOW_FAST_MATH that wrong results are acceptable
  * (include/collide2d.h, CONFIGURATION).  -fassociative-math,

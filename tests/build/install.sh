@@ -30,8 +30,8 @@ prefix="/opt/my dir"
 root=$stage$prefix
 mkdir -p "$stage"
 : >"$work/victim"
-# And where the only space is DESTDIR's own (the case: an unquoted
-# rm removed "victim").
+# And where the only space is DESTDIR's own (an unquoted rm in uninstall
+# would remove "victim" beside it).
 rm -rf "$logs/victims" && mkdir -p "$logs/victims" && : >"$logs/victims/victim"
 
 # mk LOG ARGS...: make in TREE, no MAKEFLAGS from a calling make.
