@@ -221,8 +221,12 @@ status=$?
     [ ! -e "$TMP/nowin.png" ] && [ ! -e "$TMP/nowin.csv" ]
 check "--screenshot-window without a display: exit 2 before simulating, no files" $?
 env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
-[ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ]
-check "--screenshot-window, no display, no --headless: exit 2 before simulating" $?
+[ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ] &&
+    ! grep -q "running headless" "$TMP/err"
+check "--screenshot-window, no display, no --headless: exit 2 before simulating, no \"running headless\"" $?
+env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --game practice > "$TMP/out" 2> "$TMP/err"
+[ $? = 2 ] && grep -q -- "--game practice is played in the window" "$TMP/err" && ! grep -q "running headless" "$TMP/err"
+check "--game practice, no display: exit 2, no \"running headless\"" $?
 DISPLAY=:7777 "$BIN" --headless --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
 [ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ] && [ ! -e "$TMP/nowin.png" ]
 check "--screenshot-window, an unreachable display: exit 2 before simulating" $?
