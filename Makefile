@@ -88,15 +88,19 @@ $(B)/libcollide2d.so: $(SHARED)
 # rebuilds it, an unchanged one keeps its time stamp.  The directories are
 # compared in the shell, not by make's word functions: they may hold spaces.
 # C2D_SH_PATHS: shell functions for recipes, `rel DIR` (DIR as ${prefix}/...
-# when under PREFIX) and `esc TEXT` (TEXT as a sed replacement, | delimiter).
+# when under PREFIX), `esc TEXT` (TEXT as a sed replacement, | delimiter)
+# and `pcq TEXT` (a space as "\ ", which pkg-config reads as part of the
+# value and prints back so, so that `pkg-config --cflags` under a prefix
+# with a space gives one word to a shell: -I/opt/my\ dir/include).
 C2D_SH_PATHS = prefix='$(PREFIX)'; \
   rel() { case $$1 in "$$prefix"/*) printf '%s' "\$${prefix}/$${1\#"$$prefix"/}";; *) printf '%s' "$$1";; esac; }; \
-  esc() { printf '%s' "$$1" | sed 's/[\\|&]/\\&/g'; }
+  esc() { printf '%s' "$$1" | sed 's/[\\|&]/\\&/g'; }; \
+  pcq() { printf '%s' "$$1" | sed 's/ /\\ /g'; }
 $(B)/collide2d.pc: collide2d.pc.in FORCE
 	@mkdir -p $(@D)
 	@$(C2D_SH_PATHS); \
-	sed -e "s|@C2D_PC_PREFIX@|$$(esc "$$prefix")|" -e "s|@C2D_PC_LIBDIR@|$$(esc "$$(rel '$(LIBDIR)')")|" \
-	  -e "s|@C2D_PC_INCLUDEDIR@|$$(esc "$$(rel '$(INCLUDEDIR)')")|" -e 's|@C2D_PC_VERSION@|$(VERSION)|' \
+	sed -e "s|@C2D_PC_PREFIX@|$$(esc "$$(pcq "$$prefix")")|" -e "s|@C2D_PC_LIBDIR@|$$(esc "$$(pcq "$$(rel '$(LIBDIR)')")")|" \
+	  -e "s|@C2D_PC_INCLUDEDIR@|$$(esc "$$(pcq "$$(rel '$(INCLUDEDIR)')")")|" -e 's|@C2D_PC_VERSION@|$(VERSION)|' \
 	  -e 's|@C2D_PC_CFLAGS@||' collide2d.pc.in > $@.tmp
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@ && echo "wrote $@ (prefix $(PREFIX))"; fi
 

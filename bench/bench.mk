@@ -99,8 +99,9 @@ TEST_TARGETS += test-bench
 # ---------------------------------------------------------- energy bias
 # Is the energy error of e = 1 impacts a bias?  10^8 random impacts (about a
 # minute): mean dE/E and its standard error, overall and with |n|^2 near a
-# power of two.  Reported in bench/RESULTS.md and the README; not part of
-# `make test` (it measures, it does not judge).
+# power of two.  Printed only (bench/RESULTS.md does not hold it); the figures
+# are quoted in docs/ACCURACY.md ("Energy bias"); not part of `make test` (it
+# measures, it does not judge).
 .PHONY: bench-energy
 $(BENCH_DIR)/energy_bias: bench/energy_bias.c $(STATIC)
 	@mkdir -p $(@D)

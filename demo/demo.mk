@@ -16,8 +16,9 @@
 #                                                    -> $(B)/demo/libgame.a
 #   demo/app/    the program: command line, headless runner, the window and
 #                its drawing, aiming aids, panel, sound, PNG -> $(B)/billiards
-#   demo/tests/  test_physics (pool), test_game (game), test_demo.sh (the
-#                program, and the layering), png_check
+#   demo/tests/  test_physics (pool), test_game (game), check.h (their
+#                tally), test_demo.sh (the program, and the layering),
+#                png_check
 #   demo/tools/  plots.sh (make demo-plots)
 # Includes name their layer (-Idemo: #include "pool/sim.h"), so a layer's
 # dependencies show in its include lines; test_demo.sh checks them.  Header

@@ -8,7 +8,8 @@
 #   firmware        float only (C2D_NO_DOUBLE) on a Cortex-M4F, under QEMU
 #                   with the MCU harness's start-up code (tests/mcu/mcu.mk)
 #   make examples        builds them
-#   make test-examples   builds and runs each; each ends with a pass line
+#   make test-examples   builds and runs each; each ends with a pass line,
+#                        the whole with `test-examples: N passed, M failed`
 
 EXAMPLES := two_body ball_in_box hard_disk_gas
 EXAMPLE_BINS := $(EXAMPLES:%=$(B)/examples/%)
@@ -31,13 +32,16 @@ $(MCU_B)/%/firmware.o: examples/firmware.c | mcu-deps
 $(EXAMPLE_FIRMWARE): $(MCU_B)/m4f/startup_arm.o $(MCU_B)/m4f/firmware.o $(MCU_B)/m4f/lib.o $(MCU_DIR)/arm.ld
 	$(MCU_m4f_CC) $(MCU_m4f_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
 
+# One check per host example run, one for the firmware's link (no double
+# helpers), one for its run under QEMU; `test-examples: N passed, M failed`.
 test-examples: examples
-	@fail=0; for x in $(EXAMPLE_BINS); do echo "== $$x"; $$x || fail=1; done; \
+	@. tests/harness/tally.sh; c2d_tally_name=test-examples; \
+	for x in $(EXAMPLE_BINS); do echo "== $$x"; c2d_check "$$x" $$x; done; \
 	echo "== $(EXAMPLE_FIRMWARE) (Cortex-M4F, QEMU)"; \
 	if arm-none-eabi-nm $(EXAMPLE_FIRMWARE) | grep -q ' __aeabi_d'; then \
-	  echo "firmware: FAILED (double-precision helpers linked)"; fail=1; fi; \
-	sh $(MCU_DIR)/run.sh firmware $(EXAMPLE_FIRMWARE) $(MCU_m4f_QEMU) || fail=1; \
-	if [ $$fail -ne 0 ]; then echo "make test-examples: FAILED"; exit 1; fi; echo "make test-examples: passed"
+	  c2d_failed "firmware: double-precision helpers linked"; else c2d_passed; fi; \
+	c2d_check "firmware under QEMU" sh $(MCU_DIR)/run.sh firmware $(EXAMPLE_FIRMWARE) $(MCU_m4f_QEMU); \
+	c2d_summary
 
 TEST_TARGETS += test-examples
 

@@ -35,7 +35,7 @@
  *   - Results are deterministic: the same inputs give the same bits on every
  *     IEEE-754 target that evaluates float/double in their own precision
  *     (FLT_EVAL_METHOD 0) and does not contract a*b+c into an FMA
- *     (build with -ffp-contract=off; see README "Determinism").
+ *     (build with -ffp-contract=off; see docs/DETERMINISM.md).
  *
  * CONFIGURATION (define when compiling the library; defaults in [])
  *   C2D_NO_DOUBLE  [undefined]  drop the double-precision API
@@ -121,7 +121,7 @@ typedef struct c2d_body { c2d_vec2 pos; c2d_vec2 vel; double mass; } c2d_body; /
  *                > SEPARATING > RANGE > OK; on any status but OK nothing is written.
  *   accuracy     every finite input over the whole double range: each output
  *                component within 16 ulp of its body's velocity scale (measured
- *                worst: see README "Accuracy"); momentum conserved and energy
+ *                worst: see docs/ACCURACY.md); momentum conserved and energy
  *                conserved at e = 1 to that accuracy; the relative normal
  *                velocity is reversed exactly in sign (no false SEPARATING).
  *   axis-aligned when the centres share an x or a y coordinate exactly, every
@@ -129,7 +129,7 @@ typedef struct c2d_body { c2d_vec2 pos; c2d_vec2 vel; double mass; } c2d_body; /
  *                nearest the exact result, ties to even): equal masses at
  *                e = 1 swap their normal components exactly, an immovable
  *                wall at e = 1 negates it exactly, the other component is
- *                returned bit for bit (Newton's cradle: README).
+ *                returned bit for bit (Newton's cradle: docs/ACCURACY.md).
  *   a == b (same pointer) is C2D_DEGENERATE. */
 c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution);
 

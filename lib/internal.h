@@ -4,11 +4,12 @@
  *
  * The library is one translation unit per variant (collide2d.c: version and
  * status names; double.c, float.c: the floating-point API; fixed.c: Q16.16).
- * double.c and float.c define their type's parameters (C2D_R_*) and include
- * the same template headers (real/), which are written once against the
- * names c2d_real, c2d_real_body, ...; every static function they define is
- * local to its translation unit, so both instances use the same names and
- * every public function is written out by name in double.c and float.c.
+ * double.c and float.c include real/double.h and real/float.h, which define
+ * their type's parameters (C2D_R_*) and include the same template headers
+ * (real/), written once against the names c2d_real, c2d_real_body, ...;
+ * every static function they define is local to its translation unit, so
+ * both instances use the same names and every public function is written
+ * out by name in double.c and float.c.
  */
 #ifndef C2D_INTERNAL_H
 #define C2D_INTERNAL_H
@@ -54,7 +55,7 @@ float sqrtf(float x);
  * comparison (that is how the fast path refuses NaN and Inf inputs), x - x
  * is 0 only for finite x, and the exact sums rely on every rounding being
  * where the source puts it.  -ffast-math and -ffinite-math-only take all of
- * that away (issue 19: C2D_OK with NaN outputs, NaN and Inf inputs
+ * that away (C2D_OK with NaN outputs, NaN and Inf inputs
  * accepted, wrong statuses), so they stop the build here, unless the
  * builder says with C2D_ALLOW_FAST_MATH that wrong results are acceptable
  * (include/collide2d.h, CONFIGURATION).  -fassociative-math,

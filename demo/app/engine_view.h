@@ -2,7 +2,7 @@
 // engine_view.h - how the window reads the simulation: the table's shape as
 // it is drawn and aimed at (the engine's cushions and pockets, with each
 // nose's cushion face and a rail wide enough for the holes), and the
-// contacts of a frame that make a sound.  demo/NEEDS_FROM_ENGINE.md lists
+// contacts of a frame that make a sound.  demo/pool/NEEDS_FROM_ENGINE.md lists
 // what the window asked of the engine and where it comes from.
 #ifndef C2D_DEMO_ENGINE_VIEW_H
 #define C2D_DEMO_ENGINE_VIEW_H

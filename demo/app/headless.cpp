@@ -434,10 +434,14 @@ void print_game_summary(const demo::GameRecord &g, double wall) {
 
 }  // namespace
 
-int demo::run_game_headless(const Options &o) {
-    if (o.players_given && !(o.computer[0] && o.computer[1]))
+void demo::check_headless(const Options &o) {
+    if (o.game == demo::GameMode::Practice) throw UsageError{"--game practice is played in the window"};
+    if (o.game == demo::GameMode::EightBall && o.players_given && !(o.computer[0] && o.computer[1]))
         throw UsageError{"--players: a human player needs the window; headless, --game 8ball is --players computer,computer"};
     preflight(o);
+}
+
+int demo::run_game_headless(const Options &o) {
     const auto start = std::chrono::steady_clock::now();
     const demo::GameRecord g = demo::play_computer_game(o.config, o.config.seed);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -456,7 +460,6 @@ int demo::run_game_headless(const Options &o) {
 }
 
 int demo::run_scene_headless(const Options &o) {
-    preflight(o);
     Recorder recorder(o);
     Simulation sim(o.config);
     const Totals t = run_headless(sim, o, recorder);

@@ -50,9 +50,11 @@ int run(const Options &o) {
             throw UsageError{joined(o.headless_only) + ": only for a headless run (add --headless)"};
         if (demo::play_window(o.config, demo::Players{o.game == demo::GameMode::EightBall, {o.computer[0], o.computer[1]}}, why) == demo::WindowResult::Ok) return 0;
     }
+    // a run that headless would refuse says only why (exit 2), not that it
+    // falls back to headless first
+    demo::check_headless(o);
     if (!o.headless) std::fprintf(stderr, "billiards: %s; running headless\n", why.c_str());
     if (o.game == demo::GameMode::EightBall) return demo::run_game_headless(o);
-    if (o.game == demo::GameMode::Practice) throw UsageError{"--game practice is played in the window"};
     return demo::run_scene_headless(o);
 }
 

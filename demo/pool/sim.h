@@ -41,8 +41,8 @@ constexpr double kMaxShotSpeed = 15.0;  // Box2D moves at most 2 units/step: 15 
 //   mu_r     0.01    rolling resistance (Alciatore 0.005-0.015)
 //   mu_sp    0.0127  spinning friction: wz decays at 5 mu_sp g / (2R) =
 //                    10.9 rad/s^2, the middle of the 5-15 rad/s^2 Alciatore
-//                    measured (and pooltool's default, 0.444 R); the 0.044
-//                    the issue suggests would give 37.8 rad/s^2, a sidespin
+//                    measured (and pooltool's default, 0.444 R); a coefficient
+//                    of 0.044 would give 37.8 rad/s^2, a sidespin
 //                    that dies in a third of the time
 //   ball     e 0.95 (measured 0.92-0.98), mu 0.05 (0.03-0.08), beta 0: the
 //                    contact points stop relative to each other when the

@@ -15,10 +15,10 @@ c2d_tally_name=test_demo
 check() { if [ "$2" = 0 ]; then c2d_passed; echo "ok - $1"; else c2d_failed "$1"; fi; }
 
 # --- the layers (demo/demo.mk): pool/ (the simulation) <- game/ (8-ball) <-
-# app/ (the program); tests/ test pool/ and game/.  Every include of ours
-# names its layer ("pool/sim.h"; collide2d.h aside) and a layer includes only
-# itself and the layers below it; pool/, game/ and tests/ use no SDL (they
-# are compiled and linked without it).
+# app/ (the program); tests/ test pool/ and game/ (and share tests/check.h).
+# Every include of ours names its layer ("pool/sim.h"; collide2d.h aside)
+# and a layer includes only itself and the layers below it; pool/, game/
+# and tests/ use no SDL (they are compiled and linked without it).
 # layer_check LAYER "ALLOWED LAYERS" SDL(yes|no): prints each violation, and
 # "LAYER: F files, I includes"
 layer_check() {
@@ -50,7 +50,7 @@ layer_check() {
 layer_check pool "pool" no; check "pool/: no SDL, includes only pool/" $?
 layer_check game "game pool" no; check "game/: no SDL, includes only game/ and pool/" $?
 layer_check app "app game pool" yes; check "app/: includes only app/, game/ and pool/" $?
-layer_check tests "game pool" no; check "tests/: no SDL, includes only game/ and pool/" $?
+layer_check tests "tests game pool" no; check "tests/: no SDL, includes only tests/, game/ and pool/" $?
 [ -z "$(ls "$DEMO"/*.h "$DEMO"/*.cpp 2>/dev/null)" ]; check "every source of the demo is in a layer" $?
 
 # json_get FILE KEY: the value of a scalar key of the one-line JSON object
@@ -221,8 +221,12 @@ status=$?
     [ ! -e "$TMP/nowin.png" ] && [ ! -e "$TMP/nowin.csv" ]
 check "--screenshot-window without a display: exit 2 before simulating, no files" $?
 env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
-[ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ]
-check "--screenshot-window, no display, no --headless: exit 2 before simulating" $?
+[ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ] &&
+    ! grep -q "running headless" "$TMP/err"
+check "--screenshot-window, no display, no --headless: exit 2 before simulating, no \"running headless\"" $?
+env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --game practice > "$TMP/out" 2> "$TMP/err"
+[ $? = 2 ] && grep -q -- "--game practice is played in the window" "$TMP/err" && ! grep -q "running headless" "$TMP/err"
+check "--game practice, no display: exit 2, no \"running headless\"" $?
 DISPLAY=:7777 "$BIN" --headless --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
 [ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ] && [ ! -e "$TMP/nowin.png" ]
 check "--screenshot-window, an unreachable display: exit 2 before simulating" $?

@@ -12,17 +12,13 @@
 #include <vector>
 
 #include "game/game.h"
+#include "tests/check.h"
 
 namespace {
 
 using namespace demo;
 
-int passed = 0, failed = 0;
-
-void check(bool ok, const std::string &what) {
-    std::printf("%s - %s\n", ok ? "ok" : "FAIL", what.c_str());
-    (ok ? passed : failed) += 1;
-}
+using demo_tests::check;
 
 // A table holding the cue ball and the given object balls (positions do not
 // matter to the rules).
@@ -275,6 +271,5 @@ int main(int argc, char **argv) {
     facts_from_events();
     placement();
     games(count);
-    std::printf("test_game: %d passed, %d failed\n", passed, failed);
-    return failed == 0 ? 0 : 1;
+    return demo_tests::check_summary("test_game");
 }

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "pool/sim.h"
+#include "tests/check.h"
 
 namespace {
 
@@ -36,12 +37,7 @@ using demo::Shot;
 using demo::ShotOutcome;
 using demo::SimConfig;
 
-int passed = 0, failed = 0;
-
-void check(bool ok, const std::string &what) {
-    std::printf("%s - %s\n", ok ? "ok" : "FAIL", what.c_str());
-    (ok ? passed : failed) += 1;
-}
+using demo_tests::check;
 
 Ball ball(int number, double x, double y) { return Ball{x, y, 0, 0, number, true}; }
 
@@ -312,6 +308,5 @@ int main(int argc, char **argv) {
     english(c);
     std::printf("# integrity\n");
     random_shots(shots, seed);
-    std::printf("test_physics: %d passed, %d failed\n", passed, failed);
-    return failed == 0 ? 0 : 1;
+    return demo_tests::check_summary("test_physics");
 }

@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# Pictures for the README (make demo-plots): the elastic scene's energy
+# Pictures for docs/POOL.md and docs/GAME.md (make demo-plots): the elastic scene's energy
 # over time for both responses, the gas speed histogram against the
 # 2-D Maxwell-Boltzmann (Rayleigh) distribution, and one shot's path with
 # its events.  (The table pictures, docs/billiards.png and

@@ -1,6 +1,5 @@
 # SPDX-License-Identifier: MIT
 """The scalar entry points, double and float, through the binding."""
-import ctypes
 import math
 import random
 
@@ -8,20 +7,8 @@ import pytest
 
 import collide2d as c
 from collide2d import Status
+from variants import VARIANTS
 
-
-class Variant:
-    def __init__(self, sfx, real):
-        self.sfx, self.real = sfx, real
-        for name in ("Vec2", "Body", "Disk", "Surface", "collide", "collide_normal", "time_of_impact",
-                     "time_of_impact_accel", "collide_rough", "collide_rough_normal"):
-            setattr(self, name, getattr(c, name + sfx))
-
-    def __repr__(self):
-        return "double" if self.sfx == "" else "float"
-
-
-VARIANTS = [Variant("", ctypes.c_double), Variant("f", ctypes.c_float)]
 variant = pytest.mark.parametrize("v", VARIANTS, ids=repr)
 
 

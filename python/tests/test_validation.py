@@ -16,23 +16,9 @@ import pytest
 
 import collide2d as c
 from collide2d import Status
+from variants import DOUBLE, FLOAT, VARIANTS
 
 
-class Variant:
-    def __init__(self, sfx, real):
-        self.sfx, self.real = sfx, real
-        for name in ("Vec2", "Body", "Disk", "Surface", "collide", "collide_normal", "time_of_impact",
-                     "time_of_impact_accel", "collide_rough", "collide_rough_normal"):
-            setattr(self, name, getattr(c, name + sfx))
-        self.other = None
-
-    def __repr__(self):
-        return "double" if self.sfx == "" else "float"
-
-
-DOUBLE, FLOAT = Variant("", ctypes.c_double), Variant("f", ctypes.c_float)
-DOUBLE.other, FLOAT.other = FLOAT, DOUBLE
-VARIANTS = [DOUBLE, FLOAT]
 STRUCT_NAMES = ("Vec2", "Body", "Disk", "Surface")
 GOOD_FIELDS = {  # valid values of every field, in order
     "Vec2": (1.5, -2.0),
@@ -232,15 +218,15 @@ def test_an_attribute_that_is_no_field_is_refused(v, name):
     assert bytes(s) == before and not hasattr(s, "masss")
 
 
-# ------------------------------------------------------------ the issue's cases
+# ------------------------------------------------------------ short sequences, odd values
 
-def test_issue19_short_position():
+def test_a_short_position_is_a_value_error():
     with pytest.raises(ValueError, match="Body.pos must be a Vec2 of 2 components"):
         c.Body((0,), (1, 0), 1.0)
 
 
 @pytest.mark.parametrize("v", VARIANTS, ids=repr)
-def test_issue19_short_normal_and_dict_normal(v):
+def test_a_short_or_dict_normal_is_refused(v):
     a, b = v.Body((0, 0), (1, 0), 1), v.Body((1, 0), (0, 0), 1)
     before = raw(a, b)
     with pytest.raises(ValueError, match="argument 3 must be a Vec2f? of 2 components"):
@@ -251,7 +237,7 @@ def test_issue19_short_normal_and_dict_normal(v):
 
 
 @pytest.mark.parametrize("v", VARIANTS, ids=repr)
-def test_issue19_short_surface(v):
+def test_a_short_surface_is_a_value_error(v):
     d1 = v.Disk((0, 0), (1, 0), 0.0, 1.0, 0.5, 0.125)
     d2 = v.Disk((1, 0.5), (0, 0), 0.0, 1.0, 0.5, 0.125)
     before = raw(d1, d2)
@@ -267,7 +253,7 @@ def test_issue19_short_surface(v):
     ("huge int", 2 ** 2000, ValueError), ("str", "x", TypeError), ("None", None, TypeError),
     ("complex", 1j, TypeError), ("nested", ((1, 2), 0), TypeError), ("bool", True, TypeError),
 ]))
-def test_issue19_no_runtime_or_overflow_error(value, exc):
+def test_bad_values_raise_value_or_type_error(value, exc):
     for make in (lambda: c.Body((value, 0), (1, 0), 1.0), lambda: c.Body((0, 0), (1, 0), value),
                  lambda: c.Vec2(value, 0)):
         try:

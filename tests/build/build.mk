@@ -11,12 +11,15 @@
 #                         (tests/build/tsan.sh; skips a compiler without it)
 #   make check-fast-math  -ffast-math / -ffinite-math-only stop lib/'s build
 #                         unless C2D_ALLOW_FAST_MATH (tests/build/fast_math.sh)
+#   make check-docs       README.md at most 12,000 bytes; every relative link
+#                         and anchor of README.md, docs/*.md and
+#                         lib/real/toia/README.md resolves (tests/build/docs.sh)
 # The copy of test-make builds with the defaults whatever this make was
 # given, so under SANITIZE=1 it is skipped (the plain run covers it).
 
 MAKE_TEST_DEPS := pkg-config cmake
 
-.PHONY: test-make check-tsan check-fast-math
+.PHONY: test-make check-tsan check-fast-math check-docs
 ifeq ($(SANITIZE),1)
 test-make:
 	@echo "test-make: skipped under SANITIZE=1 (the Makefile, not code: the plain run covers it)"
@@ -33,4 +36,8 @@ check-tsan:
 check-fast-math:
 	@sh tests/build/fast_math.sh $(B)/check-fast-math
 
-TEST_TARGETS += test-make check-tsan check-fast-math
+check-docs:
+	@sh scripts/deps.sh python3
+	@sh tests/build/docs.sh
+
+TEST_TARGETS += test-make check-tsan check-fast-math check-docs

@@ -9,7 +9,8 @@
 #     DESTDIR/PREFIX; nothing changes in TREE (but build/) or in the
 #     scratch directory outside DESTDIR
 #   - the installed collide2d.pc and the CMake package name the prefix:
-#     pkg-config --define-prefix, and a CMake find_package(collide2d)
+#     plain pkg-config --cflags/--libs (each path one word to a shell) and
+#     with --define-prefix, and a CMake find_package(collide2d)
 #     consumer built and run against the staged tree, when cmake is there
 #   - uninstall leaves DESTDIR empty and the rest as before
 #   - uninstall with DESTDIR=".../victim x" beside a file "victim" (in the
@@ -30,8 +31,8 @@ prefix="/opt/my dir"
 root=$stage$prefix
 mkdir -p "$stage"
 : >"$work/victim"
-# And where the only space is DESTDIR's own (the issue's case: an unquoted
-# rm removed "victim").
+# And where the only space is DESTDIR's own (an unquoted rm in uninstall
+# would remove "victim" beside it).
 rm -rf "$logs/victims" && mkdir -p "$logs/victims" && : >"$logs/victims/victim"
 
 # mk LOG ARGS...: make in TREE, no MAKEFLAGS from a calling make.
@@ -81,6 +82,25 @@ fi
 # pkg-config prints a space in a path as "\ ".
 pc=$(PKG_CONFIG_PATH="$root/lib/pkgconfig" pkg-config --define-prefix --variable=includedir collide2d 2>&1 | sed 's/\\ / /g')
 c2d_check "pkg-config --define-prefix: includedir '$pc'" test "$pc" = "$root/include"
+# The flags as a shell reads them (as a Makefile recipe or a script's eval
+# does): each path one word, spaces kept.  collide2d.pc writes the spaces of
+# its paths as "\ "; unescaped, "-I/opt/my dir/include" would be two words.
+# words "PKG-CONFIG OPTIONS" WORD...: pkg-config's output for collide2d, read
+# by the shell, is exactly the words WORD...
+words() {
+    opts=$1
+    shift
+    want=$(printf '%s\n' "$@")
+    out=$(PKG_CONFIG_PATH="$root/lib/pkgconfig" pkg-config $opts collide2d 2>&1) &&
+        eval "set -- $out" && [ "$(printf '%s\n' "$@")" = "$want" ] ||
+        { echo "install: pkg-config $opts printed: $out" >&2; return 1; }
+}
+c2d_check "pkg-config --cflags: -I'$prefix/include', one word" words --cflags "-I$prefix/include"
+c2d_check "pkg-config --libs: -L'$prefix/lib' -lcollide2d" words --libs "-L$prefix/lib" -lcollide2d
+c2d_check "pkg-config --define-prefix --cflags: -I'$root/include', one word" \
+    words "--define-prefix --cflags" "-I$root/include"
+c2d_check "pkg-config --define-prefix --libs: -L'$root/lib' -lcollide2d" \
+    words "--define-prefix --libs" "-L$root/lib" -lcollide2d
 if command -v cmake >/dev/null 2>&1; then
     if cmake -S "$src/tests/consumers" -B "$work/consumer" -DC2D_HOW=find_package \
         -DCMAKE_PREFIX_PATH="$root" >"$logs/cmake.log" 2>&1 &&

@@ -113,7 +113,7 @@ static void c2d_num_check_rough_identity(const C2D_T_DISK *a0, const C2D_T_DISK 
 
 /* On OK: only velocities and spins written, all finite; immovable bodies
  * keep their velocity, infinite inertia or no radius their spin, bit for
- * bit: a velocity or spin of -0 comes back -0 (issue 19; it used to come
+ * bit: a velocity or spin of -0 comes back -0 (it used to come
  * back +0, which regress-roughf-immovable-negative-zero records). */
 static void c2d_num_check_rough_written(const C2D_T_DISK *a0, const C2D_T_DISK *b0, const C2D_T_DISK *a,
                                         const C2D_T_DISK *b)

@@ -1,7 +1,9 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# One target's section of the size table (docs/SIZES.md), from the library
-# object built with -ffunction-sections -fstack-usage -fcallgraph-info=su.
+# One target's section of the size table (build/mcu/SIZES.md, which make
+# cross compares with docs/SIZES.md and make sizes copies there), from the
+# library object built with -ffunction-sections -fstack-usage
+# -fcallgraph-info=su.
 # Fails (exit 1, reason on stderr) when the object takes any outside symbol
 # other than compiler-runtime helpers and sqrt/sqrtf, when the call graph has
 # a cycle (recursion), an indirect call or a dynamically sized frame, and on

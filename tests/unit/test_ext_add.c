@@ -216,5 +216,5 @@ int main(void)
         cmocka_unit_test(test_zeros_differ_only_in_representation),
         cmocka_unit_test(test_toia_comparison_decides_as_before),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return c2d_run_tests("ext_add", tests);
 }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* An immovable body's velocity comes back exactly as given, bits included
- * (issue 19: a velocity of -0.0 came back +0.0 on oblique impacts, its
+ * (a velocity of -0.0 used to come back +0.0 on oblique impacts, its
  * change being a zero whose sign follows the impulse): every entry point,
  * double and float, over unit-scale and whole-range cases (so every tier:
  * front end, fast path, double-double, general path, axes), either body
@@ -173,9 +173,9 @@ static void test_batch(void **state)
     }
 }
 
-/* The issue's own case: a ball hits a wall at rest given as (-0, -0) at 45
+/* The simplest case: a ball hits a wall at rest given as (-0, -0) at 45
  * degrees, in every entry point. */
-static void test_the_reported_case(void **state)
+static void test_wall_at_rest_negative_zero(void **state)
 {
     c2d_body a = {{0, 0}, {1, 0}, 1}, b = {{1, 1}, {-0.0, -0.0}, INFINITY};
     c2d_bodyf af = {{0, 0}, {1, 0}, 1}, bf = {{1, 1}, {-0.0f, -0.0f}, INFINITY};
@@ -198,10 +198,10 @@ static void test_the_reported_case(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_the_reported_case),
+        cmocka_unit_test(test_wall_at_rest_negative_zero),
         cmocka_unit_test(test_double),
         cmocka_unit_test(test_float),
         cmocka_unit_test(test_batch),
     };
-    return cmocka_run_group_tests_name("signed_zero", tests, NULL, NULL);
+    return c2d_run_tests("signed_zero", tests);
 }
