@@ -91,8 +91,24 @@ bench: check-deps-bench
 	@echo "bench: wrote $(BENCH_OUT) and $(BENCH_PNG)"
 
 test-bench: check-deps-test-bench
-	@$(MAKE) --no-print-directory $(BENCH_BIN)
+	@$(MAKE) --no-print-directory $(BENCH_BIN) $(BENCH_DIR)/world
 	$(BENCH_BIN) --smoke
+	@. tests/harness/tally.sh; c2d_tally_name=bench-world; \
+	  c2d_check "a small periodic gas runs" sh -c '$(BENCH_DIR)/world 256 0.5 2 1 >/dev/null'; \
+	  c2d_check "a bad argument exits 2" sh -c '$(BENCH_DIR)/world 1x 2>/dev/null; [ $$? -eq 2 ]'; \
+	  c2d_summary
+
+# ------------------------------------------------------------------ world
+# Collisions per CPU second of the event-driven world (bench/world.c, its
+# usage and the figures measured in its opening comment): make bench-world
+# runs N = 1,024, 10,000 and 100,489 at eta 0.5 and 0.2.
+.PHONY: bench-world
+$(BENCH_DIR)/world: bench/world.c $(STATIC)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Ibench -Ireferee -o $@ $< $(STATIC) -lm
+
+bench-world: $(BENCH_DIR)/world
+	@for eta in 0.5 0.2; do for n in 1024 10000 100489; do $(BENCH_DIR)/world $$n $$eta || exit 1; done; done
 
 TEST_TARGETS += test-bench
 
@@ -110,4 +126,4 @@ $(BENCH_DIR)/energy_bias: bench/energy_bias.c $(STATIC)
 bench-energy: $(BENCH_DIR)/energy_bias
 	$(BENCH_DIR)/energy_bias 100000000
 
--include $(BENCH_OBJ:.o=.d) $(BENCH_DIR)/callsite.d $(BENCH_DIR)/energy_bias.d
+-include $(BENCH_OBJ:.o=.d) $(BENCH_DIR)/callsite.d $(BENCH_DIR)/energy_bias.d $(BENCH_DIR)/world.d

@@ -5,9 +5,9 @@
  * lattice with random velocities, melted for `warm` collisions per disk and
  * then timed over `per` collisions per disk.
  *
- * Usage: world [N [ETA [PER [WARM]]]]   (defaults 10000 0.5 20 5)
- * Build: cc -O2 -std=c99 -ffp-contract=off -fno-math-errno -Iinclude -Ibench
- *        bench/world.c build/libcollide2d.a -lm
+ * Usage: world [N [ETA [PER [WARM]]]]   (defaults 10000 0.5 20 5); a bad
+ * argument exits 2.  Built as build/bench/world by make; make bench-world runs
+ * the table below, make test-bench a small gas.
  * Instructions: valgrind --tool=callgrind ./world 1024 0.5 writes the timed
  * part as its own dump (callgrind.out.PID.1, between CALLGRIND_ZERO_STATS
  * and the dump "world"); its total over the collisions printed.
@@ -30,16 +30,10 @@
 
 #include "collide2d_world.h"
 #include "callgrind.h"
+#include "rng.h"
 
-static uint64_t rng = 1;
-static double uniform(void) /* splitmix64 -> [-1, 1) */
-{
-    uint64_t z = (rng += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * 0x1p-52 - 1.0;
-}
+static c2d_rng rng = {1};
+static double uniform(void) { return c2d_rng_range(&rng, -1.0, 1.0); } /* [-1, 1) */
 
 static double cpu_seconds(void)
 {
@@ -60,10 +54,31 @@ static double run_to(c2d_world *w, unsigned long long target, double dt)
     return s.time;
 }
 
+/* A command-line number, whole and in [lo, hi], or a message and exit 2. */
+static double number_arg(const char *what, const char *text, double lo, double hi)
+{
+    char *end;
+    double x = strtod(text, &end);
+    if (end == text || *end != '\0' || !(x >= lo && x <= hi)) {
+        fprintf(stderr, "world: %s '%s' is not a number in [%g, %g]\n", what, text, lo, hi);
+        exit(2);
+    }
+    return x;
+}
+
 int main(int argc, char **argv)
 {
-    size_t n = argc > 1 ? (size_t)atol(argv[1]) : 10000, side = (size_t)ceil(sqrt((double)n)), i;
-    double eta = argc > 2 ? atof(argv[2]) : 0.5, per = argc > 3 ? atof(argv[3]) : 20, warm = argc > 4 ? atof(argv[4]) : 5;
+    size_t n, side, i;
+    double eta, per, warm;
+    if (argc > 5) {
+        fprintf(stderr, "usage: world [N [ETA [PER [WARM]]]]\n");
+        return 2;
+    }
+    n = argc > 1 ? (size_t)number_arg("N", argv[1], 2, 1e8) : 10000;
+    eta = argc > 2 ? number_arg("ETA", argv[2], 1e-6, 0.78) : 0.5;
+    per = argc > 3 ? number_arg("PER", argv[3], 0, 1e6) : 20;
+    warm = argc > 4 ? number_arg("WARM", argv[4], 0, 1e6) : 5;
+    side = (size_t)ceil(sqrt((double)n));
     double box = sqrt((double)n * 3.14159265358979323846 / (4 * eta)), t0, t1, dt;
     c2d_world_desc d = {0};
     c2d_world_stats s0, s1;
