@@ -49,6 +49,7 @@ __all__ = [
     "collidef", "collide_normalf", "time_of_impactf", "time_of_impact_accelf", "collide_roughf",
     "collide_rough_normalf",
     "collide_batch", "collide_batchf",
+    "World", "WorldError", "Boundary", "EventKind", "Event", "Stats",
 ]
 
 LIB_PATH = _native.LIB_PATH
@@ -227,3 +228,4 @@ def collide_rough_normalf(a, b, normal, surface):
 
 
 from .batch import collide_batch, collide_batchf  # noqa: E402  (needs Status)
+from .world import Boundary, Event, EventKind, Stats, World, WorldError  # noqa: E402  (needs Status)
