@@ -277,7 +277,10 @@ class World:
         refuses it (outside the box, overlapping a disk, the world full, a
         periodic box under 3 diameters, a mass or radius <= 0 or not finite)."""
         self._changing("add")
-        body = _native.DOUBLE["Body"](pos, vel, mass)
+        vec2 = _native.DOUBLE["Vec2"]
+        body = _native.DOUBLE["Body"](_native.struct_value(vec2, pos, "World.add: pos"),
+                                      _native.struct_value(vec2, vel, "World.add: vel"),
+                                      _native.real(mass, ctypes.c_double, "World.add: mass"))
         r = _native.real(radius, ctypes.c_double, "World.add: radius")
         return self._add(body, r, "World.add")
 
@@ -285,12 +288,32 @@ class World:
         index = ctypes.c_size_t()
         status = self._fns["add"](self._world, ctypes.byref(body), radius, ctypes.byref(index))
         if status != 0:
-            why = ("the world is full" if self.count >= self.capacity else
-                   "outside the box, overlapping a disk, not finite, mass or radius <= 0, "
-                   "or a diameter over a third of a periodic box")
             self._check(status, f"{where}: the world refuses the disk at ({body.pos.x!r}, {body.pos.y!r}) "
-                                f"of radius {radius!r} ({why})")
+                                f"of radius {radius!r}: {self._why(body, radius)}")
         return index.value
+
+    def _why(self, body, r):
+        """What c2d_world_add's contract most likely refused (for the message)."""
+        x, y, w, h = body.pos.x, body.pos.y, self.width, self.height
+        if self.count >= self.capacity:
+            return f"the world is full ({self.capacity} disks)"
+        if not all(map(math.isfinite, (x, y, body.vel.x, body.vel.y, body.mass, r))):
+            return "NaN or Inf"
+        if not (body.mass > 0 and r > 0):
+            return "a mass or radius <= 0"
+        if self.boundary is Boundary.PERIODIC:
+            if not (0 <= x < w and 0 <= y < h):
+                return "outside the box [0, width) x [0, height)"
+            if 6 * r * (1 + 2 ** -24) > min(w, h):
+                return "a diameter over a third of the periodic box (x (1 + 2^-24))"
+        elif not (r <= x <= w - r and r <= y <= h - r):
+            return "outside the box (radius <= x <= width - radius, the same in y)"
+        return "overlapping a disk"
+
+    def __reduce__(self):
+        raise TypeError("a World cannot be copied or pickled (its memory points into itself): make a new one")
+
+    __copy__ = __deepcopy__ = lambda self, *memo: self.__reduce__()
 
     def add_many(self, pos, vel, mass, radius):
         """Add n disks in order: pos, vel arrays of shape (n, 2), mass and

@@ -291,19 +291,20 @@ def test_add_argument_checks(args, error):
     assert w.count == 0
 
 
-@pytest.mark.parametrize("pos, vel, mass, radius", [
-    ((0.1, 5), (0, 0), 1.0, 0.5),       # outside the box (walls: radius <= x)
-    ((5, 5), (0, 0), 0.0, 0.5),         # mass <= 0
-    ((5, 5), (0, 0), 1.0, -0.5),        # radius <= 0
-    ((5, 5), (0, 0), math.nan, 0.5),    # NaN
-    ((5, 5), (math.inf, 0), 1.0, 0.5),  # Inf
-    ((8.5, 8), (0, 0), 1.0, 0.5),       # overlapping the disk at (8, 8)
+@pytest.mark.parametrize("pos, vel, mass, radius, why", [
+    ((0.1, 5), (0, 0), 1.0, 0.5, "outside"),       # walls: radius <= x
+    ((5, 9.6), (0, 0), 1.0, 0.5, "outside"),
+    ((5, 5), (0, 0), 0.0, 0.5, "<= 0"),
+    ((5, 5), (0, 0), 1.0, -0.5, "<= 0"),
+    ((5, 5), (0, 0), math.nan, 0.5, "NaN"),
+    ((5, 5), (math.inf, 0), 1.0, 0.5, "Inf"),
+    ((8.5, 8), (0, 0), 1.0, 0.5, "overlapping"),   # the disk at (8, 8)
 ])
-def test_add_refused_by_the_world(pos, vel, mass, radius):
+def test_add_refused_by_the_world(pos, vel, mass, radius, why):
     w = World(**GOOD)
     w.add((8, 8), (0, 0), 1.0, 0.5)
     before = bytes(w._memory)
-    with pytest.raises(WorldError) as e:
+    with pytest.raises(WorldError, match=why) as e:
         w.add(pos, vel, mass, radius)
     assert isinstance(e.value, ValueError) and e.value.status is Status.INVALID
     assert bytes(w._memory) == before
@@ -314,9 +315,29 @@ def test_add_full_and_periodic_too_large():
     w.add((5, 5), (0, 0), 1.0, 0.5)
     with pytest.raises(WorldError, match="full"):
         w.add((2, 2), (0, 0), 1.0, 0.5)
-    p = World(3, 3, capacity=1, boundary="periodic")
-    with pytest.raises(WorldError):
-        p.add((1.5, 1.5), (0, 0), 1.0, 0.6)  # diameter 1.2 > 3 / 3
+    p = World(3, 3, capacity=2, boundary="periodic")
+    with pytest.raises(WorldError, match="third"):
+        p.add((1.5, 1.5), (0, 0), 1.0, 0.5)  # 3 diameters x (1 + 2^-24) > 3
+    with pytest.raises(WorldError, match="outside"):
+        p.add((3.0, 1.5), (0, 0), 1.0, 0.5)  # periodic: 0 <= x < width
+    assert p.add((0.0, 2.9), (0, 0), 1.0, 0.49) == 0  # across the edge: fine
+
+
+def test_a_world_cannot_be_copied():
+    import copy
+    import pickle
+    w, _, _ = pair()
+    for f in (copy.copy, copy.deepcopy, pickle.dumps):
+        with pytest.raises(TypeError, match="cannot be copied"):
+            f(w)
+
+
+def test_argument_messages_name_the_argument():
+    w = World(**GOOD)
+    with pytest.raises(TypeError, match="World.add: vel"):
+        w.add((5, 5), "ab", 1.0, 0.5)
+    with pytest.raises(TypeError, match="World.add: mass"):
+        w.add((5, 5), (0, 0), None, 0.5)
 
 
 @pytest.mark.parametrize("pos, vel, mass, radius, error", [
