@@ -173,7 +173,7 @@ class World:
         self._world = ctypes.c_void_p()
         self._check(fns["init"](ctypes.byref(self._world), self._memory, nbytes, ctypes.byref(d)),
                     "World: c2d_world_init refused the memory or the description")
-        self._body = _native.DOUBLE["Body"]()  # reused by get()
+        self._body = _native.DOUBLE["Body"]()  # reused by positions() and velocities()
 
     # ------------------------------------------------ plumbing
 
