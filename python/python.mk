@@ -30,7 +30,7 @@ endif
 
 # The C layout of the public structs (sizeof, offsetof, alignment), which
 # python/tests/test_layout.py compares with the ctypes ones.
-$(B)/python/layout: python/tests/layout.c $(LIB_HDR)
+$(B)/python/layout: python/tests/layout.c $(LIB_HDR) include/collide2d_world.h
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -o $@ python/tests/layout.c
 

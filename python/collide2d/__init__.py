@@ -35,6 +35,24 @@ A struct takes every field or none (all zeros).
 
 The batch calls (collide_batch, collide_batchf) work in place on numpy
 arrays: see collide2d.batch.
+
+World is the event-driven world of hard disks (collide2d_world.h): disks in
+a box with walls or periodic edges, every impact resolved exactly in time
+order by the C library, no time step.  It owns its memory; add / add_many
+put disks in, advance(t) runs to time t, get(i) gives a Body, positions()
+and velocities() numpy arrays of shape (count, 2) at the world's time, and
+stats the counters and the collision virial (for the pressure).  What the
+world refuses (a disk outside the box or overlapping another, a time in the
+past, a full world) raises WorldError, a ValueError; arguments are checked
+as above.  See collide2d.world.
+
+    >>> from collide2d import World
+    >>> w = World(10, 2, capacity=2)                  # walls, restitution 1
+    >>> w.add((1, 1), (1, 0), 1.0, 0.5), w.add((3, 1), (0, 0), 1.0, 0.5)
+    (0, 1)
+    >>> w.advance(2.0)                                # they meet at t = 1
+    >>> w.velocities().tolist(), w.stats.collisions
+    ([[0.0, 0.0], [1.0, 0.0]], 1)
 """
 import enum
 import numbers
@@ -49,6 +67,7 @@ __all__ = [
     "collidef", "collide_normalf", "time_of_impactf", "time_of_impact_accelf", "collide_roughf",
     "collide_rough_normalf",
     "collide_batch", "collide_batchf",
+    "World", "WorldError", "Boundary", "EventKind", "Event", "Stats",
 ]
 
 LIB_PATH = _native.LIB_PATH
@@ -227,3 +246,4 @@ def collide_rough_normalf(a, b, normal, surface):
 
 
 from .batch import collide_batch, collide_batchf  # noqa: E402  (needs Status)
+from .world import Boundary, Event, EventKind, Stats, World, WorldError  # noqa: E402  (needs Status)

@@ -268,3 +268,60 @@ LIB.c2d_version.argtypes = []
 LIB.c2d_version.restype = ctypes.c_long
 LIB.c2d_status_string.argtypes = [ctypes.c_int]
 LIB.c2d_status_string.restype = ctypes.c_char_p
+
+
+# ------------------------------------------------------------ the world
+# collide2d_world.h's structs, plain ctypes (their fields are not all
+# doubles; collide2d.World checks every value before it fills them in).
+
+EVENT_CALLBACK = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_void_p)  # (user, const c2d_world_event *)
+
+
+class WorldEvent(ctypes.Structure):
+    _fields_ = [("kind", ctypes.c_int), ("time", ctypes.c_double), ("a", ctypes.c_size_t),
+                ("b", ctypes.c_size_t), ("impulse", DOUBLE["Vec2"])]
+
+
+class WorldDesc(ctypes.Structure):
+    _fields_ = [("capacity", ctypes.c_size_t), ("width", ctypes.c_double), ("height", ctypes.c_double),
+                ("boundary", ctypes.c_int), ("restitution", ctypes.c_double),
+                ("wall_restitution", ctypes.c_double), ("collapse_speed", ctypes.c_double),
+                ("collapse_count", ctypes.c_uint), ("collapse_time", ctypes.c_double),
+                ("collapse_length", ctypes.c_double), ("on_event", EVENT_CALLBACK),
+                ("user", ctypes.c_void_p)]
+
+
+class WorldStats(ctypes.Structure):
+    _fields_ = [("collisions", ctypes.c_ulonglong), ("wall_collisions", ctypes.c_ulonglong),
+                ("events", ctypes.c_ulonglong), ("time", ctypes.c_double), ("virial", ctypes.c_double)]
+
+
+for _cls in (WorldEvent, WorldDesc, WorldStats):
+    _cls.__module__ = "collide2d"
+
+
+@functools.lru_cache(maxsize=None)
+def world_functions():
+    """The c2d_world_* functions with their prototypes, or None if the
+    library has no world (C2D_NO_DOUBLE, a version before it)."""
+    if getattr(LIB, "c2d_world_init", None) is None:
+        return None
+    p, vp, size, st = ctypes.POINTER, ctypes.c_void_p, ctypes.c_size_t, ctypes.c_int
+    body = DOUBLE["Body"]
+    protos = {
+        "bytes": (size, [p(WorldDesc)]),
+        "init": (st, [p(vp), vp, size, p(WorldDesc)]),
+        "add": (st, [vp, p(body), ctypes.c_double, p(size)]),
+        "advance": (st, [vp, ctypes.c_double]),
+        "get": (st, [vp, size, p(body)]),
+        "get_stats": (None, [vp, p(WorldStats)]),
+        "count": (size, [vp]),
+        "set_velocity": (st, [vp, size, DOUBLE["Vec2"]]),
+        "remove": (st, [vp, size]),
+    }
+    fns = {}
+    for name, (restype, argtypes) in protos.items():
+        fn = getattr(LIB, "c2d_world_" + name)
+        fn.restype, fn.argtypes = restype, argtypes
+        fns[name] = fn
+    return fns

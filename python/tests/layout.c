@@ -5,11 +5,12 @@
  *   struct NAME SIZE ALIGN
  *   field NAME MEMBER OFFSET SIZE
  *   type NAME SIZE ALIGN
- * C99 has no alignof: the offset of T after a char in a struct is T's. */
+ * collide2d.h's and collide2d_world.h's.  C99 has no alignof: the offset of T after a char in a struct is T's. */
 #include <stddef.h>
 #include <stdio.h>
 
 #include "collide2d.h"
+#include "collide2d_world.h"
 
 #define ALIGN(T) offsetof(struct { char c; T t; }, t)
 #define STRUCT(T) printf("struct %s %zu %zu\n", #T, sizeof(T), ALIGN(T))
@@ -36,6 +37,20 @@ int main(void)
     FIELD(c2d_pairs, pos_ax); FIELD(c2d_pairs, pos_ay); FIELD(c2d_pairs, pos_bx); FIELD(c2d_pairs, pos_by);
     FIELD(c2d_pairs, vel_ax); FIELD(c2d_pairs, vel_ay); FIELD(c2d_pairs, vel_bx); FIELD(c2d_pairs, vel_by);
     FIELD(c2d_pairs, mass_a); FIELD(c2d_pairs, mass_b);
+    TYPE(c2d_boundary);
+    TYPE(c2d_world_event_kind);
+    STRUCT(c2d_world_event);
+    FIELD(c2d_world_event, kind); FIELD(c2d_world_event, time); FIELD(c2d_world_event, a);
+    FIELD(c2d_world_event, b); FIELD(c2d_world_event, impulse);
+    STRUCT(c2d_world_desc);
+    FIELD(c2d_world_desc, capacity); FIELD(c2d_world_desc, width); FIELD(c2d_world_desc, height);
+    FIELD(c2d_world_desc, boundary); FIELD(c2d_world_desc, restitution); FIELD(c2d_world_desc, wall_restitution);
+    FIELD(c2d_world_desc, collapse_speed); FIELD(c2d_world_desc, collapse_count);
+    FIELD(c2d_world_desc, collapse_time); FIELD(c2d_world_desc, collapse_length);
+    FIELD(c2d_world_desc, on_event); FIELD(c2d_world_desc, user);
+    STRUCT(c2d_world_stats);
+    FIELD(c2d_world_stats, collisions); FIELD(c2d_world_stats, wall_collisions); FIELD(c2d_world_stats, events);
+    FIELD(c2d_world_stats, time); FIELD(c2d_world_stats, virial);
 #endif
 #ifndef C2D_NO_FLOAT
     STRUCT(c2d_vec2f);

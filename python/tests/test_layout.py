@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 """The ctypes structs against the C ones: size, alignment, and
 every field's name, order, offset and size, as the C compiler lays them out
-(python/tests/layout.c prints sizeof/offsetof).  make test-python builds
+(python/tests/layout.c prints sizeof/offsetof of collide2d.h's and
+collide2d_world.h's).  make test-python builds
 that program as $(B)/python/layout and names it in COLLIDE2D_LAYOUT; run by
 hand, the test builds it with $CC (default cc) itself."""
 import ctypes
@@ -16,13 +17,15 @@ import collide2d
 from collide2d import _native
 from conftest import PYTHON_DIR, REPO
 
-HEADER = open(os.path.join(REPO, "include", "collide2d.h")).read()
+HEADER = "".join(open(os.path.join(REPO, "include", h)).read() for h in ("collide2d.h", "collide2d_world.h"))
 
 MIRRORED = {  # C struct -> its ctypes class
     "c2d_vec2": collide2d.Vec2, "c2d_body": collide2d.Body, "c2d_disk": collide2d.Disk,
     "c2d_surface": collide2d.Surface, "c2d_pairs": _native.DOUBLE["Pairs"],
     "c2d_vec2f": collide2d.Vec2f, "c2d_bodyf": collide2d.Bodyf, "c2d_diskf": collide2d.Diskf,
     "c2d_surfacef": collide2d.Surfacef, "c2d_pairsf": _native.FLOAT["Pairs"],
+    "c2d_world_event": _native.WorldEvent, "c2d_world_desc": _native.WorldDesc,
+    "c2d_world_stats": _native.WorldStats,
 }
 # The Q16.16 API has no binding (no c2d_*x function is wrapped): its structs
 # are laid out by the program but have no ctypes twin to compare.
@@ -30,6 +33,7 @@ NOT_MIRRORED = {"c2d_vec2x", "c2d_bodyx"}
 TYPES = {  # C type -> the ctypes type the binding passes it as
     "c2d_status": ctypes.c_int,  # the scalar calls' restype, the batch's status array (numpy.intc)
     "int": ctypes.c_int, "size_t": ctypes.c_size_t, "long": ctypes.c_long,  # c2d_version's restype
+    "c2d_boundary": ctypes.c_int, "c2d_world_event_kind": ctypes.c_int,  # enums: WorldDesc, WorldEvent
 }
 NOT_MIRRORED_TYPES = {"c2d_fixed"}
 
@@ -63,11 +67,13 @@ def layout(tmp_path_factory):
 def test_the_program_covers_every_struct_of_the_header(layout):
     structs, fields, _ = layout
     in_header = set(re.findall(r"typedef struct (\w+) \{", HEADER))
-    assert len(in_header) == 12
+    assert len(in_header) == 15
     assert set(structs) == in_header == set(MIRRORED) | NOT_MIRRORED
     for name in in_header:  # every member, as the header declares them
         body = re.search(r"typedef struct %s \{(.*?)\} %s;" % (name, name), HEADER, re.S).group(1)
-        members = re.findall(r"(\w+)\s*[,;]", re.sub(r"/\*.*?\*/", "", body, flags=re.S))
+        body = re.sub(r"/\*.*?\*/", "", body, flags=re.S)
+        body = re.sub(r"\(\s*\*\s*(\w+)\s*\)\s*\([^)]*\)", r"\1", body)  # a function pointer: its name
+        members = re.findall(r"(\w+)\s*[,;]", body)
         assert [m for m, _, _ in fields[name]] == members, name
 
 
