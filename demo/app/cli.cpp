@@ -51,6 +51,14 @@ namespace {
 
 [[noreturn]] void fail(const std::string &message) { throw UsageError{message}; }
 
+// A message from its parts, appended into one string (no temporaries).
+template <typename... Parts>
+std::string cat(const Parts &...parts) {
+    std::string s;
+    (s += ... += parts);
+    return s;
+}
+
 // Whether a number's literal has a non-zero digit before its exponent: 0 is
 // not an underflow, 1e-400 is.
 bool nonzero_literal(const std::string &text) {
@@ -214,11 +222,11 @@ Options parse(int argc, char **argv) {
         // taking a value may be given once (a second one would silently win).
         auto value = [&]() -> std::string {
             if (i + 1 >= argc) fail(flag + " needs a value");
-            const std::string v = argv[++i];
+            std::string v = argv[++i];
             if (flag != "--place" && flag != "--shot") {
                 const auto first = given.find(flag);
                 if (first != given.end())
-                    fail(flag + " given twice ('" + first->second + "', then '" + v + "'); it takes one value");
+                    fail(cat(flag, " given twice ('", first->second, "', then '", v, "'); it takes one value"));
                 given.emplace(flag, v);
             }
             return v;
@@ -287,9 +295,9 @@ Options parse(int argc, char **argv) {
             const size_t equals = flag.find('=');
             const std::string name = flag.substr(0, equals);
             if (equals != std::string::npos && takes_value(name))
-                fail("'" + flag + "': give the value as the next argument (" + name + " " + flag.substr(equals + 1) + ")");
+                fail(cat("'", flag, "': give the value as the next argument (", name, " ", flag.substr(equals + 1), ")"));
             if (equals != std::string::npos && (name == "--headless" || name == "--json" || name == "--help"))
-                fail("'" + flag + "': " + name + " takes no value");
+                fail(cat("'", flag, "': ", name, " takes no value"));
             if (flag.empty() || flag[0] != '-')
                 fail("unexpected argument '" + flag + "' (the options start with --; see --help)");
             fail("unknown option '" + flag + "' (see --help)");
