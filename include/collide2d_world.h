@@ -15,7 +15,8 @@
  *   motion is exact, and the state at any time is computed from the disk's
  *   last event.  A disk may have a constant acceleration (a parabola
  *   between events: a ball decelerating on cloth) and a timer (an event at
- *   which the caller changes its motion).
+ *   which the caller changes its motion); static segments and circles, each
+ *   with its own restitution, stand in the box (a table's cushions).
  *
  * EXAMPLE
  *   c2d_world_desc d = {0};
@@ -112,11 +113,12 @@
  *
  * MEMORY
  *   c2d_world_bytes(desc) bytes aligned to 8 bytes (any malloc result, or a
- *   static array of double/uint64_t); on 64-bit targets 320 bytes plus 160
+ *   static array of double/uint64_t); on 64-bit targets 368 bytes plus 160
  *   per disk of capacity: the disk's state (128 bytes; the array starts on
  *   a 64-byte boundary within the buffer, so one cache line holds what a
  *   prediction reads of a neighbour), its heap entry (24) and 2 cells of
- *   the grid (4 each; at most 2 x capacity + 16 cells).  The world lives
+ *   the grid (4 each; at most 2 x capacity + 16 cells), and 80 bytes per
+ *   static of desc->statics (segments and circles).  The world lives
  *   entirely in that memory and points into it: do not move or copy it
  *   while in use (make a new world instead).  Nothing else is kept.
  *
@@ -154,16 +156,18 @@ typedef enum c2d_boundary { C2D_WALLS = 0, C2D_PERIODIC = 1 } c2d_boundary;
 typedef enum c2d_world_event_kind {
     C2D_WORLD_IMPACT = 0,
     C2D_WORLD_WALL = 1,
-    C2D_WORLD_TIMER = 2 /* a disk's timer (c2d_world_set_timer) is due */
+    C2D_WORLD_TIMER = 2, /* a disk's timer (c2d_world_set_timer) is due */
+    C2D_WORLD_STATIC = 3 /* a disk met a static segment or circle */
 } c2d_world_event_kind;
 typedef struct c2d_world_event {
     c2d_world_event_kind kind;
     double time;      /* when */
     size_t a, b;      /* IMPACT: the disks, a < b; WALL: the disk, and the wall
                          0..3 (x = 0, x = width, y = 0, y = height); TIMER: the
-                         disk, and 0 */
+                         disk, and 0; STATIC: the disk, and the static's index */
     c2d_vec2 impulse; /* IMPACT: on b (a gets its negative); WALL: on the disk
                          (0 when it comes to rest on the wall at normal speed 0);
+                         STATIC: on the disk;
                          TIMER: 0 */
 } c2d_world_event;
 
@@ -191,6 +195,7 @@ typedef struct c2d_world_desc {
      * never lets the advance finish: that is the caller's loop. */
     void (*on_event)(void *user, const c2d_world_event *event);
     void *user;              /* passed to on_event */
+    size_t statics;          /* most static segments and circles, 0 to 65536 [0: none] */
 } c2d_world_desc;
 
 typedef struct c2d_world_stats {
@@ -299,6 +304,44 @@ c2d_status c2d_world_get_acceleration(const c2d_world *world, size_t index, c2d_
  *            t before the world's time; nothing changes).
  *   cost     one prediction and a heap update. */
 c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t);
+
+/* Add a static (immovable) segment from a to b (a pool table's cushion),
+ * with its own restitution in [0, 1]; *index (if not NULL) receives its
+ * index among the statics (segments and circles, in order of addition
+ * from 0; desc->statics of them at most).  A disk meets its interior
+ * (the centre's distance to the line reaching the radius, the foot within
+ * the segment: the time exactly from the normal coordinate, with
+ * acceleration the quadratic's root) or either end (c2d_time_of_impact or
+ * c2d_time_of_impact_accel against a point), and is resolved by
+ * c2d_collide_normal against a body of mass INFINITY at rest with the
+ * contact normal (the segment's unit normal, or end minus centre), so a
+ * reflection is exact to c2d_collide_normal's accuracy and nothing passes
+ * through a segment however thin or fast.  Elastic (e = 1) by the collapse
+ * rule, as at a wall.  No rest rule: a disk at rest on a static and
+ * pressed into it by its acceleration touches it with no approach speed
+ * (no event, it sinks in until its next event), and one bouncing on a
+ * static under an acceleration into it keeps bouncing, at e = 1 by the
+ * collapse rule once the bounces are below collapse_length (an event
+ * every sqrt(2 collapse_length / a)): stop such a disk from a timer, or
+ * use the box's walls, which have the rest rule.  Statics are not checked against disks for overlap,
+ * take no part in the broadphase and see no periodic images: every
+ * prediction tries every static (measured: a few statics cost little; for
+ * many, cells would be needed).  Reported as C2D_WORLD_STATIC events and
+ * counted in stats.wall_collisions.
+ *   returns  C2D_OK; C2D_INVALID (NULL world, NaN/Inf, a == b, restitution
+ *            outside [0, 1], the statics full, inside on_event; nothing
+ *            changes).
+ *   cost     every disk predicted anew: O(N (disks in 9 cells + statics)). */
+c2d_status c2d_world_add_segment(c2d_world *world, c2d_vec2 a, c2d_vec2 b, double restitution, size_t *index);
+
+/* Add a static circle (a cushion's nose, a post), centre and radius > 0,
+ * with its own restitution: as c2d_world_add_segment (impacts by
+ * c2d_time_of_impact with the radius sum, normal centre minus disk).
+ *   returns  C2D_OK; C2D_INVALID (NULL world, NaN/Inf, radius <= 0,
+ *            restitution outside [0, 1], the statics full, inside on_event).
+ *   cost     as c2d_world_add_segment. */
+c2d_status c2d_world_add_circle(c2d_world *world, c2d_vec2 centre, double radius, double restitution,
+                                size_t *index);
 
 #endif /* C2D_NO_DOUBLE */
 

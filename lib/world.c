@@ -38,6 +38,7 @@
 #define C2D_W_COLLIDE c2d_collide
 #define C2D_W_TOI c2d_time_of_impact
 #define C2D_W_TOI_ACCEL c2d_time_of_impact_accel
+#define C2D_W_COLLIDE_NORMAL c2d_collide_normal
 
 #ifdef __GNUC__
 #define C2D_W_SQRT __builtin_sqrt
@@ -52,6 +53,7 @@
 #define C2D_W_INF (DBL_MAX * 2.0)
 #define C2D_W_MARGIN (1.0 + 1.0 / 16777216.0) /* cell width over the largest diameter */
 #define C2D_W_COLLAPSE_COUNT 16u
+#define C2D_W_MAX_STATICS 0x10000u /* statics are partners 4 + k of a wall event */
 #ifndef C2D_W_CELLS_PER_DISK
 #define C2D_W_CELLS_PER_DISK 2u /* the grid's budget: cells per disk of capacity (+ 16) */
 #endif
@@ -82,6 +84,13 @@ typedef struct c2d_w_disk {
 } c2d_w_disk;
 typedef char c2d_w_disk_is_128_bytes[sizeof(c2d_w_disk) == 128 ? 1 : -1];
 
+/* A static segment (a to b, unit normal n, length len) or circle (centre
+ * a, radius), immovable. */
+typedef struct c2d_w_static {
+    double ax, ay, bx, by, nx, ny, len, radius, restitution;
+    uint32_t circle, spare;
+} c2d_w_static;
+
 /* A heap entry: a disk's next event, its time and its tie key
  * (kind << 62 | lower index << 31 | higher index). */
 typedef struct c2d_w_entry {
@@ -94,7 +103,8 @@ struct c2d_world {
     c2d_w_disk *disk;
     c2d_w_entry *heap; /* a min-heap on (when, tie) */
     uint32_t *head;  /* first disk of each cell, C2D_W_NONE for none */
-    size_t capacity, count, budget;
+    c2d_w_static *stat;
+    size_t capacity, count, budget, scapacity, nstatic;
     size_t mx, my;   /* cells per side (0 until the first disk) */
     double width, height, restitution, wall_restitution, collapse_speed, collapse_time, collapse_length;
     double cw, ch;   /* cell sides */
@@ -127,6 +137,7 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
 {
     if (d == NULL) return 0;
     if (d->capacity < 1 || d->capacity > C2D_W_MAX_DISKS) return 0;
+    if (d->statics > C2D_W_MAX_STATICS) return 0;
     if (!c2d_w_finite(d->width) || !c2d_w_finite(d->height) || !(d->width > 0) || !(d->height > 0)) return 0;
     if (d->boundary != C2D_WALLS && d->boundary != C2D_PERIODIC) return 0;
     if (!(d->restitution >= 0 && d->restitution <= 1)) return 0;
@@ -139,7 +150,8 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
 
 /* Offsets of the disks, the heap and the cells in the memory, and the
  * total; 0 if the sizes overflow size_t. */
-static size_t c2d_w_layout(size_t capacity, size_t *disks, size_t *heap, size_t *cells)
+static size_t c2d_w_layout(size_t capacity, size_t statics, size_t *disks, size_t *heap, size_t *cells,
+                           size_t *stat)
 {
     const size_t top = (size_t)-1;
     size_t budget = C2D_W_CELLS_PER_DISK * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)) + 56, n;
@@ -152,25 +164,28 @@ static size_t c2d_w_layout(size_t capacity, size_t *disks, size_t *heap, size_t 
     n = capacity * sizeof(c2d_w_entry);
     off += n;
     *cells = off;
-    if (budget > top / 8 || budget * sizeof(uint32_t) > top - off) return 0;
-    return off + budget * sizeof(uint32_t);
+    if (budget > top / 8 || budget * sizeof(uint32_t) > top - off - 8) return 0;
+    off = C2D_W_ROUND8(off + budget * sizeof(uint32_t));
+    *stat = off;
+    if (statics > (top - off) / sizeof(c2d_w_static)) return 0;
+    return off + statics * sizeof(c2d_w_static);
 }
 
 size_t c2d_world_bytes(const c2d_world_desc *desc)
 {
-    size_t a, b, c;
+    size_t a, b, c, e;
     if (!c2d_w_desc_ok(desc)) return 0;
-    return c2d_w_layout(desc->capacity, &a, &b, &c);
+    return c2d_w_layout(desc->capacity, desc->statics, &a, &b, &c, &e);
 }
 
 c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c2d_world_desc *desc)
 {
-    size_t od, oh, oc, total;
+    size_t od, oh, oc, os, total;
     unsigned char *m = (unsigned char *)memory;
     c2d_world *w;
     if (world == NULL || memory == NULL || !c2d_w_desc_ok(desc)) return C2D_INVALID;
     if ((uintptr_t)memory % 8u != 0) return C2D_INVALID;
-    total = c2d_w_layout(desc->capacity, &od, &oh, &oc);
+    total = c2d_w_layout(desc->capacity, desc->statics, &od, &oh, &oc, &os);
     if (total == 0 || bytes < total) return C2D_INVALID;
     w = (c2d_world *)memory;
     {
@@ -178,8 +193,11 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
         w->disk = (c2d_w_disk *)(void *)(m + od - back);
         w->heap = (c2d_w_entry *)(void *)(m + oh - back);
         w->head = (uint32_t *)(void *)(m + oc - back);
+        w->stat = (c2d_w_static *)(void *)(m + os - back);
     }
     w->capacity = desc->capacity;
+    w->scapacity = desc->statics;
+    w->nstatic = 0;
     w->count = 0;
     w->budget = C2D_W_CELLS_PER_DISK * desc->capacity + 16;
     w->mx = w->my = 0;
@@ -367,6 +385,86 @@ static int c2d_w_refused_now(const c2d_body *a, const c2d_body *b)
     return C2D_W_COLLIDE(&ta, &tb, 1.0) != C2D_OK;
 }
 
+/* The contact point and normal (from the disk towards the static) of a
+ * disk centred at (px, py) against static k: a circle's centre; a
+ * segment's end when the centre's foot on its line lies beyond it, else
+ * the foot, the normal then the segment's own normal (signed).  The
+ * prediction and the impact use the same, so they agree on refusals. */
+static void c2d_w_static_contact(const c2d_w_static *st, double px, double py, c2d_vec2 *point, c2d_vec2 *normal)
+{
+    if (!st->circle) {
+        const double tx = (st->bx - st->ax) / st->len, ty = (st->by - st->ay) / st->len;
+        const double u = tx * (px - st->ax) + ty * (py - st->ay);
+        if (u > 0 && u < st->len) {
+            const double side = st->nx * (px - st->ax) + st->ny * (py - st->ay) >= 0 ? -1.0 : 1.0;
+            point->x = st->ax + tx * u, point->y = st->ay + ty * u;
+            normal->x = side * st->nx, normal->y = side * st->ny;
+            return;
+        }
+        if (!(u > 0)) point->x = st->ax, point->y = st->ay;
+        else point->x = st->bx, point->y = st->by;
+    } else {
+        point->x = st->ax, point->y = st->ay;
+    }
+    normal->x = point->x - px, normal->y = point->y - py;
+}
+
+static int c2d_w_static_refused(const c2d_w_static *st, const c2d_body *a)
+{
+    c2d_body ta = *a, tb;
+    c2d_vec2 n;
+    c2d_w_static_contact(st, a->pos.x, a->pos.y, &tb.pos, &n);
+    tb.vel.x = tb.vel.y = 0, tb.mass = C2D_W_INF;
+    return C2D_W_COLLIDE_NORMAL(&ta, &tb, n, 1.0) != C2D_OK;
+}
+
+/* Disk p (at a, now) against every static: a circle (radius sum r + R), a
+ * segment's two ends (points) and its interior (the normal coordinate
+ * reaching +-r with the foot within the segment). */
+static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const c2d_body *a, c2d_w_best *best)
+{
+    const double now = w->now;
+    size_t k;
+    c2d_vec2 acc;
+    acc.x = p->ax, acc.y = p->ay;
+    for (k = 0; k < w->nstatic; k++) {
+        const c2d_w_static *st = &w->stat[k];
+        const uint32_t partner = (uint32_t)(4 + k);
+        int end;
+        for (end = 0; end < (st->circle ? 1 : 2); end++) {
+            c2d_body b;
+            double toi, when;
+            c2d_status r;
+            b.pos.x = end ? st->bx : st->ax, b.pos.y = end ? st->by : st->ay;
+            b.vel.x = b.vel.y = 0, b.mass = C2D_W_INF;
+            if (acc.x == 0 && acc.y == 0) r = C2D_W_TOI(a, &b, p->radius + st->radius, &toi);
+            else {
+                c2d_vec2 zero;
+                zero.x = zero.y = 0;
+                r = C2D_W_TOI_ACCEL(a, acc, &b, zero, p->radius + st->radius, best->when - now, &toi);
+            }
+            if (r != C2D_OK) continue;
+            when = now + toi;
+            if (when == now && c2d_w_static_refused(st, a)) continue;
+            c2d_w_consider(best, when, C2D_W_WALL, partner, 0);
+        }
+        if (!st->circle) {
+            const double d0 = st->nx * (p->x - st->ax) + st->ny * (p->y - st->ay);
+            const double vn = st->nx * p->vx + st->ny * p->vy, an = st->nx * acc.x + st->ny * acc.y;
+            const double dnow = st->nx * (a->pos.x - st->ax) + st->ny * (a->pos.y - st->ay);
+            const double when = dnow >= 0 ? c2d_w_meet(p->t, d0, vn, an, p->radius, -1, now)
+                                          : c2d_w_meet(p->t, d0, vn, an, -p->radius, 1, now);
+            if (when < C2D_W_INF) {
+                const double dt = when - p->t;
+                const double x = c2d_w_at(p->x, p->vx, acc.x, dt), y = c2d_w_at(p->y, p->vy, acc.y, dt);
+                const double u = ((st->bx - st->ax) * (x - st->ax) + (st->by - st->ay) * (y - st->ay)) / st->len;
+                if (u >= 0 && u <= st->len && !(when == now && c2d_w_static_refused(st, a)))
+                    c2d_w_consider(best, when, C2D_W_WALL, partner, 0);
+            }
+        }
+    }
+}
+
 static void c2d_w_predict(c2d_world *w, uint32_t i)
 {
     c2d_w_disk *d = w->disk, *p = &d[i];
@@ -407,6 +505,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     if (p->timer < C2D_W_INF) c2d_w_consider(&best, p->timer, C2D_W_TIMER, 0, 0);
     a.pos.x = px, a.pos.y = py, a.mass = p->mass;
     a.vel.x = c2d_w_vel(p->vx, pax, dt), a.vel.y = c2d_w_vel(p->vy, pay, dt);
+    if (w->nstatic > 0) c2d_w_predict_statics(w, p, &a, &best);
     /* The 3 x 3 cells around, each once (fewer against walls), with the
      * image shift a periodic wrap gives each column and row. */
     nc = c2d_w_neighbours(cx, mx, w->periodic, w->width, col, colshift);
@@ -704,6 +803,47 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
     }
 }
 
+/* Disk i meets static k: c2d_collide_normal against an immovable body at
+ * the contact point, the static's restitution (elastic by the collapse
+ * rule, as at a wall). */
+static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
+{
+    c2d_w_disk *p = &w->disk[i];
+    const c2d_w_static *st = &w->stat[k];
+    const double now = w->now, dt = now - p->t;
+    double e = st->restitution;
+    c2d_body a, b;
+    c2d_vec2 n;
+    a.pos.x = c2d_w_at(p->x, p->vx, p->ax, dt), a.pos.y = c2d_w_at(p->y, p->vy, p->ay, dt), a.mass = p->mass;
+    a.vel.x = c2d_w_vel(p->vx, p->ax, dt), a.vel.y = c2d_w_vel(p->vy, p->ay, dt);
+    c2d_w_static_contact(st, a.pos.x, a.pos.y, &b.pos, &n);
+    b.vel.x = b.vel.y = 0, b.mass = C2D_W_INF;
+    if (e < 1) { /* the collapse rule, as for a wall */
+        /* n points towards the static: vn > 0 approaching */
+        const double nn = C2D_W_SQRT(n.x * n.x + n.y * n.y), vn = a.vel.x * n.x + a.vel.y * n.y;
+        const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
+        const double since = now - p->last;
+        if ((p->last == now && p->same >= w->collapse_count) || since < w->collapse_time ||
+            vn < w->collapse_speed * nn || vn * since < length * nn)
+            e = 1;
+    }
+    {
+        const double vx0 = a.vel.x, vy0 = a.vel.y;
+        if (C2D_W_COLLIDE_NORMAL(&a, &b, n, e) == C2D_OK) {
+            p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
+            c2d_w_impact_clock(p, now);
+            w->stats.wall_collisions++;
+            if (w->on_event != NULL) {
+                c2d_world_event ev;
+                ev.kind = C2D_WORLD_STATIC, ev.time = now, ev.a = i, ev.b = k;
+                ev.impulse.x = (a.vel.x - vx0) * p->mass, ev.impulse.y = (a.vel.y - vy0) * p->mass;
+                c2d_w_emit(w, &ev);
+            }
+        }
+    }
+    c2d_w_predict(w, i);
+}
+
 static void c2d_w_wall(c2d_world *w, uint32_t i)
 {
     c2d_w_disk *p = &w->disk[i];
@@ -712,6 +852,10 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
     const double vx0 = c2d_w_vel(p->vx, p->ax, dt), vy0 = c2d_w_vel(p->vy, p->ay, dt);
     const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
     double *v, *acc;
+    if (p->partner >= 4) {
+        c2d_w_static_hit(w, i, p->partner - 4u);
+        return;
+    }
     p->vx = vx0, p->vy = vy0;
     v = p->partner < 2 ? &p->vx : &p->vy;
     acc = p->partner < 2 ? &p->ax : &p->ay;
@@ -861,6 +1005,47 @@ c2d_status c2d_world_set_acceleration(c2d_world *world, size_t index, c2d_vec2 a
     p->count++;
     c2d_w_predict(world, (uint32_t)index);
     return C2D_OK;
+}
+
+static c2d_status c2d_w_add_static(c2d_world *w, const c2d_w_static *st, size_t *index)
+{
+    size_t i;
+    w->stat[w->nstatic] = *st;
+    if (index != NULL) *index = w->nstatic;
+    w->nstatic++;
+    if (w->mx > 0)
+        for (i = 0; i < w->count; i++)
+            if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, (uint32_t)i);
+    return C2D_OK;
+}
+
+c2d_status c2d_world_add_segment(c2d_world *world, c2d_vec2 a, c2d_vec2 b, double restitution, size_t *index)
+{
+    c2d_w_static st;
+    double dx, dy;
+    if (world == NULL || world->busy || world->nstatic >= world->scapacity) return C2D_INVALID;
+    if (!c2d_w_finite(a.x) || !c2d_w_finite(a.y) || !c2d_w_finite(b.x) || !c2d_w_finite(b.y)) return C2D_INVALID;
+    if (!(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
+    dx = b.x - a.x, dy = b.y - a.y;
+    st.len = C2D_W_SQRT(dx * dx + dy * dy);
+    if (!(st.len > 0) || !c2d_w_finite(st.len)) return C2D_INVALID;
+    st.ax = a.x, st.ay = a.y, st.bx = b.x, st.by = b.y;
+    st.nx = -dy / st.len, st.ny = dx / st.len;
+    st.radius = 0, st.restitution = restitution, st.circle = 0, st.spare = 0;
+    return c2d_w_add_static(world, &st, index);
+}
+
+c2d_status c2d_world_add_circle(c2d_world *world, c2d_vec2 centre, double radius, double restitution, size_t *index)
+{
+    c2d_w_static st;
+    if (world == NULL || world->busy || world->nstatic >= world->scapacity) return C2D_INVALID;
+    if (!c2d_w_finite(centre.x) || !c2d_w_finite(centre.y) || !c2d_w_finite(radius) || !(radius > 0))
+        return C2D_INVALID;
+    if (!(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
+    st.ax = st.bx = centre.x, st.ay = st.by = centre.y;
+    st.nx = st.ny = st.len = 0;
+    st.radius = radius, st.restitution = restitution, st.circle = 1, st.spare = 0;
+    return c2d_w_add_static(world, &st, index);
 }
 
 c2d_status c2d_world_get_acceleration(const c2d_world *world, size_t index, c2d_vec2 *acceleration)
