@@ -484,24 +484,47 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     /* Walls (the centre at radius from them), then the cell's sides (with no
      * acceleration along an axis, c2d_w_meet is c2d_w_reach for the sides
      * the velocity points to). */
-    if (!w->periodic) {
-        c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, p->radius, -1, now), C2D_W_WALL, 0, 0);
-        c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, w->width - p->radius, 1, now), C2D_W_WALL, 1, 0);
-        c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, p->radius, -1, now), C2D_W_WALL, 2, 0);
-        c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, w->height - p->radius, 1, now), C2D_W_WALL, 3, 0);
+    if (pax == 0 && pay == 0) { /* straight: only the sides the velocity points to */
+        if (!w->periodic) {
+            if (p->vx < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, p->radius, now), C2D_W_WALL, 0, 0);
+            if (p->vx > 0)
+                c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, w->width - p->radius, now), C2D_W_WALL, 1, 0);
+            if (p->vy < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, p->radius, now), C2D_W_WALL, 2, 0);
+            if (p->vy > 0)
+                c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, w->height - p->radius, now), C2D_W_WALL, 3, 0);
+        }
+        if (p->vx < 0 && (cx > 0 || w->periodic))
+            c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, (double)cx * w->cw, now), C2D_W_CELL, 0, 0);
+        if (p->vx > 0 && (cx + 1 < mx || w->periodic))
+            c2d_w_consider(&best,
+                           c2d_w_reach(p->t, p->x, p->vx, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, now),
+                           C2D_W_CELL, 1, 0);
+        if (p->vy < 0 && (cy > 0 || w->periodic))
+            c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, (double)cy * w->ch, now), C2D_W_CELL, 2, 0);
+        if (p->vy > 0 && (cy + 1 < my || w->periodic))
+            c2d_w_consider(&best,
+                           c2d_w_reach(p->t, p->y, p->vy, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, now),
+                           C2D_W_CELL, 3, 0);
+    } else {
+        if (!w->periodic) {
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, p->radius, -1, now), C2D_W_WALL, 0, 0);
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, w->width - p->radius, 1, now), C2D_W_WALL, 1, 0);
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, p->radius, -1, now), C2D_W_WALL, 2, 0);
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, w->height - p->radius, 1, now), C2D_W_WALL, 3, 0);
+        }
+        if (cx > 0 || w->periodic)
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, (double)cx * w->cw, -1, now), C2D_W_CELL, 0, 0);
+        if (cx + 1 < mx || w->periodic)
+            c2d_w_consider(&best,
+                           c2d_w_meet(p->t, p->x, p->vx, pax, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, 1, now),
+                           C2D_W_CELL, 1, 0);
+        if (cy > 0 || w->periodic)
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, (double)cy * w->ch, -1, now), C2D_W_CELL, 2, 0);
+        if (cy + 1 < my || w->periodic)
+            c2d_w_consider(&best,
+                           c2d_w_meet(p->t, p->y, p->vy, pay, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, 1, now),
+                           C2D_W_CELL, 3, 0);
     }
-    if (cx > 0 || w->periodic)
-        c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, (double)cx * w->cw, -1, now), C2D_W_CELL, 0, 0);
-    if (cx + 1 < mx || w->periodic)
-        c2d_w_consider(&best,
-                       c2d_w_meet(p->t, p->x, p->vx, pax, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, 1, now),
-                       C2D_W_CELL, 1, 0);
-    if (cy > 0 || w->periodic)
-        c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, (double)cy * w->ch, -1, now), C2D_W_CELL, 2, 0);
-    if (cy + 1 < my || w->periodic)
-        c2d_w_consider(&best,
-                       c2d_w_meet(p->t, p->y, p->vy, pay, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, 1, now),
-                       C2D_W_CELL, 3, 0);
     if (p->timer < C2D_W_INF) c2d_w_consider(&best, p->timer, C2D_W_TIMER, 0, 0);
     a.pos.x = px, a.pos.y = py, a.mass = p->mass;
     a.vel.x = c2d_w_vel(p->vx, pax, dt), a.vel.y = c2d_w_vel(p->vy, pay, dt);
