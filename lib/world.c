@@ -1032,13 +1032,14 @@ c2d_status c2d_world_set_acceleration(c2d_world *world, size_t index, c2d_vec2 a
 
 static c2d_status c2d_w_add_static(c2d_world *w, const c2d_w_static *st, size_t *index)
 {
-    size_t i;
     w->stat[w->nstatic] = *st;
     if (index != NULL) *index = w->nstatic;
     w->nstatic++;
-    if (w->mx > 0)
+    if (w->mx > 0) {
+        size_t i;
         for (i = 0; i < w->count; i++)
             if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, (uint32_t)i);
+    }
     return C2D_OK;
 }
 
