@@ -13,7 +13,10 @@
  *   disk's centre crossing into another cell of the world's own broadphase.
  *   Nothing is integrated with a time step: between events every disk's
  *   motion is exact, and the state at any time is computed from the disk's
- *   last event.
+ *   last event.  A disk may have a constant acceleration (a parabola
+ *   between events: a ball decelerating on cloth) and a timer (an event at
+ *   which the caller changes its motion); static segments and circles, each
+ *   with its own restitution, stand in the box (a table's cushions).
  *
  * EXAMPLE
  *   c2d_world_desc d = {0};
@@ -60,7 +63,7 @@
  *     one call or in many uneven ones gives the same bits; c2d_world_get
  *     extrapolates without storing anything.
  *   - Simultaneous events are processed in the order: time, then kind
- *     (disk-disk impact, then wall, then cell crossing), then the lower
+ *     (disk-disk impact, then wall, then cell crossing, then timer), then the lower
  *     disk index, then the higher (for a wall or a crossing: x before y,
  *     low side before high side).  A pair is always resolved with the lower
  *     index as c2d_collide's a.  An impact at time t changes the disks'
@@ -84,13 +87,38 @@
  *     cools to 5e-5 to 9e-5 of its energy by t = 200 under each rule, with
  *     10^4 to 3 x 10^4 impacts; without a rule it stalls in clusters.
  *
+ * ACCELERATION (c2d_world_set_acceleration, c2d_world_set_timer)
+ *   - A wall or a cell side is met at the root of a quadratic, computed
+ *     without cancellation (q = -(B + sign(B) sqrt(D)) / 2; roots q / A and
+ *     C / q) from the disk's reference state, so the same state gives the
+ *     same time whenever it is predicted.  Near a tangency the rounding of
+ *     D decides: a path passing a wall by less than a few ulp of the
+ *     coordinates may be taken as a touch (no event: the centre is then
+ *     within those ulp beyond radius of the wall) or the reverse (an event
+ *     with normal speed ~0).  A cell side so missed or taken is harmless:
+ *     cells are 2^-24 of a diameter wider than needed.
+ *   - Resting on a wall: at a wall event with the acceleration's normal
+ *     component a_n pressing into the wall and the rebound (e vn after
+ *     the wall restitution and the collapse rule) rising less than
+ *     collapse_length ((e vn)^2 <= 2 a_n collapse_length, default 2^-20
+ *     radius), the disk stays on the wall: its normal velocity and the
+ *     normal component of its acceleration are set to 0
+ *     (c2d_world_get_acceleration shows it; the tangential ones are kept).
+ *     A disk at rest against a wall and pushed into it so has one wall
+ *     event, then none; a bouncing one with e < 1 stops after about
+ *     log(h / collapse_length) / log(1 / e^2) bounces.
+ *   - Disks pressed together by accelerations have no resting contact: a
+ *     touching pair with no approach speed is no event (c2d_collide would
+ *     refuse it); once their paths close in they meet as an impact.
+ *
  * MEMORY
  *   c2d_world_bytes(desc) bytes aligned to 8 bytes (any malloc result, or a
- *   static array of double/uint64_t); on 64-bit targets 320 bytes plus 160
+ *   static array of double/uint64_t); on 64-bit targets 368 bytes plus 160
  *   per disk of capacity: the disk's state (128 bytes; the array starts on
  *   a 64-byte boundary within the buffer, so one cache line holds what a
  *   prediction reads of a neighbour), its heap entry (24) and 2 cells of
- *   the grid (4 each; at most 2 x capacity + 16 cells).  The world lives
+ *   the grid (4 each; at most 2 x capacity + 16 cells), and 80 bytes per
+ *   static of desc->statics (segments and circles).  The world lives
  *   entirely in that memory and points into it: do not move or copy it
  *   while in use (make a new world instead).  Nothing else is kept.
  *
@@ -125,13 +153,22 @@ typedef struct c2d_world c2d_world;
 typedef enum c2d_boundary { C2D_WALLS = 0, C2D_PERIODIC = 1 } c2d_boundary;
 
 /* What c2d_world_desc.on_event receives after each impact. */
-typedef enum c2d_world_event_kind { C2D_WORLD_IMPACT = 0, C2D_WORLD_WALL = 1 } c2d_world_event_kind;
+typedef enum c2d_world_event_kind {
+    C2D_WORLD_IMPACT = 0,
+    C2D_WORLD_WALL = 1,
+    C2D_WORLD_TIMER = 2, /* a disk's timer (c2d_world_set_timer) is due */
+    C2D_WORLD_STATIC = 3 /* a disk met a static segment or circle */
+} c2d_world_event_kind;
 typedef struct c2d_world_event {
     c2d_world_event_kind kind;
     double time;      /* when */
     size_t a, b;      /* IMPACT: the disks, a < b; WALL: the disk, and the wall
-                         0..3 (x = 0, x = width, y = 0, y = height) */
-    c2d_vec2 impulse; /* IMPACT: on b (a gets its negative); WALL: on the disk */
+                         0..3 (x = 0, x = width, y = 0, y = height); TIMER: the
+                         disk, and 0; STATIC: the disk, and the static's index */
+    c2d_vec2 impulse; /* IMPACT: on b (a gets its negative); WALL: on the disk
+                         (0 when it comes to rest on the wall at normal speed 0);
+                         STATIC: on the disk;
+                         TIMER: 0 */
 } c2d_world_event;
 
 typedef struct c2d_world_desc {
@@ -148,11 +185,17 @@ typedef struct c2d_world_desc {
     double collapse_length;  /* >= 0, finite: an impact is elastic when the pair has closed
                                 less than this (approach speed x time since either disk's
                                 previous impact) [0: 2^-20 x the smaller radius] */
-    /* Called after each impact, during c2d_world_advance [NULL: none]: it may
-     * read the world (c2d_world_get gives states at the event's time) but
-     * not change it. */
+    /* Called after each impact and each due timer, during c2d_world_advance
+     * [NULL: none].  It may read the world (c2d_world_get gives states at
+     * the event's time) and call c2d_world_set_velocity,
+     * c2d_world_set_acceleration and c2d_world_set_timer on any disk (they
+     * act at the event's time; the disks are predicted anew after); there
+     * c2d_world_add, c2d_world_remove and c2d_world_advance return
+     * C2D_INVALID.  A timer set again and again to the event's own time
+     * never lets the advance finish: that is the caller's loop. */
     void (*on_event)(void *user, const c2d_world_event *event);
     void *user;              /* passed to on_event */
+    size_t statics;          /* most static segments and circles, 0 to 65536 [0: none] */
 } c2d_world_desc;
 
 typedef struct c2d_world_stats {
@@ -173,8 +216,8 @@ size_t c2d_world_bytes(const c2d_world_desc *desc);
  *            written. */
 c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c2d_world_desc *desc);
 
-/* Add a disk at the world's time: disk->pos, disk->vel, disk->mass and its
- * radius; *index (if index is not NULL) receives its index (the number of
+/* Add a disk at the world's time (no acceleration, no timer): disk->pos,
+ * disk->vel, disk->mass and its radius; *index (if index is not NULL) receives its index (the number of
  * disks before it).
  *   returns  C2D_OK, or C2D_INVALID (NULL world or disk, NaN/Inf, mass or
  *            radius <= 0, outside the box, overlapping a disk (distance <
@@ -193,8 +236,9 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
 c2d_status c2d_world_advance(c2d_world *world, double t);
 
 /* Disk `index` at the world's time: position (its last event's position
- * plus velocity x elapsed time; in a periodic box within [0, width) up to
- * rounding), velocity and mass.  Changes nothing.
+ * plus (velocity + acceleration x elapsed / 2) x elapsed time; in a
+ * periodic box within [0, width) up to rounding), velocity (plus
+ * acceleration x elapsed time) and mass.  Changes nothing.
  *   returns  C2D_OK, or C2D_INVALID (NULL, index >= number of disks, a
  *            removed disk). */
 c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk);
@@ -219,6 +263,85 @@ c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 veloc
  *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or already removed).
  *   cost     O(disks in its cell) and a heap update. */
 c2d_status c2d_world_remove(c2d_world *world, size_t index);
+
+/* Give disk `index` a constant acceleration from the world's time on
+ * (length per time^2; {0, 0} for straight lines again).  Its position and
+ * velocity there become its reference (t0): until its next event
+ * x(t) = x0 + (v0 + 0.5 acc (t - t0)) (t - t0), v(t) = v0 + acc (t - t0),
+ * evaluated in double exactly so (c2d_world_get and the events use it).
+ * Impacts between accelerated disks are predicted by
+ * c2d_time_of_impact_accel with the disk's own next event so far as the
+ * horizon; walls and cell crossings by the roots of the quadratic (see
+ * ACCELERATION above for the rules at rest and their accuracy).  A
+ * decelerating ball does not stop by itself: the acceleration would turn
+ * it back; set a timer at the stop (|v| / |acc|) and there set velocity
+ * and acceleration to 0 (see c2d_world_set_timer).
+ *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed,
+ *            NaN/Inf in acceleration; nothing changes).
+ *   cost     one prediction and a heap update; a world that has ever had a
+ *            non-zero acceleration reads its neighbours' accelerations in
+ *            every prediction (a second cache line per neighbour) and pays
+ *            c2d_time_of_impact_accel (a few hundred ns) for every pair
+ *            with either disk accelerated. */
+c2d_status c2d_world_set_acceleration(c2d_world *world, size_t index, c2d_vec2 acceleration);
+
+/* Disk `index`'s acceleration (as set, or with the component into a wall
+ * zeroed by the rest rule).
+ *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed). */
+c2d_status c2d_world_get_acceleration(const c2d_world *world, size_t index, c2d_vec2 *acceleration);
+
+/* Schedule disk `index`'s timer at absolute time t >= the world's time
+ * (replacing any pending one; t = INFINITY cancels it).  When due, during
+ * c2d_world_advance, the timer is cleared and on_event receives a
+ * C2D_WORLD_TIMER event (a = index), from which the caller may set the
+ * disk's velocity, acceleration or a new timer: the pool game's
+ * slide -> roll -> stop.  Advancing to exactly t and calling the setters
+ * after c2d_world_advance returns gives the same bits as calling them
+ * from the callback.  A timer changes nothing by itself and is not an
+ * impact (no counter but stats.events).  Simultaneous events: impacts,
+ * walls, cell crossings, then timers (lower disk first).
+ *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed, NaN,
+ *            t before the world's time; nothing changes).
+ *   cost     one prediction and a heap update. */
+c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t);
+
+/* Add a static (immovable) segment from a to b (a pool table's cushion),
+ * with its own restitution in [0, 1]; *index (if not NULL) receives its
+ * index among the statics (segments and circles, in order of addition
+ * from 0; desc->statics of them at most).  A disk meets its interior
+ * (the centre's distance to the line reaching the radius, the foot within
+ * the segment: the time exactly from the normal coordinate, with
+ * acceleration the quadratic's root) or either end (c2d_time_of_impact or
+ * c2d_time_of_impact_accel against a point), and is resolved by
+ * c2d_collide_normal against a body of mass INFINITY at rest with the
+ * contact normal (the segment's unit normal, or end minus centre), so a
+ * reflection is exact to c2d_collide_normal's accuracy and nothing passes
+ * through a segment however thin or fast.  Elastic (e = 1) by the collapse
+ * rule, as at a wall.  No rest rule: a disk at rest on a static and
+ * pressed into it by its acceleration touches it with no approach speed
+ * (no event, it sinks in until its next event), and one bouncing on a
+ * static under an acceleration into it keeps bouncing, at e = 1 by the
+ * collapse rule once the bounces are below collapse_length (an event
+ * every sqrt(2 collapse_length / a)): stop such a disk from a timer, or
+ * use the box's walls, which have the rest rule.  Statics are not checked against disks for overlap,
+ * take no part in the broadphase and see no periodic images: every
+ * prediction tries every static (measured: a few statics cost little; for
+ * many, cells would be needed).  Reported as C2D_WORLD_STATIC events and
+ * counted in stats.wall_collisions.
+ *   returns  C2D_OK; C2D_INVALID (NULL world, NaN/Inf, a == b, restitution
+ *            outside [0, 1], the statics full, inside on_event; nothing
+ *            changes).
+ *   cost     every disk predicted anew: O(N (disks in 9 cells + statics)). */
+c2d_status c2d_world_add_segment(c2d_world *world, c2d_vec2 a, c2d_vec2 b, double restitution, size_t *index);
+
+/* Add a static circle (a cushion's nose, a post), centre and radius > 0,
+ * with its own restitution: as c2d_world_add_segment (impacts by
+ * c2d_time_of_impact with the radius sum, normal centre minus disk).
+ *   returns  C2D_OK; C2D_INVALID (NULL world, NaN/Inf, radius <= 0,
+ *            restitution outside [0, 1], the statics full, inside on_event).
+ *   cost     as c2d_world_add_segment. */
+c2d_status c2d_world_add_circle(c2d_world *world, c2d_vec2 centre, double radius, double restitution,
+                                size_t *index);
 
 #endif /* C2D_NO_DOUBLE */
 

@@ -37,6 +37,8 @@
  * (double.c): one copy of their code in any build, the same bits. */
 #define C2D_W_COLLIDE c2d_collide
 #define C2D_W_TOI c2d_time_of_impact
+#define C2D_W_TOI_ACCEL c2d_time_of_impact_accel
+#define C2D_W_COLLIDE_NORMAL c2d_collide_normal
 
 #ifdef __GNUC__
 #define C2D_W_SQRT __builtin_sqrt
@@ -51,6 +53,7 @@
 #define C2D_W_INF (DBL_MAX * 2.0)
 #define C2D_W_MARGIN (1.0 + 1.0 / 16777216.0) /* cell width over the largest diameter */
 #define C2D_W_COLLAPSE_COUNT 16u
+#define C2D_W_MAX_STATICS 0x10000u /* statics are partners 4 + k of a wall event */
 #ifndef C2D_W_CELLS_PER_DISK
 #define C2D_W_CELLS_PER_DISK 2u /* the grid's budget: cells per disk of capacity (+ 16) */
 #endif
@@ -58,11 +61,14 @@
 #define C2D_W_CELL_SCALE 1.0 /* cell side over the largest diameter, at least */
 #endif
 
-enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_IDLE = 3, C2D_W_GONE = 4 };
+/* Kinds in the order simultaneous events are processed (a timer's tie key
+ * is 3 like an idle disk's: idle ones are never due). */
+enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_TIMER = 3, C2D_W_IDLE = 4, C2D_W_GONE = 5 };
 
 /* 128 bytes, the first cache line what a prediction reads of a neighbour. */
 typedef struct c2d_w_disk {
-    double x, y, vx, vy, t; /* the state at time t (its last impact) */
+    double x, y, vx, vy, t; /* the state at time t (its last impact); position at
+                               time s: x + (vx + 0.5 ax (s - t)) (s - t) */
     double radius;
     uint64_t count;         /* impacts so far */
     uint32_t next, cell;    /* the next disk in its cell, its cell */
@@ -73,9 +79,17 @@ typedef struct c2d_w_disk {
     uint32_t slot;          /* its place in the heap */
     uint32_t kind;          /* C2D_W_PAIR ... C2D_W_IDLE */
     uint32_t same;          /* impacts at time `last` */
-    uint64_t spare[3];
+    double ax, ay;          /* its constant acceleration since t */
+    double timer;           /* its timer's time, C2D_W_INF for none */
 } c2d_w_disk;
 typedef char c2d_w_disk_is_128_bytes[sizeof(c2d_w_disk) == 128 ? 1 : -1];
+
+/* A static segment (a to b, unit normal n, length len) or circle (centre
+ * a, radius), immovable. */
+typedef struct c2d_w_static {
+    double ax, ay, bx, by, nx, ny, len, radius, restitution;
+    uint32_t circle, spare;
+} c2d_w_static;
 
 /* A heap entry: a disk's next event, its time and its tie key
  * (kind << 62 | lower index << 31 | higher index). */
@@ -89,7 +103,8 @@ struct c2d_world {
     c2d_w_disk *disk;
     c2d_w_entry *heap; /* a min-heap on (when, tie) */
     uint32_t *head;  /* first disk of each cell, C2D_W_NONE for none */
-    size_t capacity, count, budget;
+    c2d_w_static *stat;
+    size_t capacity, count, budget, scapacity, nstatic;
     size_t mx, my;   /* cells per side (0 until the first disk) */
     double width, height, restitution, wall_restitution, collapse_speed, collapse_time, collapse_length;
     double cw, ch;   /* cell sides */
@@ -97,12 +112,22 @@ struct c2d_world {
     double now;      /* the world's time (also the current event's, while advancing) */
     unsigned collapse_count;
     int periodic;
+    int accel;       /* a disk has had a non-zero acceleration */
+    int busy;        /* inside on_event */
     void (*on_event)(void *user, const c2d_world_event *event);
     void *user;
     c2d_world_stats stats;
 };
 
 /* ------------------------------------------------------------ layout */
+
+/* A kind's place in the tie key (2 bits: an idle or gone disk shares the
+ * timer's, never due). */
+#define C2D_W_TIE_KIND(k) ((uint64_t)((k) > 3u ? 3u : (k)) << 62)
+
+/* A coordinate and a velocity component dt after the state's time. */
+static double c2d_w_at(double x, double v, double a, double dt) { return x + (v + 0.5 * a * dt) * dt; }
+static double c2d_w_vel(double v, double a, double dt) { return v + a * dt; }
 
 #define C2D_W_ROUND8(n) (((n) + 7u) / 8u * 8u)
 
@@ -112,6 +137,7 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
 {
     if (d == NULL) return 0;
     if (d->capacity < 1 || d->capacity > C2D_W_MAX_DISKS) return 0;
+    if (d->statics > C2D_W_MAX_STATICS) return 0;
     if (!c2d_w_finite(d->width) || !c2d_w_finite(d->height) || !(d->width > 0) || !(d->height > 0)) return 0;
     if (d->boundary != C2D_WALLS && d->boundary != C2D_PERIODIC) return 0;
     if (!(d->restitution >= 0 && d->restitution <= 1)) return 0;
@@ -124,7 +150,8 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
 
 /* Offsets of the disks, the heap and the cells in the memory, and the
  * total; 0 if the sizes overflow size_t. */
-static size_t c2d_w_layout(size_t capacity, size_t *disks, size_t *heap, size_t *cells)
+static size_t c2d_w_layout(size_t capacity, size_t statics, size_t *disks, size_t *heap, size_t *cells,
+                           size_t *stat)
 {
     const size_t top = (size_t)-1;
     size_t budget = C2D_W_CELLS_PER_DISK * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)) + 56, n;
@@ -137,25 +164,28 @@ static size_t c2d_w_layout(size_t capacity, size_t *disks, size_t *heap, size_t 
     n = capacity * sizeof(c2d_w_entry);
     off += n;
     *cells = off;
-    if (budget > top / 8 || budget * sizeof(uint32_t) > top - off) return 0;
-    return off + budget * sizeof(uint32_t);
+    if (budget > top / 8 || budget * sizeof(uint32_t) > top - off - 8) return 0;
+    off = C2D_W_ROUND8(off + budget * sizeof(uint32_t));
+    *stat = off;
+    if (statics > (top - off) / sizeof(c2d_w_static)) return 0;
+    return off + statics * sizeof(c2d_w_static);
 }
 
 size_t c2d_world_bytes(const c2d_world_desc *desc)
 {
-    size_t a, b, c;
+    size_t a, b, c, e;
     if (!c2d_w_desc_ok(desc)) return 0;
-    return c2d_w_layout(desc->capacity, &a, &b, &c);
+    return c2d_w_layout(desc->capacity, desc->statics, &a, &b, &c, &e);
 }
 
 c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c2d_world_desc *desc)
 {
-    size_t od, oh, oc, total;
+    size_t od, oh, oc, os, total;
     unsigned char *m = (unsigned char *)memory;
     c2d_world *w;
     if (world == NULL || memory == NULL || !c2d_w_desc_ok(desc)) return C2D_INVALID;
     if ((uintptr_t)memory % 8u != 0) return C2D_INVALID;
-    total = c2d_w_layout(desc->capacity, &od, &oh, &oc);
+    total = c2d_w_layout(desc->capacity, desc->statics, &od, &oh, &oc, &os);
     if (total == 0 || bytes < total) return C2D_INVALID;
     w = (c2d_world *)memory;
     {
@@ -163,8 +193,11 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
         w->disk = (c2d_w_disk *)(void *)(m + od - back);
         w->heap = (c2d_w_entry *)(void *)(m + oh - back);
         w->head = (uint32_t *)(void *)(m + oc - back);
+        w->stat = (c2d_w_static *)(void *)(m + os - back);
     }
     w->capacity = desc->capacity;
+    w->scapacity = desc->statics;
+    w->nstatic = 0;
     w->count = 0;
     w->budget = C2D_W_CELLS_PER_DISK * desc->capacity + 16;
     w->mx = w->my = 0;
@@ -177,6 +210,8 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     w->collapse_length = desc->collapse_length;
     w->collapse_count = desc->collapse_count == 0 ? C2D_W_COLLAPSE_COUNT : desc->collapse_count;
     w->periodic = desc->boundary == C2D_PERIODIC;
+    w->accel = 0;
+    w->busy = 0;
     w->on_event = desc->on_event;
     w->user = desc->user;
     w->cw = w->ch = 0;
@@ -307,12 +342,136 @@ static double c2d_w_reach(double t, double x, double v, double to, double now)
     return when < now ? now : when;
 }
 
+/* The first time >= now at which a coordinate x + v s + a s^2 / 2 (s the
+ * time since t) passes `to` moving in direction dir (+1: upwards, -1:
+ * downwards): g(s) = dir (x(s) - to) rising through 0.  C2D_W_INF for never.
+ * With a == 0 it is c2d_w_reach's time (the same bits).  Otherwise the roots
+ * of A s^2 + B s + C come from the cancellation-free pair q / A, C / q
+ * (q = -(B + sign(B) sqrt(D)) / 2); g already past 0 (rounding) and rising
+ * is due at once, past 0 and falling back is no event (else a disk that
+ * just crossed into a cell could cross back and forth at one instant); a
+ * double root with A < 0 only touches (no event), with A > 0 it passes.  Errors: a few ulp of the root, plus near a tangency (D ~ 0) the
+ * rounding of D: a path that in exact arithmetic passes `to` by less than
+ * a few ulp of the coordinates may be taken as a touch and the reverse. */
+static double c2d_w_meet(double t, double x, double v, double a, double to, double dir, double now)
+{
+    double A, B, C, D, q, r1, r2, lo, hi, vertex;
+    if (a == 0) return dir * v > 0 ? c2d_w_reach(t, x, v, to, now) : C2D_W_INF;
+    A = dir * (0.5 * a), B = dir * v, C = dir * (x - to);
+    D = B * B - 4 * A * C;
+    vertex = t + -B / (2 * A);
+    if (!(D >= 0)) { /* A > 0: g > 0 throughout (past already): at its lowest */
+        if (A < 0) return C2D_W_INF;
+        return vertex < now ? now : vertex;
+    }
+    if (D == 0 && A < 0) return C2D_W_INF;
+    q = -0.5 * (B + (B >= 0 ? C2D_W_SQRT(D) : -C2D_W_SQRT(D)));
+    r1 = q / A;
+    r2 = q != 0 ? C / q : r1;
+    lo = r1 < r2 ? r1 : r2, hi = r1 < r2 ? r2 : r1;
+    if (A > 0) return t + hi < now ? now : t + hi;
+    if (t + lo >= now) return t + lo;
+    /* Past the rising root: beyond `to` and still rising (rounding) is due at
+     * once; past the top, g falls back and never rises again. */
+    return now < vertex ? now : C2D_W_INF;
+}
+
+/* A pair's contact at the very time `now` that c2d_collide would refuse
+ * (touching with no approach speed, pushed together by accelerations): no
+ * event, or the world would predict it again and again. */
+static int c2d_w_refused_now(const c2d_body *a, const c2d_body *b)
+{
+    c2d_body ta = *a, tb = *b;
+    return C2D_W_COLLIDE(&ta, &tb, 1.0) != C2D_OK;
+}
+
+/* The contact point and normal (from the disk towards the static) of a
+ * disk centred at (px, py) against static k: a circle's centre; a
+ * segment's end when the centre's foot on its line lies beyond it, else
+ * the foot, the normal then the segment's own normal (signed).  The
+ * prediction and the impact use the same, so they agree on refusals. */
+static void c2d_w_static_contact(const c2d_w_static *st, double px, double py, c2d_vec2 *point, c2d_vec2 *normal)
+{
+    if (!st->circle) {
+        const double tx = (st->bx - st->ax) / st->len, ty = (st->by - st->ay) / st->len;
+        const double u = tx * (px - st->ax) + ty * (py - st->ay);
+        if (u > 0 && u < st->len) {
+            const double side = st->nx * (px - st->ax) + st->ny * (py - st->ay) >= 0 ? -1.0 : 1.0;
+            point->x = st->ax + tx * u, point->y = st->ay + ty * u;
+            normal->x = side * st->nx, normal->y = side * st->ny;
+            return;
+        }
+        if (!(u > 0)) point->x = st->ax, point->y = st->ay;
+        else point->x = st->bx, point->y = st->by;
+    } else {
+        point->x = st->ax, point->y = st->ay;
+    }
+    normal->x = point->x - px, normal->y = point->y - py;
+}
+
+static int c2d_w_static_refused(const c2d_w_static *st, const c2d_body *a)
+{
+    c2d_body ta = *a, tb;
+    c2d_vec2 n;
+    c2d_w_static_contact(st, a->pos.x, a->pos.y, &tb.pos, &n);
+    tb.vel.x = tb.vel.y = 0, tb.mass = C2D_W_INF;
+    return C2D_W_COLLIDE_NORMAL(&ta, &tb, n, 1.0) != C2D_OK;
+}
+
+/* Disk p (at a, now) against every static: a circle (radius sum r + R), a
+ * segment's two ends (points) and its interior (the normal coordinate
+ * reaching +-r with the foot within the segment). */
+static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const c2d_body *a, c2d_w_best *best)
+{
+    const double now = w->now;
+    size_t k;
+    c2d_vec2 acc;
+    acc.x = p->ax, acc.y = p->ay;
+    for (k = 0; k < w->nstatic; k++) {
+        const c2d_w_static *st = &w->stat[k];
+        const uint32_t partner = (uint32_t)(4 + k);
+        int end;
+        for (end = 0; end < (st->circle ? 1 : 2); end++) {
+            c2d_body b;
+            double toi, when;
+            c2d_status r;
+            b.pos.x = end ? st->bx : st->ax, b.pos.y = end ? st->by : st->ay;
+            b.vel.x = b.vel.y = 0, b.mass = C2D_W_INF;
+            if (acc.x == 0 && acc.y == 0) r = C2D_W_TOI(a, &b, p->radius + st->radius, &toi);
+            else {
+                c2d_vec2 zero;
+                zero.x = zero.y = 0;
+                r = C2D_W_TOI_ACCEL(a, acc, &b, zero, p->radius + st->radius, best->when - now, &toi);
+            }
+            if (r != C2D_OK) continue;
+            when = now + toi;
+            if (when == now && c2d_w_static_refused(st, a)) continue;
+            c2d_w_consider(best, when, C2D_W_WALL, partner, 0);
+        }
+        if (!st->circle) {
+            const double d0 = st->nx * (p->x - st->ax) + st->ny * (p->y - st->ay);
+            const double vn = st->nx * p->vx + st->ny * p->vy, an = st->nx * acc.x + st->ny * acc.y;
+            const double dnow = st->nx * (a->pos.x - st->ax) + st->ny * (a->pos.y - st->ay);
+            const double when = dnow >= 0 ? c2d_w_meet(p->t, d0, vn, an, p->radius, -1, now)
+                                          : c2d_w_meet(p->t, d0, vn, an, -p->radius, 1, now);
+            if (when < C2D_W_INF) {
+                const double dt = when - p->t;
+                const double x = c2d_w_at(p->x, p->vx, acc.x, dt), y = c2d_w_at(p->y, p->vy, acc.y, dt);
+                const double u = ((st->bx - st->ax) * (x - st->ax) + (st->by - st->ay) * (y - st->ay)) / st->len;
+                if (u >= 0 && u <= st->len && !(when == now && c2d_w_static_refused(st, a)))
+                    c2d_w_consider(best, when, C2D_W_WALL, partner, 0);
+            }
+        }
+    }
+}
+
 static void c2d_w_predict(c2d_world *w, uint32_t i)
 {
     c2d_w_disk *d = w->disk, *p = &d[i];
-    const double now = w->now, dt = now - p->t;
-    const double px = p->x + p->vx * dt, py = p->y + p->vy * dt;
+    const double now = w->now, dt = now - p->t, pax = p->ax, pay = p->ay;
+    const double px = c2d_w_at(p->x, p->vx, pax, dt), py = c2d_w_at(p->y, p->vy, pay, dt);
     const size_t mx = w->mx, my = w->my, cx = p->cell % mx, cy = p->cell / mx;
+    const int accel = w->accel;
     c2d_w_best best;
     c2d_body a;
     size_t k, l, nc, nr, col[3], row[3];
@@ -322,26 +481,54 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     best.kind = C2D_W_IDLE;
     best.partner = 0;
     best.pcount = 0;
-    /* Walls (the centre at radius from them), then the cell's sides. */
-    if (!w->periodic) {
-        if (p->vx < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, p->radius, now), C2D_W_WALL, 0, 0);
-        if (p->vx > 0)
-            c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, w->width - p->radius, now), C2D_W_WALL, 1, 0);
-        if (p->vy < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, p->radius, now), C2D_W_WALL, 2, 0);
-        if (p->vy > 0)
-            c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, w->height - p->radius, now), C2D_W_WALL, 3, 0);
+    /* Walls (the centre at radius from them), then the cell's sides (with no
+     * acceleration along an axis, c2d_w_meet is c2d_w_reach for the sides
+     * the velocity points to). */
+    if (pax == 0 && pay == 0) { /* straight: only the sides the velocity points to */
+        if (!w->periodic) {
+            if (p->vx < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, p->radius, now), C2D_W_WALL, 0, 0);
+            if (p->vx > 0)
+                c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, w->width - p->radius, now), C2D_W_WALL, 1, 0);
+            if (p->vy < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, p->radius, now), C2D_W_WALL, 2, 0);
+            if (p->vy > 0)
+                c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, w->height - p->radius, now), C2D_W_WALL, 3, 0);
+        }
+        if (p->vx < 0 && (cx > 0 || w->periodic))
+            c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, (double)cx * w->cw, now), C2D_W_CELL, 0, 0);
+        if (p->vx > 0 && (cx + 1 < mx || w->periodic))
+            c2d_w_consider(&best,
+                           c2d_w_reach(p->t, p->x, p->vx, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, now),
+                           C2D_W_CELL, 1, 0);
+        if (p->vy < 0 && (cy > 0 || w->periodic))
+            c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, (double)cy * w->ch, now), C2D_W_CELL, 2, 0);
+        if (p->vy > 0 && (cy + 1 < my || w->periodic))
+            c2d_w_consider(&best,
+                           c2d_w_reach(p->t, p->y, p->vy, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, now),
+                           C2D_W_CELL, 3, 0);
+    } else {
+        if (!w->periodic) {
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, p->radius, -1, now), C2D_W_WALL, 0, 0);
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, w->width - p->radius, 1, now), C2D_W_WALL, 1, 0);
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, p->radius, -1, now), C2D_W_WALL, 2, 0);
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, w->height - p->radius, 1, now), C2D_W_WALL, 3, 0);
+        }
+        if (cx > 0 || w->periodic)
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, (double)cx * w->cw, -1, now), C2D_W_CELL, 0, 0);
+        if (cx + 1 < mx || w->periodic)
+            c2d_w_consider(&best,
+                           c2d_w_meet(p->t, p->x, p->vx, pax, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, 1, now),
+                           C2D_W_CELL, 1, 0);
+        if (cy > 0 || w->periodic)
+            c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, (double)cy * w->ch, -1, now), C2D_W_CELL, 2, 0);
+        if (cy + 1 < my || w->periodic)
+            c2d_w_consider(&best,
+                           c2d_w_meet(p->t, p->y, p->vy, pay, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, 1, now),
+                           C2D_W_CELL, 3, 0);
     }
-    if (p->vx < 0 && (cx > 0 || w->periodic))
-        c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, (double)cx * w->cw, now), C2D_W_CELL, 0, 0);
-    if (p->vx > 0 && (cx + 1 < mx || w->periodic))
-        c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, now),
-                       C2D_W_CELL, 1, 0);
-    if (p->vy < 0 && (cy > 0 || w->periodic))
-        c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, (double)cy * w->ch, now), C2D_W_CELL, 2, 0);
-    if (p->vy > 0 && (cy + 1 < my || w->periodic))
-        c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, now),
-                       C2D_W_CELL, 3, 0);
-    a.pos.x = px, a.pos.y = py, a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
+    if (p->timer < C2D_W_INF) c2d_w_consider(&best, p->timer, C2D_W_TIMER, 0, 0);
+    a.pos.x = px, a.pos.y = py, a.mass = p->mass;
+    a.vel.x = c2d_w_vel(p->vx, pax, dt), a.vel.y = c2d_w_vel(p->vy, pay, dt);
+    if (w->nstatic > 0) c2d_w_predict_statics(w, p, &a, &best);
     /* The 3 x 3 cells around, each once (fewer against walls), with the
      * image shift a periodic wrap gives each column and row. */
     nc = c2d_w_neighbours(cx, mx, w->periodic, w->width, col, colshift);
@@ -368,6 +555,27 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
                 c2d_body b;
                 if (j == i) continue;
                 qdt = now - q->t;
+                if (accel && (pax != 0 || pay != 0 || q->ax != 0 || q->ay != 0)) {
+                    /* Curved paths: until this disk's own next event so far
+                     * (beyond it, it predicts again; a partner whose motion
+                     * changes first makes this event stale). */
+                    c2d_vec2 qa;
+                    double when;
+                    qa.x = q->ax, qa.y = q->ay;
+                    b.pos.x = c2d_w_at(q->x, q->vx, qa.x, qdt) + sx;
+                    b.pos.y = c2d_w_at(q->y, q->vy, qa.y, qdt) + sy;
+                    b.vel.x = c2d_w_vel(q->vx, qa.x, qdt), b.vel.y = c2d_w_vel(q->vy, qa.y, qdt), b.mass = q->mass;
+                    {
+                        c2d_vec2 pa;
+                        pa.x = pax, pa.y = pay;
+                        if (C2D_W_TOI_ACCEL(&a, pa, &b, qa, p->radius + q->radius, best.when - now, &toi) != C2D_OK)
+                            continue;
+                    }
+                    when = now + toi;
+                    if (when == now && c2d_w_refused_now(&a, &b)) continue;
+                    c2d_w_consider(&best, when, C2D_W_PAIR, j, q->count);
+                    continue;
+                }
                 b.pos.x = (q->x + q->vx * qdt) + sx;
                 b.pos.y = (q->y + q->vy * qdt) + sy;
                 /* Filters, each certain despite rounding (the estimates'
@@ -404,7 +612,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
         uint64_t lo = i < best.partner ? i : best.partner, hi = i < best.partner ? best.partner : i;
         c2d_w_heap_fix(w, i, best.when, lo << 31 | hi); /* kind C2D_W_PAIR = 0 */
     } else {
-        c2d_w_heap_fix(w, i, best.when, (uint64_t)best.kind << 62 | (uint64_t)i << 31 | (uint64_t)i);
+        c2d_w_heap_fix(w, i, best.when, C2D_W_TIE_KIND(best.kind) | (uint64_t)i << 31 | (uint64_t)i);
     }
 }
 
@@ -448,7 +656,8 @@ static void c2d_w_rebuild(c2d_world *w)
         double dt = w->now - p->t;
         size_t cx, cy;
         if (p->kind == C2D_W_GONE) continue;
-        cx = c2d_w_cell_1d(p->x + p->vx * dt, w->cw, w->mx), cy = c2d_w_cell_1d(p->y + p->vy * dt, w->ch, w->my);
+        cx = c2d_w_cell_1d(c2d_w_at(p->x, p->vx, p->ax, dt), w->cw, w->mx);
+        cy = c2d_w_cell_1d(c2d_w_at(p->y, p->vy, p->ay, dt), w->ch, w->my);
         c2d_w_cell_insert(w, (uint32_t)i, cy * w->mx + cx);
     }
     for (i = 0; i < w->count; i++)
@@ -459,7 +668,8 @@ static void c2d_w_rebuild(c2d_world *w)
 
 static int c2d_w_overlaps(const c2d_world *w, double x, double y, double r, const c2d_w_disk *q)
 {
-    double dt = w->now - q->t, dx = (q->x + q->vx * dt) - x, dy = (q->y + q->vy * dt) - y, rs = r + q->radius;
+    double dt = w->now - q->t, dx = c2d_w_at(q->x, q->vx, q->ax, dt) - x, dy = c2d_w_at(q->y, q->vy, q->ay, dt) - y;
+    double rs = r + q->radius;
     if (w->periodic) {
         if (dx > 0.5 * w->width) dx -= w->width;
         if (dx < -0.5 * w->width) dx += w->width;
@@ -476,7 +686,7 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     int rebuild;
     uint32_t i;
     c2d_w_disk *p;
-    if (w == NULL || disk == NULL || w->count >= w->capacity) return C2D_INVALID;
+    if (w == NULL || disk == NULL || w->busy || w->count >= w->capacity) return C2D_INVALID;
     x = disk->pos.x, y = disk->pos.y;
     if (!c2d_w_finite(x) || !c2d_w_finite(y) || !c2d_w_finite(disk->vel.x) || !c2d_w_finite(disk->vel.y) ||
         !c2d_w_finite(disk->mass) || !(disk->mass > 0) || !c2d_w_finite(radius) || !(radius > 0))
@@ -510,14 +720,15 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     p->x = x, p->y = y, p->vx = disk->vel.x, p->vy = disk->vel.y, p->t = w->now;
     p->mass = disk->mass, p->radius = radius;
     p->last = -C2D_W_INF;
-    p->spare[0] = p->spare[1] = p->spare[2] = 0;
+    p->ax = p->ay = 0;
+    p->timer = C2D_W_INF;
     p->count = p->pcount = 0;
     p->partner = 0;
     p->kind = C2D_W_IDLE;
     p->same = 0;
     p->slot = i;
     w->heap[i].when = C2D_W_INF;
-    w->heap[i].tie = (uint64_t)C2D_W_IDLE << 62;
+    w->heap[i].tie = C2D_W_TIE_KIND(C2D_W_IDLE);
     w->heap[i].disk = i;
     w->heap[i].spare = 0;
     w->count++;
@@ -533,6 +744,16 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
 }
 
 /* ------------------------------------------------------------ events */
+
+/* Tell the caller, who may change velocities, accelerations and timers
+ * (not add, remove or advance) meanwhile. */
+static void c2d_w_emit(c2d_world *w, const c2d_world_event *ev)
+{
+    if (w->on_event == NULL) return;
+    w->busy = 1;
+    w->on_event(w->user, ev);
+    w->busy = 0;
+}
 
 static void c2d_w_impact_clock(c2d_w_disk *p, double now)
 {
@@ -565,9 +786,11 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
         sx = c2d_w_image(p->cell % w->mx, q->cell % w->mx) * w->width;
         sy = c2d_w_image(p->cell / w->mx, q->cell / w->mx) * w->height;
     }
-    qx = q->x + q->vx * dq, qy = q->y + q->vy * dq;
-    a.pos.x = p->x + p->vx * dp, a.pos.y = p->y + p->vy * dp, a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
-    b.pos.x = qx + sx, b.pos.y = qy + sy, b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
+    qx = c2d_w_at(q->x, q->vx, q->ax, dq), qy = c2d_w_at(q->y, q->vy, q->ay, dq);
+    a.pos.x = c2d_w_at(p->x, p->vx, p->ax, dp), a.pos.y = c2d_w_at(p->y, p->vy, p->ay, dp), a.mass = p->mass;
+    a.vel.x = c2d_w_vel(p->vx, p->ax, dp), a.vel.y = c2d_w_vel(p->vy, p->ay, dp);
+    b.pos.x = qx + sx, b.pos.y = qy + sy, b.mass = q->mass;
+    b.vel.x = c2d_w_vel(q->vx, q->ax, dq), b.vel.y = c2d_w_vel(q->vy, q->ay, dq);
     if (e < 1) {
         /* The collapse rule (collide2d_world.h): elastic after collapse_count
          * impacts at this instant, within collapse_time of the last impact,
@@ -583,7 +806,7 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
             e = 1;
     }
     if (C2D_W_COLLIDE(&a, &b, e) == C2D_OK) {
-        const double vqx = q->vx, vqy = q->vy;
+        const double vqx = c2d_w_vel(q->vx, q->ax, dq), vqy = c2d_w_vel(q->vy, q->ay, dq);
         w->stats.virial += ((b.pos.x - a.pos.x) * (b.vel.x - vqx) + (b.pos.y - a.pos.y) * (b.vel.y - vqy)) * q->mass;
         p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
         q->x = qx, q->y = qy, q->vx = b.vel.x, q->vy = b.vel.y, q->t = now;
@@ -594,7 +817,7 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
             c2d_world_event ev;
             ev.kind = C2D_WORLD_IMPACT, ev.time = now, ev.a = i, ev.b = j;
             ev.impulse.x = (b.vel.x - vqx) * q->mass, ev.impulse.y = (b.vel.y - vqy) * q->mass;
-            w->on_event(w->user, &ev);
+            c2d_w_emit(w, &ev);
         }
         c2d_w_predict(w, i);
         c2d_w_predict(w, j);
@@ -603,26 +826,80 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
     }
 }
 
+/* Disk i meets static k: c2d_collide_normal against an immovable body at
+ * the contact point, the static's restitution (elastic by the collapse
+ * rule, as at a wall). */
+static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
+{
+    c2d_w_disk *p = &w->disk[i];
+    const c2d_w_static *st = &w->stat[k];
+    const double now = w->now, dt = now - p->t;
+    double e = st->restitution;
+    c2d_body a, b;
+    c2d_vec2 n;
+    a.pos.x = c2d_w_at(p->x, p->vx, p->ax, dt), a.pos.y = c2d_w_at(p->y, p->vy, p->ay, dt), a.mass = p->mass;
+    a.vel.x = c2d_w_vel(p->vx, p->ax, dt), a.vel.y = c2d_w_vel(p->vy, p->ay, dt);
+    c2d_w_static_contact(st, a.pos.x, a.pos.y, &b.pos, &n);
+    b.vel.x = b.vel.y = 0, b.mass = C2D_W_INF;
+    if (e < 1) { /* the collapse rule, as for a wall */
+        /* n points towards the static: vn > 0 approaching */
+        const double nn = C2D_W_SQRT(n.x * n.x + n.y * n.y), vn = a.vel.x * n.x + a.vel.y * n.y;
+        const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
+        const double since = now - p->last;
+        if ((p->last == now && p->same >= w->collapse_count) || since < w->collapse_time ||
+            vn < w->collapse_speed * nn || vn * since < length * nn)
+            e = 1;
+    }
+    {
+        const double vx0 = a.vel.x, vy0 = a.vel.y;
+        if (C2D_W_COLLIDE_NORMAL(&a, &b, n, e) == C2D_OK) {
+            p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
+            c2d_w_impact_clock(p, now);
+            w->stats.wall_collisions++;
+            if (w->on_event != NULL) {
+                c2d_world_event ev;
+                ev.kind = C2D_WORLD_STATIC, ev.time = now, ev.a = i, ev.b = k;
+                ev.impulse.x = (a.vel.x - vx0) * p->mass, ev.impulse.y = (a.vel.y - vy0) * p->mass;
+                c2d_w_emit(w, &ev);
+            }
+        }
+    }
+    c2d_w_predict(w, i);
+}
+
 static void c2d_w_wall(c2d_world *w, uint32_t i)
 {
     c2d_w_disk *p = &w->disk[i];
     const double now = w->now, dt = now - p->t, since = now - p->last;
-    double x = p->x + p->vx * dt, y = p->y + p->vy * dt, e = w->wall_restitution, vn;
-    const double vx0 = p->vx, vy0 = p->vy;
-    vn = p->partner < 2 ? p->vx : p->vy;
-    vn = vn < 0 ? -vn : vn;
+    double x = c2d_w_at(p->x, p->vx, p->ax, dt), y = c2d_w_at(p->y, p->vy, p->ay, dt), e = w->wall_restitution, vn, an;
+    const double vx0 = c2d_w_vel(p->vx, p->ax, dt), vy0 = c2d_w_vel(p->vy, p->ay, dt);
+    const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
+    double *v, *acc;
+    if (p->partner >= 4) {
+        c2d_w_static_hit(w, i, p->partner - 4u);
+        return;
+    }
+    p->vx = vx0, p->vy = vy0;
+    v = p->partner < 2 ? &p->vx : &p->vy;
+    acc = p->partner < 2 ? &p->ax : &p->ay;
+    vn = *v < 0 ? -*v : *v;
+    an = p->partner % 2 == 0 ? -*acc : *acc; /* > 0: pressing into the wall */
     if (e < 1) { /* the collapse rule, as for a pair (the wall's "radius" 0) */
-        const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
         if ((p->last == now && p->same >= w->collapse_count) || since < w->collapse_time ||
             vn < w->collapse_speed || vn * since < length)
             e = 1;
     }
     switch (p->partner) {
-    case 0: x = p->radius, p->vx = -e * p->vx; break;
-    case 1: x = w->width - p->radius, p->vx = -e * p->vx; break;
-    case 2: y = p->radius, p->vy = -e * p->vy; break;
-    default: y = w->height - p->radius, p->vy = -e * p->vy; break;
+    case 0: x = p->radius; break;
+    case 1: x = w->width - p->radius; break;
+    case 2: y = p->radius; break;
+    default: y = w->height - p->radius; break;
     }
+    /* The rest rule: pressed into the wall and rebounding less than
+     * collapse_length high ((e vn)^2 / (2 an)), the disk stays on it: its
+     * normal velocity and acceleration become 0. */
+    if (an > 0 && (e * vn) * (e * vn) <= 2 * an * length) *v = 0, *acc = 0;
+    else if (p->partner % 2 == 0 ? *v < 0 : *v > 0) *v = -e * *v; /* (not one already leaving) */
     p->x = x, p->y = y, p->t = now;
     c2d_w_impact_clock(p, now);
     w->stats.wall_collisions++;
@@ -630,9 +907,22 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
         c2d_world_event ev;
         ev.kind = C2D_WORLD_WALL, ev.time = now, ev.a = i, ev.b = p->partner;
         ev.impulse.x = (p->vx - vx0) * p->mass, ev.impulse.y = (p->vy - vy0) * p->mass;
-        w->on_event(w->user, &ev);
+        c2d_w_emit(w, &ev);
     }
     c2d_w_predict(w, i);
+}
+
+/* A disk's timer: cleared, then told (the callback may set it again). */
+static void c2d_w_timer(c2d_world *w, uint32_t i)
+{
+    w->disk[i].timer = C2D_W_INF;
+    if (w->on_event != NULL) {
+        c2d_world_event ev;
+        ev.kind = C2D_WORLD_TIMER, ev.time = w->now, ev.a = i, ev.b = 0;
+        ev.impulse.x = ev.impulse.y = 0;
+        c2d_w_emit(w, &ev);
+    }
+    if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, i);
 }
 
 static void c2d_w_cross(c2d_world *w, uint32_t i)
@@ -665,7 +955,7 @@ static void c2d_w_cross(c2d_world *w, uint32_t i)
 c2d_status c2d_world_advance(c2d_world *world, double t)
 {
     c2d_world *w = world;
-    if (w == NULL || !c2d_w_finite(t) || !(t >= w->now)) return C2D_INVALID;
+    if (w == NULL || w->busy || !c2d_w_finite(t) || !(t >= w->now)) return C2D_INVALID;
     while (w->count > 0) {
         uint32_t i = w->heap[0].disk;
         c2d_w_disk *p = &w->disk[i];
@@ -675,6 +965,7 @@ c2d_status c2d_world_advance(c2d_world *world, double t)
         switch (p->kind) {
         case C2D_W_PAIR: c2d_w_pair(w, i); break;
         case C2D_W_WALL: c2d_w_wall(w, i); break;
+        case C2D_W_TIMER: c2d_w_timer(w, i); break;
         default: c2d_w_cross(w, i); break;
         }
     }
@@ -691,7 +982,7 @@ c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk)
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     dt = world->now - p->t;
-    x = p->x + p->vx * dt, y = p->y + p->vy * dt;
+    x = c2d_w_at(p->x, p->vx, p->ax, dt), y = c2d_w_at(p->y, p->vy, p->ay, dt);
     if (world->periodic) {
         if (x < 0) x += world->width;
         if (x >= world->width) x -= world->width;
@@ -699,7 +990,7 @@ c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk)
         if (y >= world->height) y -= world->height;
     }
     disk->pos.x = x, disk->pos.y = y;
-    disk->vel.x = p->vx, disk->vel.y = p->vy;
+    disk->vel.x = c2d_w_vel(p->vx, p->ax, dt), disk->vel.y = c2d_w_vel(p->vy, p->ay, dt);
     disk->mass = p->mass;
     return C2D_OK;
 }
@@ -713,9 +1004,91 @@ c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 veloc
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     dt = world->now - p->t;
-    p->x = p->x + p->vx * dt, p->y = p->y + p->vy * dt, p->t = world->now;
+    p->x = c2d_w_at(p->x, p->vx, p->ax, dt), p->y = c2d_w_at(p->y, p->vy, p->ay, dt), p->t = world->now;
     p->vx = velocity.x, p->vy = velocity.y;
     p->count++; /* the partners' predictions with it are stale */
+    c2d_w_predict(world, (uint32_t)index);
+    return C2D_OK;
+}
+
+c2d_status c2d_world_set_acceleration(c2d_world *world, size_t index, c2d_vec2 acceleration)
+{
+    c2d_w_disk *p;
+    double dt, vx, vy;
+    if (world == NULL || index >= world->count || !c2d_w_finite(acceleration.x) || !c2d_w_finite(acceleration.y))
+        return C2D_INVALID;
+    p = &world->disk[index];
+    if (p->kind == C2D_W_GONE) return C2D_INVALID;
+    dt = world->now - p->t;
+    vx = c2d_w_vel(p->vx, p->ax, dt), vy = c2d_w_vel(p->vy, p->ay, dt);
+    p->x = c2d_w_at(p->x, p->vx, p->ax, dt), p->y = c2d_w_at(p->y, p->vy, p->ay, dt), p->t = world->now;
+    p->vx = vx, p->vy = vy;
+    p->ax = acceleration.x, p->ay = acceleration.y;
+    if (acceleration.x != 0 || acceleration.y != 0) world->accel = 1;
+    p->count++;
+    c2d_w_predict(world, (uint32_t)index);
+    return C2D_OK;
+}
+
+static c2d_status c2d_w_add_static(c2d_world *w, const c2d_w_static *st, size_t *index)
+{
+    w->stat[w->nstatic] = *st;
+    if (index != NULL) *index = w->nstatic;
+    w->nstatic++;
+    if (w->mx > 0) {
+        size_t i;
+        for (i = 0; i < w->count; i++)
+            if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, (uint32_t)i);
+    }
+    return C2D_OK;
+}
+
+c2d_status c2d_world_add_segment(c2d_world *world, c2d_vec2 a, c2d_vec2 b, double restitution, size_t *index)
+{
+    c2d_w_static st;
+    double dx, dy;
+    if (world == NULL || world->busy || world->nstatic >= world->scapacity) return C2D_INVALID;
+    if (!c2d_w_finite(a.x) || !c2d_w_finite(a.y) || !c2d_w_finite(b.x) || !c2d_w_finite(b.y)) return C2D_INVALID;
+    if (!(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
+    dx = b.x - a.x, dy = b.y - a.y;
+    st.len = C2D_W_SQRT(dx * dx + dy * dy);
+    if (!(st.len > 0) || !c2d_w_finite(st.len)) return C2D_INVALID;
+    st.ax = a.x, st.ay = a.y, st.bx = b.x, st.by = b.y;
+    st.nx = -dy / st.len, st.ny = dx / st.len;
+    st.radius = 0, st.restitution = restitution, st.circle = 0, st.spare = 0;
+    return c2d_w_add_static(world, &st, index);
+}
+
+c2d_status c2d_world_add_circle(c2d_world *world, c2d_vec2 centre, double radius, double restitution, size_t *index)
+{
+    c2d_w_static st;
+    if (world == NULL || world->busy || world->nstatic >= world->scapacity) return C2D_INVALID;
+    if (!c2d_w_finite(centre.x) || !c2d_w_finite(centre.y) || !c2d_w_finite(radius) || !(radius > 0))
+        return C2D_INVALID;
+    if (!(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
+    st.ax = st.bx = centre.x, st.ay = st.by = centre.y;
+    st.nx = st.ny = st.len = 0;
+    st.radius = radius, st.restitution = restitution, st.circle = 1, st.spare = 0;
+    return c2d_w_add_static(world, &st, index);
+}
+
+c2d_status c2d_world_get_acceleration(const c2d_world *world, size_t index, c2d_vec2 *acceleration)
+{
+    const c2d_w_disk *p;
+    if (world == NULL || acceleration == NULL || index >= world->count) return C2D_INVALID;
+    p = &world->disk[index];
+    if (p->kind == C2D_W_GONE) return C2D_INVALID;
+    acceleration->x = p->ax, acceleration->y = p->ay;
+    return C2D_OK;
+}
+
+c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t)
+{
+    c2d_w_disk *p;
+    if (world == NULL || index >= world->count || t != t || !(t >= world->now)) return C2D_INVALID;
+    p = &world->disk[index];
+    if (p->kind == C2D_W_GONE) return C2D_INVALID;
+    p->timer = t < C2D_W_INF ? t : C2D_W_INF;
     c2d_w_predict(world, (uint32_t)index);
     return C2D_OK;
 }
@@ -723,14 +1096,14 @@ c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 veloc
 c2d_status c2d_world_remove(c2d_world *world, size_t index)
 {
     c2d_w_disk *p;
-    if (world == NULL || index >= world->count) return C2D_INVALID;
+    if (world == NULL || world->busy || index >= world->count) return C2D_INVALID;
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     c2d_w_cell_remove(world, (uint32_t)index);
     p->cell = C2D_W_NONE, p->next = C2D_W_NONE;
     p->kind = C2D_W_GONE;
     p->count++;
-    c2d_w_heap_fix(world, (uint32_t)index, C2D_W_INF, (uint64_t)C2D_W_IDLE << 62 | (uint64_t)index);
+    c2d_w_heap_fix(world, (uint32_t)index, C2D_W_INF, C2D_W_TIE_KIND(C2D_W_IDLE) | (uint64_t)index);
     return C2D_OK;
 }
 

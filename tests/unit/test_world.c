@@ -552,6 +552,508 @@ static void test_a_kicked_disk_moves_and_a_removed_one_is_passed_through(void **
     free(mem);
 }
 
+/* ------------------------------------------------------------ acceleration */
+
+/* The library's motion formula (collide2d_world.h): x0 + (v0 + 0.5 a dt) dt. */
+static double at(double x, double v, double a, double dt) { return x + (v + 0.5 * a * dt) * dt; }
+
+typedef struct stopper {
+    int timers, others;
+    double when;
+    size_t disk;
+    c2d_world *w;
+    c2d_vec2 vel, acc; /* set at the timer */
+    int refused;       /* add, remove and advance refused from the callback */
+} stopper;
+
+static void stop_at_timer(void *user, const c2d_world_event *e)
+{
+    stopper *s = user;
+    if (e->kind != C2D_WORLD_TIMER) {
+        s->others++;
+        return;
+    }
+    s->timers++, s->when = e->time, s->disk = e->a;
+    assert_status(c2d_world_set_velocity(s->w, e->a, s->vel), C2D_OK);
+    assert_status(c2d_world_set_acceleration(s->w, e->a, s->acc), C2D_OK);
+    {
+        c2d_body b = {{15, 3}, {0, 0}, 1};
+        s->refused = c2d_world_advance(s->w, e->time + 1) == C2D_INVALID && c2d_world_add(s->w, &b, 0.5, NULL) == C2D_INVALID &&
+                     c2d_world_remove(s->w, e->a) == C2D_INVALID;
+    }
+}
+
+static void test_a_decelerating_disk_stops_where_the_formula_says(void **state)
+{
+    c2d_world_desc d = box_desc(1, 20, 4, C2D_WALLS, 1, 1);
+    const double x0 = 2.25, v = 2.7, dec = 0.9, ts = v / dec;
+    const double want = at(x0, v, -dec, ts);
+    stopper st;
+    void *mem;
+    c2d_world *w;
+    c2d_body b = {{x0, 2}, {v, 0}, 1};
+    c2d_vec2 acc = {-dec, 0}, got;
+    int pass;
+    (void)state;
+    assert_close(want, x0 + v * v / (2 * dec), 4e-15 * want);
+    for (pass = 0; pass < 2; pass++) { /* from the callback; by advancing to the timer */
+        memset(&st, 0, sizeof st);
+        if (pass == 0) d.on_event = stop_at_timer, d.user = &st;
+        else d.on_event = NULL;
+        w = new_world(&d, &mem);
+        st.w = w;
+        assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
+        assert_status(c2d_world_set_acceleration(w, 0, acc), C2D_OK);
+        assert_status(c2d_world_set_timer(w, 0, ts), C2D_OK);
+        if (pass == 1) {
+            c2d_vec2 zero = {0, 0};
+            assert_status(c2d_world_advance(w, ts), C2D_OK);
+            assert_status(c2d_world_set_velocity(w, 0, zero), C2D_OK);
+            assert_status(c2d_world_set_acceleration(w, 0, zero), C2D_OK);
+        }
+        assert_status(c2d_world_advance(w, 10), C2D_OK);
+        if (pass == 0) assert_true(st.timers == 1 && st.others == 0 && st.when == ts && st.disk == 0 && st.refused);
+        assert_status(c2d_world_get(w, 0, &b), C2D_OK);
+        assert_true(b.pos.x == want && b.pos.y == 2 && b.vel.x == 0 && b.vel.y == 0);
+        assert_status(c2d_world_get_acceleration(w, 0, &got), C2D_OK);
+        assert_true(got.x == 0 && got.y == 0);
+        b.pos.x = x0, b.vel.x = v;
+        free(mem);
+    }
+}
+
+static void log_first_impact(void *user, const c2d_world_event *e)
+{
+    double *t = user;
+    if (e->kind == C2D_WORLD_IMPACT && *t < 0) *t = e->time;
+}
+
+static void test_decelerating_disks_meet_when_the_accelerated_time_of_impact_says(void **state)
+{
+    c2d_world_desc d = box_desc(2, 20, 6, C2D_WALLS, 1, 1);
+    c2d_body a = {{2, 3}, {3, 0.05}, 1}, b = {{9.5, 3.2}, {-2, -0.1}, 2};
+    c2d_vec2 aa = {-0.5, 0.01}, ab = {0.3, -0.02};
+    double want, got = -1;
+    void *mem;
+    c2d_world *w;
+    c2d_body pa, pb;
+    (void)state;
+    assert_status(c2d_time_of_impact_accel(&a, aa, &b, ab, 1.0, INFINITY, &want), C2D_OK);
+    d.on_event = log_first_impact, d.user = &got;
+    w = new_world(&d, &mem);
+    assert_status(c2d_world_add(w, &a, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_set_acceleration(w, 0, aa), C2D_OK);
+    assert_status(c2d_world_set_acceleration(w, 1, ab), C2D_OK);
+    assert_status(c2d_world_advance(w, want * 0.999), C2D_OK);
+    assert_true(got < 0);
+    assert_status(c2d_world_advance(w, want * 1.001), C2D_OK);
+    assert_close(got, want, 1e-13);
+    /* At the impact the centres are the radius sum apart. */
+    free(mem);
+    d.on_event = NULL;
+    w = new_world(&d, &mem);
+    assert_status(c2d_world_add(w, &a, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_set_acceleration(w, 0, aa), C2D_OK);
+    assert_status(c2d_world_set_acceleration(w, 1, ab), C2D_OK);
+    assert_status(c2d_world_advance(w, got), C2D_OK);
+    assert_status(c2d_world_get(w, 0, &pa), C2D_OK);
+    assert_status(c2d_world_get(w, 1, &pb), C2D_OK);
+    assert_close(hypot(pb.pos.x - pa.pos.x, pb.pos.y - pa.pos.y), 1.0, 1e-13);
+    assert_true((pb.vel.x - pa.vel.x) * (pb.pos.x - pa.pos.x) + (pb.vel.y - pa.vel.y) * (pb.pos.y - pa.pos.y) > 0);
+    assert_int_equal(collisions(w), 1);
+    free(mem);
+}
+
+static void kick_at_timer(void *user, const c2d_world_event *e)
+{
+    stopper *s = user;
+    if (e->kind != C2D_WORLD_TIMER) return;
+    s->timers++, s->when = e->time, s->disk = e->a;
+    assert_status(c2d_world_set_velocity(s->w, e->a, s->vel), C2D_OK);
+}
+
+static void test_a_timer_fires_at_its_time_and_a_velocity_set_there_holds(void **state)
+{
+    c2d_world_desc d = box_desc(2, 20, 4, C2D_WALLS, 1, 1);
+    stopper st;
+    void *mem;
+    c2d_world *w;
+    c2d_body a = {{2, 2}, {0.5, 0}, 1}, b = {{17, 2}, {0, 0}, 1};
+    const double t1 = 3.1;
+    (void)state;
+    memset(&st, 0, sizeof st);
+    st.vel.x = -0.25, st.vel.y = 0.125;
+    d.on_event = kick_at_timer, d.user = &st;
+    w = new_world(&d, &mem);
+    st.w = w;
+    assert_status(c2d_world_add(w, &a, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_set_timer(w, 1, 100), C2D_OK);
+    assert_status(c2d_world_set_timer(w, 1, INFINITY), C2D_OK); /* cancelled */
+    assert_status(c2d_world_set_timer(w, 0, t1), C2D_OK);
+    assert_status(c2d_world_advance(w, t1), C2D_OK); /* due at t1: fires */
+    assert_true(st.timers == 1 && st.when == t1 && st.disk == 0);
+    assert_status(c2d_world_advance(w, 6), C2D_OK);
+    assert_int_equal(st.timers, 1);
+    assert_status(c2d_world_get(w, 0, &a), C2D_OK);
+    assert_true(a.vel.x == -0.25 && a.vel.y == 0.125);
+    assert_true(a.pos.x == (2 + 0.5 * t1) + -0.25 * (6 - t1) && a.pos.y == 2 + 0.125 * (6 - t1));
+    assert_status(c2d_world_advance(w, 200), C2D_OK);
+    assert_int_equal(st.timers, 1);
+    free(mem);
+}
+
+/* A gas with accelerations, timers that change them, kicks: one advance
+ * or many uneven ones, the same bits. */
+typedef struct gas_ctl {
+    c2d_world *w;
+    int timers;
+} gas_ctl;
+
+static void gas_timer(void *user, const c2d_world_event *e)
+{
+    gas_ctl *g = user;
+    c2d_vec2 acc;
+    if (e->kind != C2D_WORLD_TIMER) return;
+    g->timers++;
+    acc.x = 0.3 * (double)(e->a % 3) - 0.3, acc.y = -0.2;
+    assert_status(c2d_world_set_acceleration(g->w, e->a, acc), C2D_OK);
+    if (e->a % 2 == 0) assert_status(c2d_world_set_timer(g->w, e->a, e->time + 1.5), C2D_OK);
+}
+
+static void accel_run(int sliced, c2d_body *out, c2d_world_stats *stats, int *timers)
+{
+    c2d_world_desc d = box_desc(49, 10, 10, C2D_WALLS, 0.9, 0.7);
+    gas_ctl g;
+    void *mem;
+    c2d_world *w;
+    size_t i;
+    double t;
+    d.on_event = gas_timer, d.user = &g;
+    w = new_world(&d, &mem);
+    g.w = w, g.timers = 0;
+    fill_gas(w, &d, 7, 0.4, 1, 21);
+    for (i = 0; i < 49; i++) {
+        c2d_vec2 acc;
+        acc.x = 0.1 * uniform(), acc.y = 0.1 * uniform() - 0.05;
+        assert_status(c2d_world_set_acceleration(w, i, acc), C2D_OK);
+        assert_status(c2d_world_set_timer(w, i, 0.37 * (double)i), C2D_OK);
+    }
+    if (sliced)
+        for (t = 0.013; t < 30; t = t * 1.7 + 0.01) assert_status(c2d_world_advance(w, t), C2D_OK);
+    assert_status(c2d_world_advance(w, 30), C2D_OK);
+    for (i = 0; i < 49; i++) assert_status(c2d_world_get(w, i, &out[i]), C2D_OK);
+    c2d_world_get_stats(w, stats);
+    *timers = g.timers;
+    free(mem);
+}
+
+static void test_accelerations_and_timers_keep_frame_independence(void **state)
+{
+    c2d_body one[49], many[49];
+    c2d_world_stats s1, s2;
+    int t1, t2;
+    size_t i;
+    (void)state;
+    accel_run(0, one, &s1, &t1);
+    accel_run(1, many, &s2, &t2);
+    assert_memory_equal(one, many, sizeof one);
+    assert_true(s1.collisions == s2.collisions && s1.wall_collisions == s2.wall_collisions && s1.events == s2.events);
+    assert_true(t1 == t2 && t1 > 49 && s1.collisions > 100);
+    printf("test_world: accelerated gas: %llu impacts, %llu at walls, %d timers, %llu events by t = 30\n",
+           s1.collisions, s1.wall_collisions, t1, s1.events);
+    for (i = 0; i < 49; i++) /* inside the box (radii 0.2 to 0.4) */
+        assert_true(one[i].pos.x >= 0.2 - 1e-9 && one[i].pos.x <= 9.8 + 1e-9 && one[i].pos.y >= 0.2 - 1e-9 &&
+                    one[i].pos.y <= 9.8 + 1e-9);
+}
+
+static void test_a_disk_pressed_into_a_wall_rests_on_it(void **state)
+{
+    c2d_world_desc d = box_desc(2, 20, 8, C2D_WALLS, 1, 0.5);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    c2d_body a = {{5, 0.5}, {1, 0}, 1}, b = {{12, 6}, {0, 0}, 1};
+    c2d_vec2 g = {0, -9.8}, got;
+    c2d_world_stats s;
+    (void)state;
+    assert_status(c2d_world_add(w, &a, 0.5, NULL), C2D_OK); /* on the floor, sliding */
+    assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK); /* dropped from 6 */
+    assert_status(c2d_world_set_acceleration(w, 0, g), C2D_OK);
+    assert_status(c2d_world_set_acceleration(w, 1, g), C2D_OK);
+    assert_status(c2d_world_advance(w, 100), C2D_OK);
+    c2d_world_get_stats(w, &s);
+    /* a: one wall event, then the walls at x = 19.5 and 0.5 (sliding at
+     * 1 / 0.5 ...); b: bounces at e = 0.5 until under collapse_length. */
+    printf("test_world: pressed into the floor: %llu wall events by t = 100\n", s.wall_collisions);
+    assert_true(s.wall_collisions < 60);
+    assert_status(c2d_world_get(w, 0, &a), C2D_OK);
+    assert_status(c2d_world_get(w, 1, &b), C2D_OK);
+    assert_true(a.pos.y == 0.5 && a.vel.y == 0 && b.pos.y == 0.5 && b.vel.y == 0);
+    assert_status(c2d_world_get_acceleration(w, 1, &got), C2D_OK);
+    assert_true(got.x == 0 && got.y == 0);
+    assert_status(c2d_world_advance(w, 1000), C2D_OK);
+    {
+        c2d_world_stats s2;
+        c2d_world_get_stats(w, &s2);
+        assert_true(s2.wall_collisions - s.wall_collisions < 20);
+    }
+    free(mem);
+}
+
+static void test_acceleration_and_timer_refusals_change_nothing(void **state)
+{
+    c2d_world_desc d = box_desc(3, 10, 10, C2D_WALLS, 1, 1);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    size_t bytes = c2d_world_bytes(&d);
+    unsigned char *copy = malloc(bytes);
+    c2d_body a = {{2, 2}, {1, 0}, 1}, b = {{6, 2}, {0, 0}, 1};
+    c2d_vec2 ok = {0.5, -0.25}, nan2 = {NAN, 0}, inf2 = {0, INFINITY}, got;
+    (void)state;
+    assert_status(c2d_world_add(w, &a, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &b, 1, NULL), C2D_OK);
+    assert_status(c2d_world_set_acceleration(w, 0, ok), C2D_OK);
+    assert_status(c2d_world_set_timer(w, 0, 5), C2D_OK);
+    assert_status(c2d_world_advance(w, 1), C2D_OK);
+    assert_status(c2d_world_remove(w, 1), C2D_OK);
+    memcpy(copy, mem, bytes);
+    assert_status(c2d_world_set_acceleration(w, 0, nan2), C2D_INVALID);
+    assert_status(c2d_world_set_acceleration(w, 0, inf2), C2D_INVALID);
+    assert_status(c2d_world_set_acceleration(w, 1, ok), C2D_INVALID); /* removed */
+    assert_status(c2d_world_set_acceleration(w, 2, ok), C2D_INVALID);
+    assert_status(c2d_world_set_acceleration(NULL, 0, ok), C2D_INVALID);
+    assert_status(c2d_world_set_timer(w, 0, 0.5), C2D_INVALID); /* before now */
+    assert_status(c2d_world_set_timer(w, 0, NAN), C2D_INVALID);
+    assert_status(c2d_world_set_timer(w, 0, -INFINITY), C2D_INVALID);
+    assert_status(c2d_world_set_timer(w, 1, 3), C2D_INVALID);
+    assert_status(c2d_world_set_timer(w, 7, 3), C2D_INVALID);
+    assert_status(c2d_world_set_timer(NULL, 0, 3), C2D_INVALID);
+    assert_status(c2d_world_get_acceleration(w, 1, &got), C2D_INVALID);
+    assert_status(c2d_world_get_acceleration(w, 0, NULL), C2D_INVALID);
+    assert_status(c2d_world_get_acceleration(NULL, 0, &got), C2D_INVALID);
+    assert_status(c2d_world_get_acceleration(w, 0, &got), C2D_OK);
+    assert_true(got.x == 0.5 && got.y == -0.25);
+    assert_memory_equal(copy, mem, bytes);
+    free(copy);
+    free(mem);
+}
+
+/* ------------------------------------------------------------ statics */
+
+typedef struct static_log {
+    int hits;
+    c2d_world_event first;
+} static_log;
+
+static void log_static(void *user, const c2d_world_event *e)
+{
+    static_log *l = user;
+    if (e->kind != C2D_WORLD_STATIC) return;
+    if (l->hits++ == 0) l->first = *e;
+}
+
+static c2d_world *static_world(c2d_world_desc *d, static_log *log, void **mem)
+{
+    *d = box_desc(4, 20, 20, C2D_WALLS, 1, 1);
+    d->statics = 4;
+    memset(log, 0, sizeof *log);
+    d->on_event = log_static, d->user = log;
+    return new_world(d, mem);
+}
+
+static void test_a_disk_bounces_off_a_tilted_segment_by_the_reflection_law(void **state)
+{
+    c2d_world_desc d;
+    static_log log;
+    void *mem;
+    c2d_world *w = static_world(&d, &log, &mem);
+    c2d_vec2 a = {5, 5}, b = {15, 9};
+    c2d_body disk = {{9, 12}, {0.3, -1}, 2};
+    const double len = sqrt(116), nx = -4 / len, ny = 10 / len, vn = 0.3 * nx - 1 * ny;
+    const double wx = 0.3 - 2 * vn * nx, wy = -1 - 2 * vn * ny;
+    size_t k = 9;
+    double dist;
+    (void)state;
+    assert_status(c2d_world_add(w, &disk, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_add_segment(w, a, b, 1, &k), C2D_OK);
+    assert_int_equal(k, 0);
+    assert_status(c2d_world_advance(w, 6), C2D_OK); /* the line y = 5 + 0.4 (x - 5) at ~t = 4.3 */
+    assert_int_equal(log.hits, 1);
+    assert_true(log.first.a == 0 && log.first.b == 0);
+    assert_status(c2d_world_advance(w, log.first.time), C2D_INVALID); /* in the past */
+    assert_status(c2d_world_get(w, 0, &disk), C2D_OK);
+    /* c2d_collide_normal's 16 ulp of the velocity scale (~1), the expected
+     * values' own few roundings included. */
+    assert_close(disk.vel.x, wx, 16 * DBL_EPSILON / 2);
+    assert_close(disk.vel.y, wy, 16 * DBL_EPSILON / 2);
+    assert_close(log.first.impulse.x, 2 * (wx - 0.3), 1e-15);
+    /* At the impact the centre was the radius from the line. */
+    free(mem);
+    w = static_world(&d, &log, &mem);
+    disk.pos.x = 9, disk.pos.y = 12, disk.vel.x = 0.3, disk.vel.y = -1;
+    assert_status(c2d_world_add(w, &disk, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_add_segment(w, a, b, 1, NULL), C2D_OK);
+    assert_status(c2d_world_advance(w, 4.0), C2D_OK);
+    assert_int_equal(log.hits, 0);
+    assert_status(c2d_world_advance(w, 6), C2D_OK);
+    assert_int_equal(log.hits, 1);
+    assert_status(c2d_world_get(w, 0, &disk), C2D_OK);
+    {
+        const double t = log.first.time, x = disk.pos.x - disk.vel.x * (6 - t), y = disk.pos.y - disk.vel.y * (6 - t);
+        dist = nx * (x - 5) + ny * (y - 5);
+    }
+    assert_close(dist, 0.5, 1e-14);
+    free(mem);
+}
+
+static void test_a_disk_bounces_off_a_segment_end_and_off_a_circle(void **state)
+{
+    c2d_world_desc d;
+    static_log log;
+    void *mem;
+    c2d_world *w = static_world(&d, &log, &mem);
+    c2d_vec2 a = {5, 5}, b = {10, 5}, c = {10, 14};
+    c2d_body disk = {{12, 8}, {-1, -1.5}, 1}, other = {{10, 17}, {0, -2}, 1};
+    (void)state;
+    assert_status(c2d_world_add(w, &disk, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_add(w, &other, 0.5, NULL), C2D_OK);
+    assert_status(c2d_world_add_segment(w, a, b, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add_circle(w, c, 1, 0.5, NULL), C2D_OK);
+    /* Head-on at the end (10, 5) at t ~ 1.72: straight back; the circle: 1.5
+     * below 17 at t = 0.75. */
+    assert_status(c2d_world_advance(w, 2.5), C2D_OK);
+    assert_int_equal(log.hits, 2);
+    assert_true(log.first.b == 1 && log.first.a == 1 && log.first.time == 0.75);
+    assert_status(c2d_world_get(w, 1, &other), C2D_OK);
+    assert_true(other.vel.x == 0 && other.vel.y == 1); /* e = 0.5, axis-aligned: exact */
+    assert_status(c2d_world_get(w, 0, &disk), C2D_OK);
+    /* The normal is the end minus the rounded centre: ulp(10) / 0.5 of a
+     * turn, ~4e-15, on top of c2d_collide_normal's rounding. */
+    assert_close(disk.vel.x, 1, 1e-14);
+    assert_close(disk.vel.y, 1.5, 1e-14);
+    free(mem);
+}
+
+static void test_elastic_statics_keep_a_gas_energy_and_nothing_passes_through(void **state)
+{
+    c2d_world_desc d = box_desc(36, 12, 12, C2D_WALLS, 1, 1);
+    void *mem;
+    c2d_world *w;
+    c2d_vec2 s0 = {3.1, 2.2}, s1 = {8.9, 4.1}, s2 = {2.0, 9.7}, s3 = {6.2, 7.3}, c0 = {9.4, 9.1};
+    double e0, e1, t;
+    c2d_world_stats st;
+    int k;
+    (void)state;
+    d.statics = 3;
+    w = new_world(&d, &mem);
+    assert_status(c2d_world_add_segment(w, s0, s1, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add_segment(w, s2, s3, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add_circle(w, c0, 0.3, 1, NULL), C2D_OK);
+    assert_status(c2d_world_add_circle(w, c0, 0.3, 1, NULL), C2D_INVALID); /* full */
+    {
+        /* A gas clear of the statics: a 6 x 6 lattice, the disks near them moved off. */
+        size_t i, n = 0;
+        rng_state = 5;
+        for (i = 0; i < 36; i++) {
+            c2d_body b;
+            b.pos.x = ((double)(i % 6) + 0.5) * 2, b.pos.y = ((double)(i / 6) + 0.5) * 2;
+            b.vel.x = uniform(), b.vel.y = uniform(), b.mass = 1;
+            {
+                const double ux = (b.pos.x - s0.x), uy = (b.pos.y - s0.y), lx = s1.x - s0.x, ly = s1.y - s0.y;
+                const double vx = (b.pos.x - s2.x), vy = (b.pos.y - s2.y), mx = s3.x - s2.x, my = s3.y - s2.y;
+                double u = (ux * lx + uy * ly) / (lx * lx + ly * ly), v = (vx * mx + vy * my) / (mx * mx + my * my);
+                u = u < 0 ? 0 : u > 1 ? 1 : u, v = v < 0 ? 0 : v > 1 ? 1 : v;
+                if (hypot(ux - u * lx, uy - u * ly) < 0.35 || hypot(vx - v * mx, vy - v * my) < 0.35 ||
+                    hypot(b.pos.x - c0.x, b.pos.y - c0.y) < 0.65)
+                    continue;
+            }
+            assert_status(c2d_world_add(w, &b, 0.3, NULL), C2D_OK);
+            n++;
+        }
+        assert_true(n > 25);
+    }
+    e0 = kinetic(w);
+    for (t = 0.5, k = 0; t <= 100; t += 0.5, k++) {
+        size_t i;
+        assert_status(c2d_world_advance(w, t), C2D_OK);
+        for (i = 0; i < c2d_world_count(w); i++) { /* the same side of each segment as at the start */
+            c2d_body b;
+            double u, dist;
+            assert_status(c2d_world_get(w, i, &b), C2D_OK);
+            dist = hypot(b.pos.x - c0.x, b.pos.y - c0.y);
+            assert_true(dist >= 0.6 - 1e-9);
+            u = ((b.pos.x - s0.x) * (s1.x - s0.x) + (b.pos.y - s0.y) * (s1.y - s0.y)) / hypot(s1.x - s0.x, s1.y - s0.y);
+            dist = fabs((s1.x - s0.x) * (b.pos.y - s0.y) - (s1.y - s0.y) * (b.pos.x - s0.x)) /
+                   hypot(s1.x - s0.x, s1.y - s0.y);
+            if (u >= 0 && u <= hypot(s1.x - s0.x, s1.y - s0.y)) assert_true(dist >= 0.3 - 1e-9);
+        }
+    }
+    e1 = kinetic(w);
+    c2d_world_get_stats(w, &st);
+    printf("test_world: gas with 3 statics: %llu impacts, %llu at walls and statics: relative energy change %.2e\n",
+           st.collisions, st.wall_collisions, e1 / e0 - 1);
+    assert_close(e1 / e0, 1, 1e-12);
+    free(mem);
+    /* A fast small disk between a wall and a thin segment: never through. */
+    {
+        static_log log;
+        c2d_vec2 p = {10, 0.5}, q = {10, 19.5};
+        c2d_body b = {{2, 5}, {1e6, 3.3}, 1};
+        w = static_world(&d, &log, &mem);
+        assert_status(c2d_world_add_segment(w, p, q, 1, NULL), C2D_OK);
+        assert_status(c2d_world_add(w, &b, 0.01, NULL), C2D_OK);
+        for (k = 1; k <= 2000; k++) {
+            assert_status(c2d_world_advance(w, (double)k * 0.7e-6), C2D_OK);
+            assert_status(c2d_world_get(w, 0, &b), C2D_OK);
+            assert_true(b.pos.x <= 10 - 0.01 + 1e-9 && b.pos.x >= 0.01 - 1e-9);
+        }
+        assert_true(log.hits > 50);
+        free(mem);
+    }
+}
+
+static void test_static_refusals_change_nothing(void **state)
+{
+    c2d_world_desc d = box_desc(2, 10, 10, C2D_WALLS, 1, 1);
+    void *mem;
+    c2d_world *w = new_world(&d, &mem);
+    size_t bytes = c2d_world_bytes(&d);
+    unsigned char *copy = malloc(bytes);
+    c2d_vec2 a = {1, 1}, b = {4, 2}, bad = {NAN, 1}, inf = {1, INFINITY};
+    (void)state;
+    memcpy(copy, mem, bytes);
+    assert_status(c2d_world_add_segment(w, a, b, 1, NULL), C2D_INVALID); /* desc.statics 0 */
+    assert_status(c2d_world_add_circle(w, a, 1, 1, NULL), C2D_INVALID);
+    assert_memory_equal(copy, mem, bytes);
+    free(mem);
+    d.statics = 2;
+    assert_true(c2d_world_bytes(&d) > bytes);
+    bytes = c2d_world_bytes(&d);
+    free(copy);
+    copy = malloc(bytes);
+    w = new_world(&d, &mem);
+    memcpy(copy, mem, bytes);
+    assert_status(c2d_world_add_segment(w, a, a, 1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_segment(w, bad, b, 1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_segment(w, a, inf, 1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_segment(w, a, b, 1.5, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_segment(w, a, b, NAN, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_segment(NULL, a, b, 1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_circle(w, a, 0, 1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_circle(w, a, -1, 1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_circle(w, a, INFINITY, 1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_circle(w, bad, 1, 1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_circle(w, a, 1, -0.1, NULL), C2D_INVALID);
+    assert_status(c2d_world_add_circle(NULL, a, 1, 1, NULL), C2D_INVALID);
+    assert_memory_equal(copy, mem, bytes);
+    d.statics = 0x10001;
+    assert_int_equal(c2d_world_bytes(&d), 0);
+    free(copy);
+    free(mem);
+}
+
 /* ------------------------------------------------------------ refusals */
 
 static void test_every_refusal_is_invalid_and_changes_nothing(void **state)
@@ -700,6 +1202,16 @@ int main(void)
         cmocka_unit_test(test_kicks_and_removals_keep_frame_independence),
         cmocka_unit_test(test_a_kicked_disk_moves_and_a_removed_one_is_passed_through),
         cmocka_unit_test(test_every_refusal_is_invalid_and_changes_nothing),
+        cmocka_unit_test(test_a_decelerating_disk_stops_where_the_formula_says),
+        cmocka_unit_test(test_decelerating_disks_meet_when_the_accelerated_time_of_impact_says),
+        cmocka_unit_test(test_a_timer_fires_at_its_time_and_a_velocity_set_there_holds),
+        cmocka_unit_test(test_accelerations_and_timers_keep_frame_independence),
+        cmocka_unit_test(test_a_disk_pressed_into_a_wall_rests_on_it),
+        cmocka_unit_test(test_acceleration_and_timer_refusals_change_nothing),
+        cmocka_unit_test(test_a_disk_bounces_off_a_tilted_segment_by_the_reflection_law),
+        cmocka_unit_test(test_a_disk_bounces_off_a_segment_end_and_off_a_circle),
+        cmocka_unit_test(test_elastic_statics_keep_a_gas_energy_and_nothing_passes_through),
+        cmocka_unit_test(test_static_refusals_change_nothing),
     };
     const int total = (int)(sizeof tests / sizeof tests[0]);
     int failed = cmocka_run_group_tests_name("world", tests, NULL, NULL);
