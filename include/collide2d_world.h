@@ -126,12 +126,19 @@
  *   A uniform grid of cells at least one largest diameter wide (at most
  *   2 x capacity + 16 of them); each disk's next event is sought among the
  *   disks of the 3 x 3 cells around its own, and leaving its cell is an
- *   event.  One pending event per disk, in a binary heap; an event whose
+ *   event.  One pending event per disk, in a 4-ary heap; an event whose
  *   partner has had an impact since it was predicted is stale (per-disk
  *   impact counters) and leads to a new prediction instead.
  *   Cost per event: O(log N) for the heap and O(disks in 9 cells) for the
  *   predictions; adding a disk larger than all before rebuilds the grid
  *   (O(N)).
+ *
+ * CONFIGURATION
+ *   C2D_NO_WORLD (when compiling the library): leave the world out.  The
+ *   firmware builds of tests/mcu do: the world hands 16-byte vectors by
+ *   value to the library's calls, which GCC's Cortex-M code copies with
+ *   memcpy, and the library promises no C library.  C2D_NO_DOUBLE leaves it
+ *   out too (it is double precision).
  *
  * THREAD SAFETY: the functions touch only their arguments; one world may
  * be read (c2d_world_get, c2d_world_get_stats) from several threads at once

@@ -26,7 +26,7 @@
  */
 #include "internal.h"
 
-#ifndef C2D_NO_DOUBLE
+#if !defined(C2D_NO_DOUBLE) && !defined(C2D_NO_WORLD)
 
 #ifndef C2D_WORLD_HEADER
 #define C2D_WORLD_HEADER "../include/collide2d_world.h"
@@ -1119,4 +1119,4 @@ void c2d_world_get_stats(const c2d_world *world, c2d_world_stats *stats)
     *stats = world->stats;
 }
 
-#endif /* C2D_NO_DOUBLE */
+#endif /* !C2D_NO_DOUBLE && !C2D_NO_WORLD */

@@ -31,8 +31,12 @@ MCU_PKGS := gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi \
   gcc-riscv64-unknown-elf binutils-riscv64-unknown-elf picolibc-riscv64-unknown-elf \
   qemu-system-arm qemu-system-misc cppcheck
 
+# C2D_NO_WORLD: the event-driven world passes 16-byte vectors by value to the
+# library's own calls, which GCC compiles into memcpy calls on these cores,
+# and the library promises no C library; it is not in the firmware builds
+# until it calls scalar entry points instead.
 MCU_CFLAGS := -std=c99 $(WARN) -Werror -ffp-contract=off -Os -ffreestanding -fno-math-errno \
-  -ffunction-sections -fdata-sections
+  -ffunction-sections -fdata-sections -DC2D_NO_WORLD
 
 # Per target: compiler, core flags, library options, table description,
 # emulator, and the extra checks of `make cross`.
