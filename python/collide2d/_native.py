@@ -288,7 +288,7 @@ class WorldDesc(ctypes.Structure):
                 ("wall_restitution", ctypes.c_double), ("collapse_speed", ctypes.c_double),
                 ("collapse_count", ctypes.c_uint), ("collapse_time", ctypes.c_double),
                 ("collapse_length", ctypes.c_double), ("on_event", EVENT_CALLBACK),
-                ("user", ctypes.c_void_p)]
+                ("user", ctypes.c_void_p), ("statics", ctypes.c_size_t)]
 
 
 class WorldStats(ctypes.Structure):

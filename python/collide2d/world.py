@@ -44,6 +44,8 @@ class EventKind(enum.IntEnum):
     """What an Event is (c2d_world_event_kind)."""
     IMPACT = 0
     WALL = 1
+    TIMER = 2   # a disk's timer is due (the C world's; not set from Python yet)
+    STATIC = 3  # a disk met a static segment or circle (likewise)
 
 
 class WorldError(ValueError):

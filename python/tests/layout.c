@@ -47,7 +47,7 @@ int main(void)
     FIELD(c2d_world_desc, boundary); FIELD(c2d_world_desc, restitution); FIELD(c2d_world_desc, wall_restitution);
     FIELD(c2d_world_desc, collapse_speed); FIELD(c2d_world_desc, collapse_count);
     FIELD(c2d_world_desc, collapse_time); FIELD(c2d_world_desc, collapse_length);
-    FIELD(c2d_world_desc, on_event); FIELD(c2d_world_desc, user);
+    FIELD(c2d_world_desc, on_event); FIELD(c2d_world_desc, user); FIELD(c2d_world_desc, statics);
     STRUCT(c2d_world_stats);
     FIELD(c2d_world_stats, collisions); FIELD(c2d_world_stats, wall_collisions); FIELD(c2d_world_stats, events);
     FIELD(c2d_world_stats, time); FIELD(c2d_world_stats, virial);
