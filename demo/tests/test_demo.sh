@@ -227,7 +227,9 @@ check "--screenshot-window, no display, no --headless: exit 2 before simulating,
 env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$BIN" --game practice > "$TMP/out" 2> "$TMP/err"
 [ $? = 2 ] && grep -q -- "--game practice is played in the window" "$TMP/err" && ! grep -q "running headless" "$TMP/err"
 check "--game practice, no display: exit 2, no \"running headless\"" $?
-DISPLAY=:7777 "$BIN" --headless --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
+# SDL tries the display and leaks a block in libdbus doing so: not ours to
+# free, so LeakSanitizer is off for this run (as for the window screenshot).
+DISPLAY=:7777 ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" "$BIN" --headless --screenshot-window "$TMP/nowin.png" > "$TMP/out" 2> "$TMP/err"
 [ $? = 2 ] && grep -q -- "--screenshot-window: no display" "$TMP/err" && [ ! -s "$TMP/out" ] && [ ! -e "$TMP/nowin.png" ]
 check "--screenshot-window, an unreachable display: exit 2 before simulating" $?
 echo keep > "$TMP/keep.csv"
