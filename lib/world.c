@@ -755,6 +755,22 @@ static void c2d_w_emit(c2d_world *w, const c2d_world_event *ev)
     w->busy = 0;
 }
 
+/* The collapse rule (collide2d_world.h), one place for pairs, walls and
+ * statics: an impact is elastic when a disk of it has had collapse_count
+ * impacts at this very instant (crowded), its previous impact is less than
+ * collapse_time ago, it approaches slower than collapse_speed, or it has
+ * closed less than collapse_length since.  vn and the thresholds are
+ * scaled by nn, the normal's length (1 for a wall, which scales nothing). */
+static int c2d_w_crowded(const c2d_world *w, const c2d_w_disk *p, double now)
+{
+    return p->last == now && p->same >= w->collapse_count;
+}
+
+static int c2d_w_collapses(const c2d_world *w, int crowded, double since, double vn, double nn, double length)
+{
+    return crowded || since < w->collapse_time || vn < w->collapse_speed * nn || vn * since < length * nn;
+}
+
 static void c2d_w_impact_clock(c2d_w_disk *p, double now)
 {
     if (p->last == now) {
@@ -801,9 +817,7 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
         const double vn = -((b.vel.x - a.vel.x) * nx + (b.vel.y - a.vel.y) * ny), nn = C2D_W_SQRT(nx * nx + ny * ny);
         const double length = w->collapse_length > 0 ? w->collapse_length
                                                       : 0x1p-20 * (p->radius < q->radius ? p->radius : q->radius);
-        if ((p->last == now && p->same >= w->collapse_count) || (q->last == now && q->same >= w->collapse_count) ||
-            since < w->collapse_time || vn < w->collapse_speed * nn || vn * since < length * nn)
-            e = 1;
+        if (c2d_w_collapses(w, c2d_w_crowded(w, p, now) || c2d_w_crowded(w, q, now), since, vn, nn, length)) e = 1;
     }
     if (C2D_W_COLLIDE(&a, &b, e) == C2D_OK) {
         const double vqx = c2d_w_vel(q->vx, q->ax, dq), vqy = c2d_w_vel(q->vy, q->ay, dq);
@@ -846,9 +860,7 @@ static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
         const double nn = C2D_W_SQRT(n.x * n.x + n.y * n.y), vn = a.vel.x * n.x + a.vel.y * n.y;
         const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
         const double since = now - p->last;
-        if ((p->last == now && p->same >= w->collapse_count) || since < w->collapse_time ||
-            vn < w->collapse_speed * nn || vn * since < length * nn)
-            e = 1;
+        if (c2d_w_collapses(w, c2d_w_crowded(w, p, now), since, vn, nn, length)) e = 1;
     }
     {
         const double vx0 = a.vel.x, vy0 = a.vel.y;
@@ -885,9 +897,7 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
     vn = *v < 0 ? -*v : *v;
     an = p->partner % 2 == 0 ? -*acc : *acc; /* > 0: pressing into the wall */
     if (e < 1) { /* the collapse rule, as for a pair (the wall's "radius" 0) */
-        if ((p->last == now && p->same >= w->collapse_count) || since < w->collapse_time ||
-            vn < w->collapse_speed || vn * since < length)
-            e = 1;
+        if (c2d_w_collapses(w, c2d_w_crowded(w, p, now), since, vn, 1.0, length)) e = 1;
     }
     switch (p->partner) {
     case 0: x = p->radius; break;
