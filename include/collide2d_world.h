@@ -178,6 +178,44 @@ typedef struct c2d_world_event {
                          TIMER: 0 */
 } c2d_world_event;
 
+/* An axis-aligned box [lo.x, hi.x] x [lo.y, hi.y]: what a caller's
+ * broadphase knows of a disk. */
+typedef struct c2d_world_box {
+    c2d_vec2 lo, hi;
+} c2d_world_box;
+
+/* A broadphase the caller supplies instead of the built-in cells
+ * (c2d_world_desc.broadphase; see BROADPHASE AND QUEUE above).  The world
+ * gives each disk a box, its shell: the disk's centre when the box was
+ * set, +- (radius + margin) along each axis, a little more for rounding;
+ * the disk keeps its centre within margin of the box's centre, and the
+ * moment it would leave, the world moves its box (an event of its own).
+ * The world calls
+ *   insert(user, disk, box)  when a disk is added (disk = its index);
+ *   move(user, disk, box)    when a disk's box moves (b2DynamicTree's MoveProxy);
+ *   remove(user, disk)       when a disk is removed;
+ *   query(user, box, report, context)  to find the disks that can meet a
+ *                            disk: it must call report(context, disk) for
+ *                            every disk whose box overlaps `box` (touching
+ *                            counts).  More is harmless (a disk reported
+ *                            twice, one whose box does not overlap, the
+ *                            querying disk itself), fewer is a missed impact.
+ * The callbacks must not call the world.  In a periodic box the boxes are
+ * in [0, width) x [0, height) coordinates (the centre wrapped), a box may
+ * stick out of the box by its half-size, and the world queries every image
+ * of a box that sticks out (up to 4 queries).  The events and states are
+ * the same bits whatever broadphase finds the candidates (a pair's time of
+ * impact depends only on the two disks' states: see DETERMINISM). */
+typedef struct c2d_world_broadphase {
+    void (*insert)(void *user, size_t disk, const c2d_world_box *box);
+    void (*move)(void *user, size_t disk, const c2d_world_box *box);
+    void (*remove)(void *user, size_t disk);
+    void (*query)(void *user, const c2d_world_box *box, void (*report)(void *context, size_t disk), void *context);
+    void *user;    /* passed to the four */
+    double margin; /* >= 0, finite: how far a centre moves before its box is moved
+                      [0: half the disk's radius] */
+} c2d_world_broadphase;
+
 typedef struct c2d_world_desc {
     size_t capacity;         /* most disks, 1 to 2^31 - 1 */
     double width, height;    /* the box [0, width) x [0, height): finite, > 0 */
@@ -203,6 +241,9 @@ typedef struct c2d_world_desc {
     void (*on_event)(void *user, const c2d_world_event *event);
     void *user;              /* passed to on_event */
     size_t statics;          /* most static segments and circles, 0 to 65536 [0: none] */
+    /* The caller's broadphase, copied at c2d_world_init (the four functions
+     * all given) [NULL: the built-in cells]. */
+    const c2d_world_broadphase *broadphase;
 } c2d_world_desc;
 
 typedef struct c2d_world_stats {

@@ -64,6 +64,17 @@
 /* Kinds in the order simultaneous events are processed (a timer's tie key
  * is 3 like an idle disk's: idle ones are never due). */
 enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_TIMER = 3, C2D_W_IDLE = 4, C2D_W_GONE = 5 };
+/* The partners of a C2D_W_CELL event: a cell side 0..3 (-x, +x, -y, +y),
+ * the periodic rebase, or a side of the caller broadphase's box. */
+enum { C2D_W_REBASE = 4, C2D_W_BOX = 5 };
+/* A periodic disk's reference state is moved on (rebased) before its centre
+ * has gone 1/24 of the box's smaller side from it: then the nearest image
+ * of a pair at the later of their state times is the image they meet in
+ * (derivation at c2d_w_pair_start). */
+#define C2D_W_REBASE_FRACTION (1.0 / 24.0)
+/* A caller's box is this much wider than radius + margin, for the rounding
+ * of the centre's path against the box's sides. */
+#define C2D_W_BOX_SLACK (1.0 + 1.0 / 1048576.0)
 
 /* 128 bytes, the first cache line what a prediction reads of a neighbour. */
 typedef struct c2d_w_disk {
@@ -101,6 +112,7 @@ typedef struct c2d_w_entry {
 
 struct c2d_world {
     c2d_w_disk *disk;
+    double *box;       /* with a caller's broadphase: each disk's box centre (x, y) */
     c2d_w_entry *heap; /* a min-heap on (when, tie) */
     uint32_t *head;  /* first disk of each cell, C2D_W_NONE for none */
     c2d_w_static *stat;
@@ -116,6 +128,9 @@ struct c2d_world {
     int busy;        /* inside on_event */
     void (*on_event)(void *user, const c2d_world_event *event);
     void *user;
+    int caller;      /* the caller's broadphase (bp) instead of the cells */
+    c2d_world_broadphase bp;
+    double rebase;   /* periodic: how far a centre goes from its reference before a rebase */
     c2d_world_stats stats;
 };
 
@@ -128,6 +143,18 @@ struct c2d_world {
 /* A coordinate and a velocity component dt after the state's time. */
 static double c2d_w_at(double x, double v, double a, double dt) { return x + (v + 0.5 * a * dt) * dt; }
 static double c2d_w_vel(double v, double a, double dt) { return v + a * dt; }
+
+/* A coordinate of a periodic box back in [0, side) (a stored position goes
+ * at most a rebase's distance out; x - side is then exact, Sterbenz). */
+static double c2d_w_wrap(double x, double side)
+{
+    if (x < 0) {
+        x += side;
+        return x < side ? x : 0;
+    }
+    return x < side ? x : x - side;
+}
+
 
 #define C2D_W_ROUND8(n) (((n) + 7u) / 8u * 8u)
 
@@ -145,17 +172,28 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
     if (!(d->collapse_speed >= 0) || !c2d_w_finite(d->collapse_speed)) return 0;
     if (!(d->collapse_time >= 0) || !c2d_w_finite(d->collapse_time)) return 0;
     if (!(d->collapse_length >= 0) || !c2d_w_finite(d->collapse_length)) return 0;
+    if (d->broadphase != NULL) {
+        const c2d_world_broadphase *b = d->broadphase;
+        if (b->insert == NULL || b->move == NULL || b->remove == NULL || b->query == NULL) return 0;
+        if (!(b->margin >= 0) || !c2d_w_finite(b->margin)) return 0;
+    }
     return 1;
 }
 
-/* Offsets of the disks, the heap and the cells in the memory, and the
- * total; 0 if the sizes overflow size_t. */
-static size_t c2d_w_layout(size_t capacity, size_t statics, size_t *disks, size_t *heap, size_t *cells,
-                           size_t *stat)
+static size_t c2d_w_budget(const c2d_world_desc *d)
 {
-    const size_t top = (size_t)-1;
-    size_t budget = C2D_W_CELLS_PER_DISK * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)) + 56, n;
-    if (capacity > (top - 16) / C2D_W_CELLS_PER_DISK) return 0;
+    return d->broadphase != NULL ? 0 : C2D_W_CELLS_PER_DISK * d->capacity + 16;
+}
+
+/* Offsets of the disks, the heap, the cells (or the caller broadphase's
+ * box centres) and the statics in the memory, and the total; 0 if the
+ * sizes overflow size_t. */
+static size_t c2d_w_layout(const c2d_world_desc *d, size_t *disks, size_t *heap, size_t *cells, size_t *stat)
+{
+    const size_t top = (size_t)-1, capacity = d->capacity, statics = d->statics;
+    size_t budget, off = C2D_W_ROUND8(sizeof(struct c2d_world)) + 56, n;
+    if (capacity > (top - 16) / C2D_W_CELLS_PER_DISK / 2) return 0;
+    budget = d->broadphase != NULL ? 4 * capacity : c2d_w_budget(d); /* boxes: 2 doubles = 4 cells' bytes */
     *disks = off; /* the disks start on a 64-byte boundary within the 56 bytes before */
     if (capacity > (top - off) / sizeof(c2d_w_disk)) return 0;
     off += capacity * sizeof(c2d_w_disk);
@@ -175,7 +213,7 @@ size_t c2d_world_bytes(const c2d_world_desc *desc)
 {
     size_t a, b, c, e;
     if (!c2d_w_desc_ok(desc)) return 0;
-    return c2d_w_layout(desc->capacity, desc->statics, &a, &b, &c, &e);
+    return c2d_w_layout(desc, &a, &b, &c, &e);
 }
 
 c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c2d_world_desc *desc)
@@ -185,7 +223,7 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     c2d_world *w;
     if (world == NULL || memory == NULL || !c2d_w_desc_ok(desc)) return C2D_INVALID;
     if ((uintptr_t)memory % 8u != 0) return C2D_INVALID;
-    total = c2d_w_layout(desc->capacity, desc->statics, &od, &oh, &oc, &os);
+    total = c2d_w_layout(desc, &od, &oh, &oc, &os);
     if (total == 0 || bytes < total) return C2D_INVALID;
     w = (c2d_world *)memory;
     {
@@ -193,13 +231,14 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
         w->disk = (c2d_w_disk *)(void *)(m + od - back);
         w->heap = (c2d_w_entry *)(void *)(m + oh - back);
         w->head = (uint32_t *)(void *)(m + oc - back);
+        w->box = (double *)(void *)(m + oc - back);
         w->stat = (c2d_w_static *)(void *)(m + os - back);
     }
     w->capacity = desc->capacity;
     w->scapacity = desc->statics;
     w->nstatic = 0;
     w->count = 0;
-    w->budget = C2D_W_CELLS_PER_DISK * desc->capacity + 16;
+    w->budget = c2d_w_budget(desc);
     w->mx = w->my = 0;
     w->width = desc->width;
     w->height = desc->height;
@@ -214,6 +253,14 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     w->busy = 0;
     w->on_event = desc->on_event;
     w->user = desc->user;
+    w->caller = desc->broadphase != NULL;
+    if (w->caller) {
+        w->bp = *desc->broadphase;
+    } else {
+        w->bp.insert = NULL, w->bp.move = NULL, w->bp.remove = NULL, w->bp.query = NULL;
+        w->bp.user = NULL, w->bp.margin = 0;
+    }
+    w->rebase = C2D_W_REBASE_FRACTION * (desc->width < desc->height ? desc->width : desc->height);
     w->cw = w->ch = 0;
     w->rmax = 0;
     w->now = 0;
@@ -312,26 +359,23 @@ static void c2d_w_consider(c2d_w_best *b, double when, uint32_t kind, uint32_t p
     }
 }
 
-/* The image offset of a neighbour's cell coordinate cj from ci: -1 (its
- * image lies one box to the left), 0 or 1. */
-static double c2d_w_image(size_t ci, size_t cj)
-{
-    if (cj > ci + 1) return -1.0;
-    if (ci > cj + 1) return 1.0;
-    return 0.0;
-}
-
-/* The cells around coordinate c of m along one axis, each once, and the
- * shift of each one's image (periodic: +-side across the wrap). */
-static size_t c2d_w_neighbours(size_t c, size_t m, int periodic, double side, size_t *cell, double *shift)
+/* The cells around coordinate c of m along one axis, each once (a
+ * periodic grid wraps). */
+static size_t c2d_w_neighbours(size_t c, size_t m, int periodic, size_t *cell)
 {
     size_t n = 0;
-    if (c > 0) cell[n] = c - 1, shift[n++] = 0;
-    else if (periodic) cell[n] = m - 1, shift[n++] = -side;
-    cell[n] = c, shift[n++] = 0;
-    if (c + 1 < m) cell[n] = c + 1, shift[n++] = 0;
-    else if (periodic) cell[n] = 0, shift[n++] = side;
+    if (c > 0) cell[n++] = c - 1;
+    else if (periodic) cell[n++] = m - 1;
+    cell[n++] = c;
+    if (c + 1 < m) cell[n++] = c + 1;
+    else if (periodic) cell[n++] = 0;
     return n;
+}
+
+/* A caller broadphase's margin for disk p. */
+static double c2d_w_margin(const c2d_world *w, const c2d_w_disk *p)
+{
+    return w->bp.margin > 0 ? w->bp.margin : 0.5 * p->radius;
 }
 
 /* The first time >= now at which a disk at x (time t) with speed v reaches
@@ -418,14 +462,19 @@ static int c2d_w_static_refused(const c2d_w_static *st, const c2d_body *a)
     return C2D_W_COLLIDE_NORMAL(&ta, &tb, n, 1.0) != C2D_OK;
 }
 
-/* Disk p (at a, now) against every static: a circle (radius sum r + R), a
- * segment's two ends (points) and its interior (the normal coordinate
- * reaching +-r with the foot within the segment). */
+/* Disk p against every static, from its reference state (time p->t, so the
+ * times depend on that state alone; an approach already due is clamped to
+ * now): a circle (radius sum r + R), a segment's two ends (points) and its
+ * interior (the normal coordinate reaching +-r, on the side the centre is
+ * now, with the foot within the segment).  With acceleration the horizon is
+ * the disk's timer, where its motion may change. */
 static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const c2d_body *a, c2d_w_best *best)
 {
     const double now = w->now;
     size_t k;
     c2d_vec2 acc;
+    c2d_body ref;
+    ref.pos.x = p->x, ref.pos.y = p->y, ref.vel.x = p->vx, ref.vel.y = p->vy, ref.mass = p->mass;
     acc.x = p->ax, acc.y = p->ay;
     for (k = 0; k < w->nstatic; k++) {
         const c2d_w_static *st = &w->stat[k];
@@ -437,15 +486,18 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
             c2d_status r;
             b.pos.x = end ? st->bx : st->ax, b.pos.y = end ? st->by : st->ay;
             b.vel.x = b.vel.y = 0, b.mass = C2D_W_INF;
-            if (acc.x == 0 && acc.y == 0) r = C2D_W_TOI(a, &b, p->radius + st->radius, &toi);
+            if (acc.x == 0 && acc.y == 0) r = C2D_W_TOI(&ref, &b, p->radius + st->radius, &toi);
             else {
                 c2d_vec2 zero;
                 zero.x = zero.y = 0;
-                r = C2D_W_TOI_ACCEL(a, acc, &b, zero, p->radius + st->radius, best->when - now, &toi);
+                r = C2D_W_TOI_ACCEL(&ref, acc, &b, zero, p->radius + st->radius, p->timer - p->t, &toi);
             }
             if (r != C2D_OK) continue;
-            when = now + toi;
-            if (when == now && c2d_w_static_refused(st, a)) continue;
+            when = p->t + toi;
+            if (when <= now) {
+                if (c2d_w_static_refused(st, a)) continue;
+                when = now;
+            }
             c2d_w_consider(best, when, C2D_W_WALL, partner, 0);
         }
         if (!st->circle) {
@@ -465,74 +517,224 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
     }
 }
 
-static void c2d_w_predict(c2d_world *w, uint32_t i)
+/* Disk p as a body at time t (from its reference state). */
+static void c2d_w_body_at(const c2d_w_disk *p, double t, c2d_body *b)
 {
-    c2d_w_disk *d = w->disk, *p = &d[i];
-    const double now = w->now, dt = now - p->t, pax = p->ax, pay = p->ay;
-    const double px = c2d_w_at(p->x, p->vx, pax, dt), py = c2d_w_at(p->y, p->vy, pay, dt);
+    const double dt = t - p->t;
+    b->pos.x = c2d_w_at(p->x, p->vx, p->ax, dt), b->pos.y = c2d_w_at(p->y, p->vy, p->ay, dt);
+    b->vel.x = c2d_w_vel(p->vx, p->ax, dt), b->vel.y = c2d_w_vel(p->vy, p->ay, dt);
+    b->mass = p->mass;
+}
+
+/* The nearest periodic image of a displacement d along a side: the shift
+ * (-side, 0 or side) to add.  Stored positions are within [0, side) and
+ * rebased before they go side / 24 from it, so one shift is enough. */
+static double c2d_w_image_shift(double d, double side)
+{
+    if (d > 0.5 * side) return -side;
+    if (d < -0.5 * side) return side;
+    return 0;
+}
+
+/* The canonical frame of pair (p, q), p the lower index: the later of
+ * their state times t0 (returned), both extrapolated to it, q's image the
+ * nearest to p there (*shift, added to q's positions).  It depends only on
+ * the two stored states, so the pair's time of impact is the same bits
+ * whoever predicts it, whenever and from whatever broadphase.
+ * Why the nearest image at t0 is the one they meet in: at contact the
+ * displacement's components are at most the radius sum <= width / 3 (the
+ * box is at least 3 largest diameters); each disk stays within
+ * e = side / 24 of its reference position per axis (the rebase), so from t0
+ * to the contact the displacement changes by less than 3 e = side / 8 (the
+ * later disk moves less than e from its reference at t0, the earlier one
+ * less than 2 e); hence at t0 the contact image's components were below
+ * side / 3 + side / 8 < side / 2: it is the nearest one. */
+static double c2d_w_pair_start(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, c2d_body *a, c2d_body *b,
+                               c2d_vec2 *shift)
+{
+    const double t0 = p->t > q->t ? p->t : q->t;
+    c2d_w_body_at(p, t0, a);
+    c2d_w_body_at(q, t0, b);
+    shift->x = shift->y = 0;
+    if (w->periodic) {
+        shift->x = c2d_w_image_shift(b->pos.x - a->pos.x, w->width);
+        shift->y = c2d_w_image_shift(b->pos.y - a->pos.y, w->height);
+        b->pos.x += shift->x, b->pos.y += shift->y;
+    }
+    return t0;
+}
+
+/* The pair at time t as its impact sees it (q shifted to its image). */
+static void c2d_w_pair_at(const c2d_w_disk *p, const c2d_w_disk *q, double t, c2d_vec2 shift, c2d_body *a, c2d_body *b)
+{
+    c2d_w_body_at(p, t, a);
+    c2d_w_body_at(q, t, b);
+    b->pos.x += shift.x, b->pos.y += shift.y;
+}
+
+/* A pair due at once (time <= now) that c2d_collide would refuse at now
+ * (touching with no approach speed, pushed together by accelerations, or
+ * a graze rounded into the past): no event, or the world would predict it
+ * again and again. */
+static int c2d_w_pair_refused_now(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, c2d_vec2 shift)
+{
+    c2d_body a, b;
+    c2d_w_pair_at(p, q, w->now, shift, &a, &b);
+    return c2d_w_refused_now(&a, &b);
+}
+
+/* Disk i's candidate j: their next impact (the canonical frame, lower index
+ * first) if it can beat the best so far.  Straight paths are filtered
+ * first, each test certain despite rounding (the estimates' errors are far
+ * below 2^-40 of their terms, taken far from underflow): receding or no
+ * relative motion; a miss (the discriminant negative); or no contact
+ * before the best event so far (the time of impact is at least
+ * c / (2 |dot|), c = |d|^2 - rs^2 > 0).  Curved ones go to
+ * c2d_time_of_impact_accel with the earlier timer as the horizon (where
+ * either motion may change; a timer's change makes the other's prediction
+ * stale). */
+static void c2d_w_try_pair(const c2d_world *w, uint32_t i, uint32_t j, c2d_w_best *best)
+{
+    const c2d_w_disk *d = w->disk;
+    const uint32_t lo = i < j ? i : j, hi = i < j ? j : i;
+    const c2d_w_disk *p = &d[lo], *q = &d[hi];
+    const double now = w->now, rs = p->radius + q->radius;
+    c2d_body a, b;
+    c2d_vec2 shift;
+    double t0, toi, when;
+    if (j == i || d[j].kind == C2D_W_GONE) return;
+    if (w->accel && (p->ax != 0 || p->ay != 0 || q->ax != 0 || q->ay != 0)) {
+        c2d_vec2 pa, qa;
+        const double horizon = p->timer < q->timer ? p->timer : q->timer;
+        t0 = c2d_w_pair_start(w, p, q, &a, &b, &shift);
+        pa.x = p->ax, pa.y = p->ay, qa.x = q->ax, qa.y = q->ay;
+        if (C2D_W_TOI_ACCEL(&a, pa, &b, qa, rs, horizon - t0, &toi) != C2D_OK) return;
+    } else {
+        double dx, dy, dvx, dvy, dot, mag;
+        const double pdt = (t0 = p->t > q->t ? p->t : q->t) - p->t, qdt = t0 - q->t;
+        a.pos.x = p->x + p->vx * pdt, a.pos.y = p->y + p->vy * pdt;
+        b.pos.x = q->x + q->vx * qdt, b.pos.y = q->y + q->vy * qdt;
+        shift.x = shift.y = 0;
+        if (w->periodic) {
+            shift.x = c2d_w_image_shift(b.pos.x - a.pos.x, w->width);
+            shift.y = c2d_w_image_shift(b.pos.y - a.pos.y, w->height);
+            b.pos.x += shift.x, b.pos.y += shift.y;
+        }
+        dx = b.pos.x - a.pos.x, dy = b.pos.y - a.pos.y, dvx = q->vx - p->vx, dvy = q->vy - p->vy;
+        if (dvx == 0 && dvy == 0) return;
+        dot = dx * dvx + dy * dvy;
+        mag = C2D_W_FABS(dx * dvx) + C2D_W_FABS(dy * dvy);
+        if (mag >= 0x1p-900 && mag <= 0x1p900) {
+            double dd, err, c;
+            if (dot > mag * 0x1p-40) return;
+            dd = dx * dx + dy * dy;
+            err = (dd + rs * rs) * 0x1p-40, c = (dd - rs * rs) - err;
+            if (c > 0 && c <= 0x1p900 && err >= 0x1p-900) {
+                const double dh = -dot + mag * 0x1p-40, vv = (dvx * dvx + dvy * dvy) * (1 - 0x1p-40);
+                if (dh * dh < vv * c * (1 - 0x1p-40)) return;
+                if (best->when - t0 < c / (2 * dh) * (1 - 0x1p-40)) return;
+            }
+        }
+        a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
+        b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
+        if (C2D_W_TOI(&a, &b, rs, &toi) != C2D_OK) return;
+    }
+    when = t0 + toi;
+    if (when <= now) {
+        if (c2d_w_pair_refused_now(w, p, q, shift)) return;
+        when = now;
+    }
+    c2d_w_consider(best, when, C2D_W_PAIR, j, d[j].count);
+}
+
+/* The sides of a range [lo, hi] along one axis a disk's coordinate (x at
+ * its time t, speed v, acceleration acc) leaves first: with acceleration
+ * both sides (c2d_w_meet), straight only the one the velocity points to.
+ * `has` says which sides exist (bit 0: lo, bit 1: hi); partners base + 0
+ * (lo) and base + 1 (hi). */
+static void c2d_w_leave(c2d_w_best *best, double t, double x, double v, double acc, double lo, double hi, unsigned has,
+                        uint32_t base, double now)
+{
+    if (acc == 0) {
+        if (v < 0 && (has & 1u)) c2d_w_consider(best, c2d_w_reach(t, x, v, lo, now), C2D_W_CELL, base, 0);
+        if (v > 0 && (has & 2u)) c2d_w_consider(best, c2d_w_reach(t, x, v, hi, now), C2D_W_CELL, base + 1, 0);
+        return;
+    }
+    if (has & 1u) c2d_w_consider(best, c2d_w_meet(t, x, v, acc, lo, -1, now), C2D_W_CELL, base, 0);
+    if (has & 2u) c2d_w_consider(best, c2d_w_meet(t, x, v, acc, hi, 1, now), C2D_W_CELL, base + 1, 0);
+}
+
+/* The image of a range's start `lo` (and so of the range) in a disk's frame:
+ * its stored position is in [0, side) up to a rebase's excursion, the
+ * range's in [0, side), so the shift is the one that brings the range's
+ * centre nearest the disk's centre x. */
+static double c2d_w_frame_shift(double x, double lo, double hi, double side)
+{
+    return c2d_w_image_shift(0.5 * (lo + hi) - x, side);
+}
+
+/* Walls: the centre at radius from them (straight: only those the
+ * velocity points to). */
+static void c2d_w_predict_walls(const c2d_world *w, const c2d_w_disk *p, c2d_w_best *best)
+{
+    const double now = w->now, r = p->radius;
+    if (p->ax == 0 && p->ay == 0) {
+        if (p->vx < 0) c2d_w_consider(best, c2d_w_reach(p->t, p->x, p->vx, r, now), C2D_W_WALL, 0, 0);
+        if (p->vx > 0) c2d_w_consider(best, c2d_w_reach(p->t, p->x, p->vx, w->width - r, now), C2D_W_WALL, 1, 0);
+        if (p->vy < 0) c2d_w_consider(best, c2d_w_reach(p->t, p->y, p->vy, r, now), C2D_W_WALL, 2, 0);
+        if (p->vy > 0) c2d_w_consider(best, c2d_w_reach(p->t, p->y, p->vy, w->height - r, now), C2D_W_WALL, 3, 0);
+        return;
+    }
+    c2d_w_consider(best, c2d_w_meet(p->t, p->x, p->vx, p->ax, r, -1, now), C2D_W_WALL, 0, 0);
+    c2d_w_consider(best, c2d_w_meet(p->t, p->x, p->vx, p->ax, w->width - r, 1, now), C2D_W_WALL, 1, 0);
+    c2d_w_consider(best, c2d_w_meet(p->t, p->y, p->vy, p->ay, r, -1, now), C2D_W_WALL, 2, 0);
+    c2d_w_consider(best, c2d_w_meet(p->t, p->y, p->vy, p->ay, w->height - r, 1, now), C2D_W_WALL, 3, 0);
+}
+
+/* Periodic: the rebase, when the centre first goes `rebase` from its
+ * reference position along either axis (straight: at rebase / max |v|). */
+static void c2d_w_predict_rebase(const c2d_world *w, const c2d_w_disk *p, c2d_w_best *best)
+{
+    const double e = w->rebase, now = w->now;
+    if (p->ax == 0 && p->ay == 0) {
+        const double sx = C2D_W_FABS(p->vx), sy = C2D_W_FABS(p->vy), s = sx > sy ? sx : sy;
+        if (s > 0) {
+            const double when = p->t + e / s;
+            c2d_w_consider(best, when < now ? now : when, C2D_W_CELL, C2D_W_REBASE, 0);
+        }
+        return;
+    }
+    c2d_w_consider(best, c2d_w_meet(p->t, p->x, p->vx, p->ax, p->x - e, -1, now), C2D_W_CELL, C2D_W_REBASE, 0);
+    c2d_w_consider(best, c2d_w_meet(p->t, p->x, p->vx, p->ax, p->x + e, 1, now), C2D_W_CELL, C2D_W_REBASE, 0);
+    c2d_w_consider(best, c2d_w_meet(p->t, p->y, p->vy, p->ay, p->y - e, -1, now), C2D_W_CELL, C2D_W_REBASE, 0);
+    c2d_w_consider(best, c2d_w_meet(p->t, p->y, p->vy, p->ay, p->y + e, 1, now), C2D_W_CELL, C2D_W_REBASE, 0);
+}
+
+/* The built-in broadphase: leaving the cell is an event, and the
+ * candidates are the disks of the 3 x 3 cells around (fewer against
+ * walls; each cell once). */
+static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best)
+{
+    const c2d_w_disk *d = w->disk, *p = &d[i];
     const size_t mx = w->mx, my = w->my, cx = p->cell % mx, cy = p->cell / mx;
-    const int accel = w->accel;
-    c2d_w_best best;
-    c2d_body a;
+    const int per = w->periodic;
     size_t k, l, nc, nr, col[3], row[3];
     uint32_t first[9];
-    double colshift[3], rowshift[3];
-    best.when = C2D_W_INF;
-    best.kind = C2D_W_IDLE;
-    best.partner = 0;
-    best.pcount = 0;
-    /* Walls (the centre at radius from them), then the cell's sides (with no
-     * acceleration along an axis, c2d_w_meet is c2d_w_reach for the sides
-     * the velocity points to). */
-    if (pax == 0 && pay == 0) { /* straight: only the sides the velocity points to */
-        if (!w->periodic) {
-            if (p->vx < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, p->radius, now), C2D_W_WALL, 0, 0);
-            if (p->vx > 0)
-                c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, w->width - p->radius, now), C2D_W_WALL, 1, 0);
-            if (p->vy < 0) c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, p->radius, now), C2D_W_WALL, 2, 0);
-            if (p->vy > 0)
-                c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, w->height - p->radius, now), C2D_W_WALL, 3, 0);
+    {
+        double x0 = (double)cx * w->cw, x1 = cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw;
+        double y0 = (double)cy * w->ch, y1 = cy + 1 == my ? w->height : (double)(cy + 1) * w->ch;
+        if (per) {
+            const double fx = c2d_w_frame_shift(a->pos.x, x0, x1, w->width);
+            const double fy = c2d_w_frame_shift(a->pos.y, y0, y1, w->height);
+            x0 += fx, x1 += fx, y0 += fy, y1 += fy;
         }
-        if (p->vx < 0 && (cx > 0 || w->periodic))
-            c2d_w_consider(&best, c2d_w_reach(p->t, p->x, p->vx, (double)cx * w->cw, now), C2D_W_CELL, 0, 0);
-        if (p->vx > 0 && (cx + 1 < mx || w->periodic))
-            c2d_w_consider(&best,
-                           c2d_w_reach(p->t, p->x, p->vx, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, now),
-                           C2D_W_CELL, 1, 0);
-        if (p->vy < 0 && (cy > 0 || w->periodic))
-            c2d_w_consider(&best, c2d_w_reach(p->t, p->y, p->vy, (double)cy * w->ch, now), C2D_W_CELL, 2, 0);
-        if (p->vy > 0 && (cy + 1 < my || w->periodic))
-            c2d_w_consider(&best,
-                           c2d_w_reach(p->t, p->y, p->vy, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, now),
-                           C2D_W_CELL, 3, 0);
-    } else {
-        if (!w->periodic) {
-            c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, p->radius, -1, now), C2D_W_WALL, 0, 0);
-            c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, w->width - p->radius, 1, now), C2D_W_WALL, 1, 0);
-            c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, p->radius, -1, now), C2D_W_WALL, 2, 0);
-            c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, w->height - p->radius, 1, now), C2D_W_WALL, 3, 0);
-        }
-        if (cx > 0 || w->periodic)
-            c2d_w_consider(&best, c2d_w_meet(p->t, p->x, p->vx, pax, (double)cx * w->cw, -1, now), C2D_W_CELL, 0, 0);
-        if (cx + 1 < mx || w->periodic)
-            c2d_w_consider(&best,
-                           c2d_w_meet(p->t, p->x, p->vx, pax, cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw, 1, now),
-                           C2D_W_CELL, 1, 0);
-        if (cy > 0 || w->periodic)
-            c2d_w_consider(&best, c2d_w_meet(p->t, p->y, p->vy, pay, (double)cy * w->ch, -1, now), C2D_W_CELL, 2, 0);
-        if (cy + 1 < my || w->periodic)
-            c2d_w_consider(&best,
-                           c2d_w_meet(p->t, p->y, p->vy, pay, cy + 1 == my ? w->height : (double)(cy + 1) * w->ch, 1, now),
-                           C2D_W_CELL, 3, 0);
+        c2d_w_leave(best, p->t, p->x, p->vx, p->ax, x0, x1, (cx > 0 || per ? 1u : 0u) | (cx + 1 < mx || per ? 2u : 0u),
+                    0, w->now);
+        c2d_w_leave(best, p->t, p->y, p->vy, p->ay, y0, y1, (cy > 0 || per ? 1u : 0u) | (cy + 1 < my || per ? 2u : 0u),
+                    2, w->now);
     }
-    if (p->timer < C2D_W_INF) c2d_w_consider(&best, p->timer, C2D_W_TIMER, 0, 0);
-    a.pos.x = px, a.pos.y = py, a.mass = p->mass;
-    a.vel.x = c2d_w_vel(p->vx, pax, dt), a.vel.y = c2d_w_vel(p->vy, pay, dt);
-    if (w->nstatic > 0) c2d_w_predict_statics(w, p, &a, &best);
-    /* The 3 x 3 cells around, each once (fewer against walls), with the
-     * image shift a periodic wrap gives each column and row. */
-    nc = c2d_w_neighbours(cx, mx, w->periodic, w->width, col, colshift);
-    nr = c2d_w_neighbours(cy, my, w->periodic, w->height, row, rowshift);
+    nc = c2d_w_neighbours(cx, mx, per, col);
+    nr = c2d_w_neighbours(cy, my, per, row);
     /* The cells' first disks, loaded (and their states fetched) all at
      * once before any is used: with many disks these are cache misses, and
      * independent ones overlap. */
@@ -544,67 +746,89 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
             if (j != C2D_W_NONE) __builtin_prefetch(&d[j]);
 #endif
         }
-    for (l = 0; l < nr; l++) {
-        const double sy = rowshift[l];
+    for (l = 0; l < nr * 3; l += 3)
         for (k = 0; k < nc; k++) {
-            const double sx = colshift[k];
-            uint32_t j = first[l * 3 + k];
-            for (; j != C2D_W_NONE; j = d[j].next) {
-                const c2d_w_disk *q = &d[j];
-                double qdt, dx, dy, dvx, dvy, dot, mag, toi;
-                c2d_body b;
-                if (j == i) continue;
-                qdt = now - q->t;
-                if (accel && (pax != 0 || pay != 0 || q->ax != 0 || q->ay != 0)) {
-                    /* Curved paths: until this disk's own next event so far
-                     * (beyond it, it predicts again; a partner whose motion
-                     * changes first makes this event stale). */
-                    c2d_vec2 qa;
-                    double when;
-                    qa.x = q->ax, qa.y = q->ay;
-                    b.pos.x = c2d_w_at(q->x, q->vx, qa.x, qdt) + sx;
-                    b.pos.y = c2d_w_at(q->y, q->vy, qa.y, qdt) + sy;
-                    b.vel.x = c2d_w_vel(q->vx, qa.x, qdt), b.vel.y = c2d_w_vel(q->vy, qa.y, qdt), b.mass = q->mass;
-                    {
-                        c2d_vec2 pa;
-                        pa.x = pax, pa.y = pay;
-                        if (C2D_W_TOI_ACCEL(&a, pa, &b, qa, p->radius + q->radius, best.when - now, &toi) != C2D_OK)
-                            continue;
-                    }
-                    when = now + toi;
-                    if (when == now && c2d_w_refused_now(&a, &b)) continue;
-                    c2d_w_consider(&best, when, C2D_W_PAIR, j, q->count);
-                    continue;
-                }
-                b.pos.x = (q->x + q->vx * qdt) + sx;
-                b.pos.y = (q->y + q->vy * qdt) + sy;
-                /* Filters, each certain despite rounding (the estimates'
-                 * errors are far below 2^-40 of their terms, taken far
-                 * from underflow): receding or no relative motion; a miss
-                 * (the discriminant negative); or no contact before the
-                 * best event so far (the time of impact is at least
-                 * c / (2 |dot|), c = |d|^2 - rs^2 > 0). */
-                dx = b.pos.x - px, dy = b.pos.y - py, dvx = q->vx - p->vx, dvy = q->vy - p->vy;
-                dot = dx * dvx + dy * dvy;
-                mag = C2D_W_FABS(dx * dvx) + C2D_W_FABS(dy * dvy);
-                if (dvx == 0 && dvy == 0) continue;
-                if (mag >= 0x1p-900 && mag <= 0x1p900) {
-                    double rs, dd, err, c;
-                    if (dot > mag * 0x1p-40) continue;
-                    rs = p->radius + q->radius, dd = dx * dx + dy * dy;
-                    err = (dd + rs * rs) * 0x1p-40, c = (dd - rs * rs) - err;
-                    if (c > 0 && c <= 0x1p900 && err >= 0x1p-900) {
-                        const double dh = -dot + mag * 0x1p-40, vv = (dvx * dvx + dvy * dvy) * (1 - 0x1p-40);
-                        if (dh * dh < vv * c * (1 - 0x1p-40)) continue;
-                        if (best.when - now < c / (2 * dh) * (1 - 0x1p-40)) continue;
-                    }
-                }
-                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = p->mass; /* ignored */
-                if (C2D_W_TOI(&a, &b, p->radius + q->radius, &toi) != C2D_OK) continue;
-                c2d_w_consider(&best, now + toi, C2D_W_PAIR, j, q->count);
-            }
+            uint32_t j;
+            for (j = first[l + k]; j != C2D_W_NONE; j = d[j].next) c2d_w_try_pair(w, i, j, best);
         }
+}
+
+/* The box a caller's broadphase gets for a disk centred at (x, y). */
+static void c2d_w_box_of(const c2d_world *w, const c2d_w_disk *p, double x, double y, c2d_world_box *box)
+{
+    const double h = (p->radius + c2d_w_margin(w, p)) * C2D_W_BOX_SLACK;
+    box->lo.x = x - h, box->lo.y = y - h, box->hi.x = x + h, box->hi.y = y + h;
+}
+
+typedef struct c2d_w_query {
+    const c2d_world *w;
+    uint32_t i;
+    c2d_w_best *best;
+} c2d_w_query;
+
+static void c2d_w_report(void *context, size_t disk)
+{
+    const c2d_w_query *q = (const c2d_w_query *)context;
+    if (disk < q->w->count) c2d_w_try_pair(q->w, q->i, (uint32_t)disk, q->best);
+}
+
+/* Ask the caller's broadphase for the disks whose boxes overlap `box`, and
+ * in a periodic box its images across each side it sticks out of. */
+static void c2d_w_query_images(const c2d_world *w, const c2d_world_box *box, void (*report)(void *, size_t), void *ctx)
+{
+    double sx[2], sy[2];
+    size_t nx = 1, ny = 1, k, l;
+    sx[0] = sy[0] = 0;
+    if (w->periodic) {
+        if (box->lo.x < 0) sx[nx++] = w->width;
+        else if (box->hi.x > w->width) sx[nx++] = -w->width;
+        if (box->lo.y < 0) sy[ny++] = w->height;
+        else if (box->hi.y > w->height) sy[ny++] = -w->height;
     }
+    for (l = 0; l < ny; l++)
+        for (k = 0; k < nx; k++) {
+            c2d_world_box b = *box;
+            b.lo.x += sx[k], b.hi.x += sx[k], b.lo.y += sy[l], b.hi.y += sy[l];
+            w->bp.query(w->bp.user, &b, report, ctx);
+        }
+}
+
+/* The caller's broadphase: leaving the box's inner range (centre +-
+ * margin) is an event, and the candidates are what it reports. */
+static void c2d_w_predict_caller(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best)
+{
+    const c2d_w_disk *p = &w->disk[i];
+    const double m = c2d_w_margin(w, p), bx = w->box[2 * i], by = w->box[2 * i + 1];
+    double fx = 0, fy = 0;
+    c2d_world_box box;
+    c2d_w_query ctx;
+    if (w->periodic) {
+        fx = c2d_w_frame_shift(a->pos.x, bx, bx, w->width);
+        fy = c2d_w_frame_shift(a->pos.y, by, by, w->height);
+    }
+    c2d_w_leave(best, p->t, p->x, p->vx, p->ax, bx + fx - m, bx + fx + m, 3u, C2D_W_BOX, w->now);
+    c2d_w_leave(best, p->t, p->y, p->vy, p->ay, by + fy - m, by + fy + m, 3u, C2D_W_BOX, w->now);
+    c2d_w_box_of(w, p, bx, by, &box);
+    ctx.w = w, ctx.i = i, ctx.best = best;
+    c2d_w_query_images(w, &box, c2d_w_report, &ctx);
+}
+
+static void c2d_w_predict(c2d_world *w, uint32_t i)
+{
+    c2d_w_disk *p = &w->disk[i];
+    c2d_w_best best;
+    c2d_body a;
+    best.when = C2D_W_INF;
+    best.kind = C2D_W_IDLE;
+    best.partner = 0;
+    best.pcount = 0;
+    c2d_w_body_at(p, w->now, &a);
+    if (!w->periodic) c2d_w_predict_walls(w, p, &best);
+    else c2d_w_predict_rebase(w, p, &best);
+    if (p->timer < C2D_W_INF) c2d_w_consider(&best, p->timer, C2D_W_TIMER, 0, 0);
+    if (w->nstatic > 0) c2d_w_predict_statics(w, p, &a, &best);
+    if (w->caller) c2d_w_predict_caller(w, i, &a, &best);
+    else c2d_w_predict_cells(w, i, &a, &best);
     p->kind = best.kind;
     p->partner = best.partner;
     p->pcount = best.pcount;
@@ -653,11 +877,13 @@ static void c2d_w_rebuild(c2d_world *w)
     for (c = 0; c < w->mx * w->my; c++) w->head[c] = C2D_W_NONE;
     for (i = 0; i < w->count; i++) {
         c2d_w_disk *p = &w->disk[i];
-        double dt = w->now - p->t;
+        double dt = w->now - p->t, x, y;
         size_t cx, cy;
         if (p->kind == C2D_W_GONE) continue;
-        cx = c2d_w_cell_1d(c2d_w_at(p->x, p->vx, p->ax, dt), w->cw, w->mx);
-        cy = c2d_w_cell_1d(c2d_w_at(p->y, p->vy, p->ay, dt), w->ch, w->my);
+        x = c2d_w_at(p->x, p->vx, p->ax, dt), y = c2d_w_at(p->y, p->vy, p->ay, dt);
+        if (w->periodic) x = c2d_w_wrap(x, w->width), y = c2d_w_wrap(y, w->height);
+        cx = c2d_w_cell_1d(x, w->cw, w->mx);
+        cy = c2d_w_cell_1d(y, w->ch, w->my);
         c2d_w_cell_insert(w, (uint32_t)i, cy * w->mx + cx);
     }
     for (i = 0; i < w->count; i++)
@@ -665,6 +891,22 @@ static void c2d_w_rebuild(c2d_world *w)
 }
 
 /* ------------------------------------------------------------ adding */
+
+/* Disk i's box for the caller's broadphase, centred where it is now
+ * (wrapped into a periodic box). */
+static void c2d_w_set_box(c2d_world *w, uint32_t i, int moved)
+{
+    c2d_w_disk *p = &w->disk[i];
+    c2d_body b;
+    c2d_world_box box;
+    c2d_w_body_at(p, w->now, &b);
+    if (w->periodic) b.pos.x = c2d_w_wrap(b.pos.x, w->width), b.pos.y = c2d_w_wrap(b.pos.y, w->height);
+    w->box[2 * i] = b.pos.x, w->box[2 * i + 1] = b.pos.y;
+    c2d_w_box_of(w, p, b.pos.x, b.pos.y, &box);
+    if (moved) w->bp.move(w->bp.user, i, &box);
+    else w->bp.insert(w->bp.user, i, &box);
+}
+
 
 static int c2d_w_overlaps(const c2d_world *w, double x, double y, double r, const c2d_w_disk *q)
 {
@@ -677,6 +919,56 @@ static int c2d_w_overlaps(const c2d_world *w, double x, double y, double r, cons
         if (dy < -0.5 * w->height) dy += w->height;
     }
     return dx * dx + dy * dy < rs * rs;
+}
+
+typedef struct c2d_w_overlap_query {
+    const c2d_world *w;
+    double x, y, r;
+    int found;
+} c2d_w_overlap_query;
+
+static void c2d_w_overlap_report(void *context, size_t disk)
+{
+    c2d_w_overlap_query *q = (c2d_w_overlap_query *)context;
+    const c2d_world *w = q->w;
+    if (disk < w->count && w->disk[disk].kind != C2D_W_GONE && c2d_w_overlaps(w, q->x, q->y, q->r, &w->disk[disk]))
+        q->found = 1;
+}
+
+/* Does a disk at (x, y) of radius r overlap one in the world?  Every disk
+ * when it is the first or the largest (the grid is rebuilt), else those of
+ * the 3 x 3 cells around or the caller broadphase's (boxes overlapping
+ * the disk's own box: a disk overlapping it has its centre within its
+ * radius plus the sum, its box's centre within a margin more). */
+static int c2d_w_overlaps_any(const c2d_world *w, double x, double y, double r, int all)
+{
+    size_t k, l;
+    if (all) {
+        for (k = 0; k < w->count; k++)
+            if (w->disk[k].kind != C2D_W_GONE && c2d_w_overlaps(w, x, y, r, &w->disk[k])) return 1;
+        return 0;
+    }
+    if (w->caller) {
+        c2d_w_overlap_query q;
+        c2d_world_box box;
+        const double h = r * C2D_W_BOX_SLACK;
+        q.w = w, q.x = x, q.y = y, q.r = r, q.found = 0;
+        box.lo.x = x - h, box.lo.y = y - h, box.hi.x = x + h, box.hi.y = y + h;
+        c2d_w_query_images(w, &box, c2d_w_overlap_report, &q);
+        return q.found;
+    }
+    {
+        const size_t mx = w->mx, my = w->my, cx = c2d_w_cell_1d(x, w->cw, mx), cy = c2d_w_cell_1d(y, w->ch, my);
+        for (l = 0; l < 3; l++)
+            for (k = 0; k < 3; k++) {
+                size_t nx = cx + mx + k - 1, ny = cy + my + l - 1;
+                uint32_t j;
+                if (!w->periodic && (nx < mx || nx >= 2 * mx || ny < my || ny >= 2 * my)) continue;
+                for (j = w->head[(ny % my) * mx + nx % mx]; j != C2D_W_NONE; j = w->disk[j].next)
+                    if (c2d_w_overlaps(w, x, y, r, &w->disk[j])) return 1;
+            }
+    }
+    return 0;
 }
 
 c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, size_t *index)
@@ -698,23 +990,8 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     } else {
         if (!(x >= radius && x <= w->width - radius && y >= radius && y <= w->height - radius)) return C2D_INVALID;
     }
-    rebuild = w->count == 0 || radius > w->rmax;
-    if (rebuild) {
-        size_t k;
-        for (k = 0; k < w->count; k++)
-            if (w->disk[k].kind != C2D_W_GONE && c2d_w_overlaps(w, x, y, radius, &w->disk[k])) return C2D_INVALID;
-    } else {
-        const size_t mx = w->mx, my = w->my, cx = c2d_w_cell_1d(x, w->cw, mx), cy = c2d_w_cell_1d(y, w->ch, my);
-        size_t k, l;
-        for (l = 0; l < 3; l++)
-            for (k = 0; k < 3; k++) {
-                size_t nx = cx + mx + k - 1, ny = cy + my + l - 1;
-                uint32_t j;
-                if (!w->periodic && (nx < mx || nx >= 2 * mx || ny < my || ny >= 2 * my)) continue;
-                for (j = w->head[(ny % my) * mx + nx % mx]; j != C2D_W_NONE; j = w->disk[j].next)
-                    if (c2d_w_overlaps(w, x, y, radius, &w->disk[j])) return C2D_INVALID;
-            }
-    }
+    rebuild = !w->caller && (w->count == 0 || radius > w->rmax);
+    if (c2d_w_overlaps_any(w, x, y, radius, rebuild)) return C2D_INVALID;
     i = (uint32_t)w->count;
     p = &w->disk[i];
     p->x = x, p->y = y, p->vx = disk->vel.x, p->vy = disk->vel.y, p->t = w->now;
@@ -733,9 +1010,12 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     w->heap[i].spare = 0;
     w->count++;
     if (index != NULL) *index = i;
+    if (radius > w->rmax) w->rmax = radius;
     if (rebuild) {
-        w->rmax = radius;
         c2d_w_rebuild(w);
+    } else if (w->caller) {
+        c2d_w_set_box(w, i, 0);
+        c2d_w_predict(w, i);
     } else {
         c2d_w_cell_insert(w, i, c2d_w_cell_1d(y, w->ch, w->my) * w->mx + c2d_w_cell_1d(x, w->cw, w->mx));
         c2d_w_predict(w, i);
@@ -771,6 +1051,14 @@ static int c2d_w_collapses(const c2d_world *w, int crowded, double since, double
     return crowded || since < w->collapse_time || vn < w->collapse_speed * nn || vn * since < length * nn;
 }
 
+/* Disk p's reference state becomes (x, y, vx, vy) at the world's time,
+ * wrapped into a periodic box. */
+static void c2d_w_restate(const c2d_world *w, c2d_w_disk *p, double x, double y, double vx, double vy)
+{
+    if (w->periodic) x = c2d_w_wrap(x, w->width), y = c2d_w_wrap(y, w->height);
+    p->x = x, p->y = y, p->vx = vx, p->vy = vy, p->t = w->now;
+}
+
 static void c2d_w_impact_clock(c2d_w_disk *p, double now)
 {
     if (p->last == now) {
@@ -791,22 +1079,19 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
     const uint32_t partner = d[owner].partner;
     const uint32_t i = owner < partner ? owner : partner, j = owner < partner ? partner : owner;
     c2d_w_disk *p = &d[i], *q = &d[j];
-    const double now = w->now, dp = now - p->t, dq = now - q->t;
-    double qx, qy, sx = 0, sy = 0, e = w->restitution;
+    const double now = w->now;
+    double e = w->restitution, qx, qy;
     c2d_body a, b;
+    c2d_vec2 shift;
     if (d[partner].count != d[owner].pcount) { /* stale */
         c2d_w_predict(w, owner);
         return;
     }
-    if (w->periodic) {
-        sx = c2d_w_image(p->cell % w->mx, q->cell % w->mx) * w->width;
-        sy = c2d_w_image(p->cell / w->mx, q->cell / w->mx) * w->height;
-    }
-    qx = c2d_w_at(q->x, q->vx, q->ax, dq), qy = c2d_w_at(q->y, q->vy, q->ay, dq);
-    a.pos.x = c2d_w_at(p->x, p->vx, p->ax, dp), a.pos.y = c2d_w_at(p->y, p->vy, p->ay, dp), a.mass = p->mass;
-    a.vel.x = c2d_w_vel(p->vx, p->ax, dp), a.vel.y = c2d_w_vel(p->vy, p->ay, dp);
-    b.pos.x = qx + sx, b.pos.y = qy + sy, b.mass = q->mass;
-    b.vel.x = c2d_w_vel(q->vx, q->ax, dq), b.vel.y = c2d_w_vel(q->vy, q->ay, dq);
+    c2d_w_pair_start(w, p, q, &a, &b, &shift); /* the image the prediction used */
+    c2d_w_body_at(p, now, &a);
+    c2d_w_body_at(q, now, &b);
+    qx = b.pos.x, qy = b.pos.y;
+    b.pos.x += shift.x, b.pos.y += shift.y;
     if (e < 1) {
         /* The collapse rule (collide2d_world.h): elastic after collapse_count
          * impacts at this instant, within collapse_time of the last impact,
@@ -819,11 +1104,15 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
                                                       : 0x1p-20 * (p->radius < q->radius ? p->radius : q->radius);
         if (c2d_w_collapses(w, c2d_w_crowded(w, p, now) || c2d_w_crowded(w, q, now), since, vn, nn, length)) e = 1;
     }
-    if (C2D_W_COLLIDE(&a, &b, e) == C2D_OK) {
-        const double vqx = c2d_w_vel(q->vx, q->ax, dq), vqy = c2d_w_vel(q->vy, q->ay, dq);
+    {
+        const double vqx = b.vel.x, vqy = b.vel.y;
+        if (C2D_W_COLLIDE(&a, &b, e) != C2D_OK) {
+            c2d_w_predict(w, owner);
+            return;
+        }
         w->stats.virial += ((b.pos.x - a.pos.x) * (b.vel.x - vqx) + (b.pos.y - a.pos.y) * (b.vel.y - vqy)) * q->mass;
-        p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
-        q->x = qx, q->y = qy, q->vx = b.vel.x, q->vy = b.vel.y, q->t = now;
+        c2d_w_restate(w, p, a.pos.x, a.pos.y, a.vel.x, a.vel.y);
+        c2d_w_restate(w, q, qx, qy, b.vel.x, b.vel.y);
         c2d_w_impact_clock(p, now);
         c2d_w_impact_clock(q, now);
         w->stats.collisions++;
@@ -833,11 +1122,9 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
             ev.impulse.x = (b.vel.x - vqx) * q->mass, ev.impulse.y = (b.vel.y - vqy) * q->mass;
             c2d_w_emit(w, &ev);
         }
-        c2d_w_predict(w, i);
-        c2d_w_predict(w, j);
-    } else {
-        c2d_w_predict(w, owner);
     }
+    c2d_w_predict(w, i);
+    c2d_w_predict(w, j);
 }
 
 /* Disk i meets static k: c2d_collide_normal against an immovable body at
@@ -865,7 +1152,7 @@ static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
     {
         const double vx0 = a.vel.x, vy0 = a.vel.y;
         if (C2D_W_COLLIDE_NORMAL(&a, &b, n, e) == C2D_OK) {
-            p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
+            c2d_w_restate(w, p, a.pos.x, a.pos.y, a.vel.x, a.vel.y);
             c2d_w_impact_clock(p, now);
             w->stats.wall_collisions++;
             if (w->on_event != NULL) {
@@ -926,6 +1213,7 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
 static void c2d_w_timer(c2d_world *w, uint32_t i)
 {
     w->disk[i].timer = C2D_W_INF;
+    w->disk[i].count++; /* a horizon of its partners' predictions was the timer */
     if (w->on_event != NULL) {
         c2d_world_event ev;
         ev.kind = C2D_WORLD_TIMER, ev.time = w->now, ev.a = i, ev.b = 0;
@@ -935,28 +1223,41 @@ static void c2d_w_timer(c2d_world *w, uint32_t i)
     if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, i);
 }
 
+/* Periodic: disk i's reference state moved on to now (wrapped), its
+ * partners' predictions stale. */
+static void c2d_w_rebase(c2d_world *w, uint32_t i)
+{
+    c2d_w_disk *p = &w->disk[i];
+    c2d_body b;
+    c2d_w_body_at(p, w->now, &b);
+    c2d_w_restate(w, p, b.pos.x, b.pos.y, b.vel.x, b.vel.y);
+    p->count++;
+    c2d_w_predict(w, i);
+}
+
+/* A C2D_W_CELL event: a cell crossed, a rebase, or the caller's box left.
+ * None changes the disk's state but the rebase (which the disk's own state
+ * decides, whatever the broadphase). */
 static void c2d_w_cross(c2d_world *w, uint32_t i)
 {
     c2d_w_disk *p = &w->disk[i];
-    size_t cx = p->cell % w->mx, cy = p->cell / w->mx;
+    size_t cx, cy;
+    if (p->partner == C2D_W_REBASE) {
+        c2d_w_rebase(w, i);
+        return;
+    }
+    if (p->partner >= C2D_W_BOX) {
+        c2d_w_set_box(w, i, 1);
+        c2d_w_predict(w, i);
+        return;
+    }
+    cx = p->cell % w->mx, cy = p->cell / w->mx;
     c2d_w_cell_remove(w, i);
     switch (p->partner) {
-    case 0:
-        if (cx == 0) cx = w->mx, p->x += w->width;
-        cx--;
-        break;
-    case 1:
-        cx++;
-        if (cx == w->mx) cx = 0, p->x -= w->width;
-        break;
-    case 2:
-        if (cy == 0) cy = w->my, p->y += w->height;
-        cy--;
-        break;
-    default:
-        cy++;
-        if (cy == w->my) cy = 0, p->y -= w->height;
-        break;
+    case 0: cx = (cx == 0 ? w->mx : cx) - 1; break;
+    case 1: cx = cx + 1 == w->mx ? 0 : cx + 1; break;
+    case 2: cy = (cy == 0 ? w->my : cy) - 1; break;
+    default: cy = cy + 1 == w->my ? 0 : cy + 1; break;
     }
     c2d_w_cell_insert(w, i, cy * w->mx + cx);
     c2d_w_predict(w, i);
@@ -993,12 +1294,7 @@ c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk)
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     dt = world->now - p->t;
     x = c2d_w_at(p->x, p->vx, p->ax, dt), y = c2d_w_at(p->y, p->vy, p->ay, dt);
-    if (world->periodic) {
-        if (x < 0) x += world->width;
-        if (x >= world->width) x -= world->width;
-        if (y < 0) y += world->height;
-        if (y >= world->height) y -= world->height;
-    }
+    if (world->periodic) x = c2d_w_wrap(x, world->width), y = c2d_w_wrap(y, world->height);
     disk->pos.x = x, disk->pos.y = y;
     disk->vel.x = c2d_w_vel(p->vx, p->ax, dt), disk->vel.y = c2d_w_vel(p->vy, p->ay, dt);
     disk->mass = p->mass;
@@ -1014,8 +1310,7 @@ c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 veloc
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     dt = world->now - p->t;
-    p->x = c2d_w_at(p->x, p->vx, p->ax, dt), p->y = c2d_w_at(p->y, p->vy, p->ay, dt), p->t = world->now;
-    p->vx = velocity.x, p->vy = velocity.y;
+    c2d_w_restate(world, p, c2d_w_at(p->x, p->vx, p->ax, dt), c2d_w_at(p->y, p->vy, p->ay, dt), velocity.x, velocity.y);
     p->count++; /* the partners' predictions with it are stale */
     c2d_w_predict(world, (uint32_t)index);
     return C2D_OK;
@@ -1031,8 +1326,7 @@ c2d_status c2d_world_set_acceleration(c2d_world *world, size_t index, c2d_vec2 a
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     dt = world->now - p->t;
     vx = c2d_w_vel(p->vx, p->ax, dt), vy = c2d_w_vel(p->vy, p->ay, dt);
-    p->x = c2d_w_at(p->x, p->vx, p->ax, dt), p->y = c2d_w_at(p->y, p->vy, p->ay, dt), p->t = world->now;
-    p->vx = vx, p->vy = vy;
+    c2d_w_restate(world, p, c2d_w_at(p->x, p->vx, p->ax, dt), c2d_w_at(p->y, p->vy, p->ay, dt), vx, vy);
     p->ax = acceleration.x, p->ay = acceleration.y;
     if (acceleration.x != 0 || acceleration.y != 0) world->accel = 1;
     p->count++;
@@ -1045,7 +1339,7 @@ static c2d_status c2d_w_add_static(c2d_world *w, const c2d_w_static *st, size_t 
     w->stat[w->nstatic] = *st;
     if (index != NULL) *index = w->nstatic;
     w->nstatic++;
-    if (w->mx > 0) {
+    if (w->count > 0) {
         size_t i;
         for (i = 0; i < w->count; i++)
             if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, (uint32_t)i);
@@ -1099,6 +1393,7 @@ c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t)
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     p->timer = t < C2D_W_INF ? t : C2D_W_INF;
+    p->count++; /* the horizon of its partners' curved predictions */
     c2d_w_predict(world, (uint32_t)index);
     return C2D_OK;
 }
@@ -1109,7 +1404,8 @@ c2d_status c2d_world_remove(c2d_world *world, size_t index)
     if (world == NULL || world->busy || index >= world->count) return C2D_INVALID;
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
-    c2d_w_cell_remove(world, (uint32_t)index);
+    if (world->caller) world->bp.remove(world->bp.user, index);
+    else c2d_w_cell_remove(world, (uint32_t)index);
     p->cell = C2D_W_NONE, p->next = C2D_W_NONE;
     p->kind = C2D_W_GONE;
     p->count++;
