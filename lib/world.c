@@ -131,6 +131,7 @@ struct c2d_world {
     int caller;      /* the caller's broadphase (bp) instead of the cells */
     c2d_world_broadphase bp;
     double rebase;   /* periodic: how far a centre goes from its reference before a rebase */
+    double hmax;     /* the largest half-size of a box given to the caller's broadphase */
     c2d_world_stats stats;
 };
 
@@ -263,6 +264,7 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     w->rebase = C2D_W_REBASE_FRACTION * (desc->width < desc->height ? desc->width : desc->height);
     w->cw = w->ch = 0;
     w->rmax = 0;
+    w->hmax = 0;
     w->now = 0;
     w->stats.collisions = w->stats.wall_collisions = w->stats.events = 0;
     w->stats.time = 0;
@@ -773,17 +775,20 @@ static void c2d_w_report(void *context, size_t disk)
 }
 
 /* Ask the caller's broadphase for the disks whose boxes overlap `box`, and
- * in a periodic box its images across each side it sticks out of. */
+ * in a periodic box its images across each side it comes within the
+ * largest half-size of a box of (a box near the other side may stick out
+ * towards it across the wrap). */
 static void c2d_w_query_images(const c2d_world *w, const c2d_world_box *box, void (*report)(void *, size_t), void *ctx)
 {
-    double sx[2], sy[2];
+    double sx[3], sy[3];
     size_t nx = 1, ny = 1, k, l;
     sx[0] = sy[0] = 0;
     if (w->periodic) {
-        if (box->lo.x < 0) sx[nx++] = w->width;
-        else if (box->hi.x > w->width) sx[nx++] = -w->width;
-        if (box->lo.y < 0) sy[ny++] = w->height;
-        else if (box->hi.y > w->height) sy[ny++] = -w->height;
+        const double h = w->hmax;
+        if (box->lo.x < h) sx[nx++] = w->width;
+        if (box->hi.x > w->width - h) sx[nx++] = -w->width;
+        if (box->lo.y < h) sy[ny++] = w->height;
+        if (box->hi.y > w->height - h) sy[ny++] = -w->height;
     }
     for (l = 0; l < ny; l++)
         for (k = 0; k < nx; k++) {
@@ -903,6 +908,7 @@ static void c2d_w_set_box(c2d_world *w, uint32_t i, int moved)
     if (w->periodic) b.pos.x = c2d_w_wrap(b.pos.x, w->width), b.pos.y = c2d_w_wrap(b.pos.y, w->height);
     w->box[2 * i] = b.pos.x, w->box[2 * i + 1] = b.pos.y;
     c2d_w_box_of(w, p, b.pos.x, b.pos.y, &box);
+    if (box.hi.x - b.pos.x > w->hmax) w->hmax = box.hi.x - b.pos.x;
     if (moved) w->bp.move(w->bp.user, i, &box);
     else w->bp.insert(w->bp.user, i, &box);
 }
