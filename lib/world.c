@@ -48,6 +48,14 @@
 #define C2D_W_FABS(x) ((x) < 0 ? -(x) : (x))
 #endif
 
+/* The hot candidate test, inlined into the cell scan (a call per
+ * candidate was a fifth of its cost). */
+#ifdef __GNUC__
+#define C2D_W_HOT static __inline__ __attribute__((always_inline))
+#else
+#define C2D_W_HOT static
+#endif
+
 #define C2D_W_NONE 0xFFFFFFFFu
 #define C2D_W_MAX_DISKS 0x7FFFFFFFu /* indices fit 31 bits of the tie key */
 #define C2D_W_INF (DBL_MAX * 2.0)
@@ -87,7 +95,7 @@ typedef struct c2d_w_disk {
     double last;            /* the time of its last impact */
     uint64_t pcount;        /* the partner's count when the event was predicted */
     uint32_t partner;       /* a disk (impact), or a side 0..3: -x, +x, -y, +y */
-    uint32_t slot;          /* its place in the heap */
+    uint32_t slot;          /* its place in the window (while there) */
     uint32_t kind;          /* C2D_W_PAIR ... C2D_W_IDLE */
     uint32_t same;          /* impacts at time `last` */
     double ax, ay;          /* its constant acceleration since t */
@@ -102,7 +110,7 @@ typedef struct c2d_w_static {
     uint32_t circle, spare;
 } c2d_w_static;
 
-/* A heap entry: a disk's next event, its time and its tie key
+/* A window entry: a disk's next event, its time and its tie key
  * (kind << 62 | lower index << 31 | higher index). */
 typedef struct c2d_w_entry {
     double when;
@@ -110,10 +118,32 @@ typedef struct c2d_w_entry {
     uint32_t disk, spare;
 } c2d_w_entry;
 
+/* A disk's place in the event queue: its event's time and tie key, its
+ * neighbours in its bucket's or the overflow's list, and where it is (a
+ * bucket, C2D_W_Q_WIN, C2D_W_Q_OVF or C2D_W_NONE: no event). */
+typedef struct c2d_w_node {
+    double when;
+    uint64_t tie;
+    uint32_t prev, next, where, spare;
+} c2d_w_node;
+#define C2D_W_Q_WIN 0xFFFFFFFEu
+#define C2D_W_Q_OVF 0xFFFFFFFDu
+#define C2D_W_PER_DAY 2.0 /* events per day of the calendar, on average */
+
 struct c2d_world {
     c2d_w_disk *disk;
     double *box;       /* with a caller's broadphase: each disk's box centre (x, y) */
-    c2d_w_entry *heap; /* a min-heap on (when, tie) */
+    c2d_w_entry *win;  /* the window: a binary min-heap on (when, tie, disk) */
+    c2d_w_node *node;  /* each disk's place in the queue */
+    uint32_t *bucket;  /* the calendar: each day's unsorted list, nbucket (a power of 2) days a round */
+    size_t nwin, nbucket, inbuckets, inovf;
+    uint32_t ovf;      /* the overflow's list: days beyond the round */
+    uint64_t k0;       /* the current day: the window holds it and all before */
+    uint64_t pull_day; /* the day the overflow is next pulled into the buckets */
+    double day;        /* a day's length (infinite until the first measure) */
+    double ovf_min;    /* <= every time in the overflow */
+    double since;      /* the time of the last measure */
+    unsigned long long pops; /* events since */
     uint32_t *head;  /* first disk of each cell, C2D_W_NONE for none */
     c2d_w_static *stat;
     size_t capacity, count, budget, scapacity, nstatic;
@@ -181,6 +211,14 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
     return 1;
 }
 
+/* Days in the calendar's round: the power of 2 at or above the capacity. */
+static size_t c2d_w_buckets(size_t capacity)
+{
+    size_t b = 16;
+    while (b < capacity) b *= 2;
+    return b;
+}
+
 static size_t c2d_w_budget(const c2d_world_desc *d)
 {
     return d->broadphase != NULL ? 0 : C2D_W_CELLS_PER_DISK * d->capacity + 16;
@@ -199,8 +237,8 @@ static size_t c2d_w_layout(const c2d_world_desc *d, size_t *disks, size_t *heap,
     if (capacity > (top - off) / sizeof(c2d_w_disk)) return 0;
     off += capacity * sizeof(c2d_w_disk);
     *heap = off;
-    if (capacity > (top - off) / sizeof(c2d_w_entry)) return 0;
-    n = capacity * sizeof(c2d_w_entry);
+    if (capacity > (top - off) / (sizeof(c2d_w_entry) + sizeof(c2d_w_node) + 2 * sizeof(uint32_t))) return 0;
+    n = capacity * (sizeof(c2d_w_entry) + sizeof(c2d_w_node)) + c2d_w_buckets(capacity) * sizeof(uint32_t);
     off += n;
     *cells = off;
     if (budget > top / 8 || budget * sizeof(uint32_t) > top - off - 8) return 0;
@@ -230,7 +268,9 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     {
         size_t skew = (size_t)(((uintptr_t)m + od) % 64u), back = skew; /* a multiple of 8, up to 56 */
         w->disk = (c2d_w_disk *)(void *)(m + od - back);
-        w->heap = (c2d_w_entry *)(void *)(m + oh - back);
+        w->win = (c2d_w_entry *)(void *)(m + oh - back);
+        w->node = (c2d_w_node *)(void *)(m + oh - back + desc->capacity * sizeof(c2d_w_entry));
+        w->bucket = (uint32_t *)(void *)(m + oh - back + desc->capacity * (sizeof(c2d_w_entry) + sizeof(c2d_w_node)));
         w->head = (uint32_t *)(void *)(m + oc - back);
         w->box = (double *)(void *)(m + oc - back);
         w->stat = (c2d_w_static *)(void *)(m + os - back);
@@ -240,6 +280,15 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     w->nstatic = 0;
     w->count = 0;
     w->budget = c2d_w_budget(desc);
+    w->nwin = w->inbuckets = w->inovf = 0;
+    w->nbucket = c2d_w_buckets(desc->capacity);
+    w->ovf = C2D_W_NONE;
+    w->k0 = 0;
+    w->pull_day = 0;
+    w->day = C2D_W_INF; /* one day: everything in the window until measured (the buckets untouched) */
+    w->ovf_min = C2D_W_INF;
+    w->since = 0;
+    w->pops = 0;
     w->mx = w->my = 0;
     w->width = desc->width;
     w->height = desc->height;
@@ -278,45 +327,215 @@ size_t c2d_world_count(const c2d_world *world)
     return world == NULL ? 0 : world->count;
 }
 
-/* ------------------------------------------------------------ heap */
+/* ------------------------------------------------------------ queue */
 
 /* (when, tie, disk): a total order, so the events come out in the same
- * order whatever the heap's shape (both disks of a pair may hold the same
+ * order whatever the queue's shape (both disks of a pair may hold the same
  * event: the lower index's copy first). */
 static int c2d_w_before(const c2d_w_entry *a, const c2d_w_entry *b)
 {
     return a->when < b->when || (a->when == b->when && (a->tie < b->tie || (a->tie == b->tie && a->disk < b->disk)));
 }
 
-/* Disk i's event is now (when, tie): move its entry to its place in the
- * 4-ary heap (children of slot s: 4 s + 1 ... 4 s + 4, contiguous). */
-static void c2d_w_heap_fix(c2d_world *w, uint32_t i, double when, uint64_t tie)
+/* The window: a binary heap of the events of the current day (and any
+ * earlier), disk i at w->disk[i].slot. */
+static void c2d_w_win_place(c2d_world *w, size_t s, c2d_w_entry e)
 {
-    c2d_w_entry *h = w->heap, e;
+    c2d_w_entry *h = w->win;
     c2d_w_disk *d = w->disk;
-    size_t s = d[i].slot, n = w->count;
-    e.when = when, e.tie = tie, e.disk = i, e.spare = 0;
+    const size_t n = w->nwin;
     while (s > 0) {
-        size_t up = (s - 1) / 4;
+        size_t up = (s - 1) / 2;
         if (!c2d_w_before(&e, &h[up])) break;
         h[s] = h[up];
         d[h[s].disk].slot = (uint32_t)s;
         s = up;
     }
     for (;;) {
-        size_t l = 4 * s + 1, best, k, end;
+        size_t l = 2 * s + 1, best = l;
         if (l >= n) break;
-        best = l;
-        end = l + 4 < n ? l + 4 : n;
-        for (k = l + 1; k < end; k++)
-            if (c2d_w_before(&h[k], &h[best])) best = k;
+        if (l + 1 < n && c2d_w_before(&h[l + 1], &h[l])) best = l + 1;
         if (!c2d_w_before(&h[best], &e)) break;
         h[s] = h[best];
         d[h[s].disk].slot = (uint32_t)s;
         s = best;
     }
     h[s] = e;
-    d[i].slot = (uint32_t)s;
+    d[e.disk].slot = (uint32_t)s;
+}
+
+static void c2d_w_win_push(c2d_world *w, uint32_t i)
+{
+    c2d_w_entry e;
+    e.when = w->node[i].when, e.tie = w->node[i].tie, e.disk = i, e.spare = 0;
+    w->node[i].where = C2D_W_Q_WIN;
+    w->nwin++;
+    c2d_w_win_place(w, w->nwin - 1, e);
+}
+
+static void c2d_w_win_remove(c2d_world *w, uint32_t i)
+{
+    const size_t s = w->disk[i].slot;
+    w->nwin--;
+    if (s < w->nwin) c2d_w_win_place(w, s, w->win[w->nwin]);
+}
+
+static void c2d_w_link(c2d_world *w, uint32_t *head, uint32_t i, uint32_t where)
+{
+    c2d_w_node *n = w->node;
+    n[i].prev = C2D_W_NONE, n[i].next = *head, n[i].where = where;
+    if (*head != C2D_W_NONE) n[*head].prev = i;
+    *head = i;
+}
+
+static void c2d_w_unlink(c2d_world *w, uint32_t *head, uint32_t i)
+{
+    c2d_w_node *n = w->node;
+    if (n[i].prev != C2D_W_NONE) n[n[i].prev].next = n[i].next;
+    else *head = n[i].next;
+    if (n[i].next != C2D_W_NONE) n[n[i].next].prev = n[i].prev;
+}
+
+/* The day of time t (days are w->day long; a time too far for 2^62 days
+ * is in the last, which only the overflow holds). */
+static uint64_t c2d_w_day(const c2d_world *w, double t)
+{
+    const double q = t / w->day;
+    return q < 0x1p62 ? (uint64_t)q : (uint64_t)-1;
+}
+
+/* File disk i's event (node[i].when, tie): the window for the current day
+ * and before, the day's bucket within the calendar's round, else the
+ * overflow (its earliest time kept as a bound: ovf_min <= every time in
+ * it).  No event (time infinite): nowhere. */
+static void c2d_w_q_insert(c2d_world *w, uint32_t i)
+{
+    const double when = w->node[i].when;
+    uint64_t day;
+    if (!(when < C2D_W_INF)) {
+        w->node[i].where = C2D_W_NONE;
+        return;
+    }
+    day = c2d_w_day(w, when);
+    if (day <= w->k0) {
+        c2d_w_win_push(w, i);
+    } else if (day < w->k0 + w->nbucket) {
+        const uint32_t b = (uint32_t)(day & (w->nbucket - 1));
+        c2d_w_link(w, &w->bucket[b], i, b);
+        w->inbuckets++;
+    } else {
+        c2d_w_link(w, &w->ovf, i, C2D_W_Q_OVF);
+        w->inovf++;
+        if (when < w->ovf_min) w->ovf_min = when;
+    }
+}
+
+static void c2d_w_q_remove(c2d_world *w, uint32_t i)
+{
+    const uint32_t where = w->node[i].where;
+    if (where == C2D_W_NONE) return;
+    if (where == C2D_W_Q_WIN) {
+        c2d_w_win_remove(w, i);
+    } else if (where == C2D_W_Q_OVF) {
+        c2d_w_unlink(w, &w->ovf, i);
+        w->inovf--;
+    } else {
+        c2d_w_unlink(w, &w->bucket[where], i);
+        w->inbuckets--;
+    }
+    w->node[i].where = C2D_W_NONE;
+}
+
+/* Disk i's event is now (when, tie). */
+static void c2d_w_q_set(c2d_world *w, uint32_t i, double when, uint64_t tie)
+{
+    c2d_w_q_remove(w, i);
+    w->node[i].when = when, w->node[i].tie = tie;
+    c2d_w_q_insert(w, i);
+}
+
+/* Overflow events whose day the calendar's round now reaches go to their
+ * buckets (all of them when `all`); ovf_min is recomputed.  Done every
+ * half round (pull_day): an event left has a day beyond k0 + nbucket, so
+ * after the next pull, before its bucket is drained; the overflow is
+ * scanned once per half round. */
+static void c2d_w_q_pull(c2d_world *w, int all)
+{
+    uint32_t i = w->ovf;
+    w->ovf_min = C2D_W_INF;
+    w->pull_day = w->k0 + w->nbucket / 2;
+    while (i != C2D_W_NONE) {
+        const uint32_t next = w->node[i].next;
+        const uint64_t day = c2d_w_day(w, w->node[i].when);
+        if (all || day < w->k0 + w->nbucket) {
+            c2d_w_unlink(w, &w->ovf, i);
+            w->inovf--;
+            if (all) c2d_w_win_push(w, i);
+            else c2d_w_q_insert(w, i);
+        } else if (w->node[i].when < w->ovf_min) {
+            w->ovf_min = w->node[i].when;
+        }
+        i = next;
+    }
+}
+
+/* The disk with the earliest event (C2D_W_NONE for none): the window's
+ * top, after moving on day by day (each day's bucket into the window)
+ * while the window is empty. */
+static uint32_t c2d_w_q_top(c2d_world *w)
+{
+    while (w->nwin == 0) {
+        uint32_t i;
+        if (w->inbuckets == 0) {
+            uint64_t day;
+            if (w->inovf == 0) return C2D_W_NONE;
+            day = c2d_w_day(w, w->ovf_min);
+            if (day == (uint64_t)-1) {
+                c2d_w_q_pull(w, 1);
+                break;
+            }
+            if (day > w->k0 + 1) w->k0 = day - 1; /* skip the empty days */
+            w->pull_day = w->k0 + 1;
+        }
+        w->k0++;
+        if (w->inovf > 0 && w->k0 >= w->pull_day) c2d_w_q_pull(w, 0);
+        {
+            uint32_t *head = &w->bucket[w->k0 & (w->nbucket - 1)];
+            while ((i = *head) != C2D_W_NONE) {
+                *head = w->node[i].next;
+                w->inbuckets--;
+                c2d_w_win_push(w, i);
+            }
+        }
+    }
+    return w->win[0].disk;
+}
+
+/* Days of a new length (events per day about C2D_W_PER_DAY at the rate
+ * measured): every event filed anew, O(N + buckets). */
+static void c2d_w_q_rebuild(c2d_world *w, double day)
+{
+    size_t k;
+    w->day = day;
+    w->k0 = c2d_w_day(w, w->now);
+    w->pull_day = w->k0 + w->nbucket / 2;
+    for (k = 0; k < w->nbucket; k++) w->bucket[k] = C2D_W_NONE;
+    w->ovf = C2D_W_NONE, w->ovf_min = C2D_W_INF;
+    w->nwin = w->inbuckets = w->inovf = 0;
+    for (k = 0; k < w->count; k++)
+        if (w->node[k].where != C2D_W_NONE) c2d_w_q_insert(w, (uint32_t)k);
+}
+
+/* After each event: every nbucket events, the day's length measured
+ * against the rate of events (no effect on their order). */
+static void c2d_w_q_count(c2d_world *w)
+{
+    if (++w->pops < w->nbucket && w->pops < 4096) return;
+    {
+        const double span = w->now - w->since, day = span / (double)w->pops * C2D_W_PER_DAY;
+        if (day > 0 && day < C2D_W_INF && day > 1e-300 && (!(day * 2 > w->day) || day > 2 * w->day)) c2d_w_q_rebuild(w, day);
+    }
+    w->pops = 0, w->since = w->now;
 }
 
 /* ------------------------------------------------------------ cells */
@@ -351,7 +570,7 @@ typedef struct c2d_w_best {
     uint64_t pcount;
 } c2d_w_best;
 
-static void c2d_w_consider(c2d_w_best *b, double when, uint32_t kind, uint32_t partner, uint64_t pcount)
+C2D_W_HOT void c2d_w_consider(c2d_w_best *b, double when, uint32_t kind, uint32_t partner, uint64_t pcount)
 {
     if (when < b->when || (when == b->when && (kind < b->kind || (kind == b->kind && partner < b->partner)))) {
         b->when = when;
@@ -566,6 +785,30 @@ static double c2d_w_pair_start(const c2d_world *w, const c2d_w_disk *p, const c2
     return t0;
 }
 
+static int c2d_w_curved(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q)
+{
+    return w->accel && (p->ax != 0 || p->ay != 0 || q->ax != 0 || q->ay != 0);
+}
+
+/* q's image shift in pair (p, q), p the lower index, as its prediction
+ * chose it: a straight pair from its relative position as
+ * c2d_w_try_straight computes it, a curved one from c2d_w_pair_start's. */
+static c2d_vec2 c2d_w_pair_shift(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q)
+{
+    c2d_vec2 shift;
+    shift.x = shift.y = 0;
+    if (!w->periodic) return shift;
+    if (c2d_w_curved(w, p, q)) {
+        c2d_body a, b;
+        c2d_w_pair_start(w, p, q, &a, &b, &shift);
+    } else {
+        const double t0 = p->t > q->t ? p->t : q->t, sp = t0 - p->t, sq = t0 - q->t;
+        shift.x = c2d_w_image_shift((q->x + q->vx * sq) - (p->x + p->vx * sp), w->width);
+        shift.y = c2d_w_image_shift((q->y + q->vy * sq) - (p->y + p->vy * sp), w->height);
+    }
+    return shift;
+}
+
 /* The pair at time t as its impact sees it (q shifted to its image). */
 static void c2d_w_pair_at(const c2d_w_disk *p, const c2d_w_disk *q, double t, c2d_vec2 shift, c2d_body *a, c2d_body *b)
 {
@@ -585,66 +828,111 @@ static int c2d_w_pair_refused_now(const c2d_world *w, const c2d_w_disk *p, const
     return c2d_w_refused_now(&a, &b);
 }
 
-/* Disk i's candidate j: their next impact (the canonical frame, lower index
- * first) if it can beat the best so far.  Straight paths are filtered
- * first, each test certain despite rounding (the estimates' errors are far
- * below 2^-40 of their terms, taken far from underflow): receding or no
- * relative motion; a miss (the discriminant negative); or no contact
- * before the best event so far (the time of impact is at least
- * c / (2 |dot|), c = |d|^2 - rs^2 > 0).  Curved ones go to
- * c2d_time_of_impact_accel with the earlier timer as the horizon (where
- * either motion may change; a timer's change makes the other's prediction
- * stale). */
-static void c2d_w_try_pair(const c2d_world *w, uint32_t i, uint32_t j, c2d_w_best *best)
+/* What a prediction keeps of its own disk i for its straight candidates. */
+typedef struct c2d_w_self {
+    double x, y, vx, vy, t, radius, now;
+    double width, height, hw, hh; /* the box, and half of it (periodic) */
+    int periodic;
+    uint32_t i;
+} c2d_w_self;
+
+/* The nearest image of a pair's relative position (dx, dy): each
+ * component shifted by the side once at most (see c2d_w_image_shift). */
+C2D_W_HOT void c2d_w_nearest(const c2d_w_self *s, double *dx, double *dy)
+{
+    if (*dx > s->hw) *dx -= s->width;
+    else if (*dx < -s->hw) *dx += s->width;
+    if (*dy > s->hh) *dy -= s->height;
+    else if (*dy < -s->hh) *dy += s->height;
+}
+
+/* A straight pair (no acceleration on either): its relative state in the
+ * canonical frame is q minus p, both at t0 = the later state time (each
+ * x + v s with s >= 0 its own age at t0: the same bits whichever disk
+ * predicts), the nearest image.  Swapping p and q negates every component
+ * exactly (rounding is symmetric), so the lower index's view is the
+ * predictor's negated when the predictor is the higher index.  The time of
+ * impact is c2d_time_of_impact of that relative state (a at the origin at
+ * rest, b moving), when it can beat the best so far; the filters first,
+ * each certain despite rounding (the estimates' errors are far below
+ * 2^-40 of their terms, taken far from underflow): receding or no relative
+ * motion; a miss (the discriminant negative); or no contact before the
+ * best event so far (the time of impact is at least c / (2 |dot|),
+ * c = |d|^2 - rs^2 > 0).  They see the same numbers as the time of
+ * impact, and are symmetric in the sign. */
+C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, uint32_t j, c2d_w_best *best)
+{
+    const c2d_w_disk *q = &w->disk[j];
+    const double qt = q->t, t0 = qt > self->t ? qt : self->t, sp = t0 - self->t, sq = t0 - qt;
+    const double rs = self->radius + q->radius;
+    double dx = (q->x + q->vx * sq) - (self->x + self->vx * sp), dy = (q->y + q->vy * sq) - (self->y + self->vy * sp);
+    double dvx = q->vx - self->vx, dvy = q->vy - self->vy, dot, mag, toi, when;
+    c2d_body a, b;
+    if (self->periodic) c2d_w_nearest(self, &dx, &dy);
+    if (dvx == 0 && dvy == 0) return;
+    dot = dx * dvx + dy * dvy;
+    mag = C2D_W_FABS(dx * dvx) + C2D_W_FABS(dy * dvy);
+    if (mag >= 0x1p-900 && mag <= 0x1p900) {
+        double dd, err, c;
+        if (dot > mag * 0x1p-40) return;
+        dd = dx * dx + dy * dy;
+        err = (dd + rs * rs) * 0x1p-40, c = (dd - rs * rs) - err;
+        if (c > 0 && c <= 0x1p900 && err >= 0x1p-900) {
+            const double dh = -dot + mag * 0x1p-40, vv = (dvx * dvx + dvy * dvy) * (1 - 0x1p-40);
+            if (dh * dh < vv * c * (1 - 0x1p-40)) return;
+            if (best->when - t0 < c / (2 * dh) * (1 - 0x1p-40)) return;
+        }
+    }
+    if (j < self->i) dx = -dx, dy = -dy, dvx = -dvx, dvy = -dvy;
+    a.pos.x = a.pos.y = a.vel.x = a.vel.y = 0, a.mass = 1;
+    b.pos.x = dx, b.pos.y = dy, b.vel.x = dvx, b.vel.y = dvy, b.mass = 1; /* masses: ignored */
+    if (C2D_W_TOI(&a, &b, rs, &toi) != C2D_OK) return;
+    when = t0 + toi;
+    if (when <= self->now) {
+        const uint32_t lo = j < self->i ? j : self->i, hi = j < self->i ? self->i : j;
+        if (c2d_w_pair_refused_now(w, &w->disk[lo], &w->disk[hi], c2d_w_pair_shift(w, &w->disk[lo], &w->disk[hi])))
+            return;
+        when = self->now;
+    }
+    c2d_w_consider(best, when, C2D_W_PAIR, j, q->count);
+}
+
+static void c2d_w_self_of(const c2d_world *w, uint32_t i, c2d_w_self *self)
+{
+    const c2d_w_disk *p = &w->disk[i];
+    self->x = p->x, self->y = p->y, self->vx = p->vx, self->vy = p->vy, self->t = p->t, self->radius = p->radius;
+    self->now = w->now, self->i = i;
+    self->width = w->width, self->height = w->height, self->hw = 0.5 * w->width, self->hh = 0.5 * w->height;
+    self->periodic = w->periodic;
+}
+
+/* Disk i's candidate j: their next impact in the canonical frame if it can
+ * beat the best so far; curved paths by c2d_time_of_impact_accel (lower
+ * index first, absolute positions at t0) with the earlier timer as the
+ * horizon (where either motion may change; a timer's change makes the
+ * other's prediction stale). */
+static void c2d_w_try_pair(const c2d_world *w, const c2d_w_self *self, uint32_t j, c2d_w_best *best)
 {
     const c2d_w_disk *d = w->disk;
-    const uint32_t lo = i < j ? i : j, hi = i < j ? j : i;
+    const uint32_t i = self->i, lo = i < j ? i : j, hi = i < j ? j : i;
     const c2d_w_disk *p = &d[lo], *q = &d[hi];
-    const double now = w->now, rs = p->radius + q->radius;
     c2d_body a, b;
-    c2d_vec2 shift;
+    c2d_vec2 shift, pa, qa;
     double t0, toi, when;
     if (j == i || d[j].kind == C2D_W_GONE) return;
-    if (w->accel && (p->ax != 0 || p->ay != 0 || q->ax != 0 || q->ay != 0)) {
-        c2d_vec2 pa, qa;
-        const double horizon = p->timer < q->timer ? p->timer : q->timer;
-        t0 = c2d_w_pair_start(w, p, q, &a, &b, &shift);
-        pa.x = p->ax, pa.y = p->ay, qa.x = q->ax, qa.y = q->ay;
-        if (C2D_W_TOI_ACCEL(&a, pa, &b, qa, rs, horizon - t0, &toi) != C2D_OK) return;
-    } else {
-        double dx, dy, dvx, dvy, dot, mag;
-        const double pdt = (t0 = p->t > q->t ? p->t : q->t) - p->t, qdt = t0 - q->t;
-        a.pos.x = p->x + p->vx * pdt, a.pos.y = p->y + p->vy * pdt;
-        b.pos.x = q->x + q->vx * qdt, b.pos.y = q->y + q->vy * qdt;
-        shift.x = shift.y = 0;
-        if (w->periodic) {
-            shift.x = c2d_w_image_shift(b.pos.x - a.pos.x, w->width);
-            shift.y = c2d_w_image_shift(b.pos.y - a.pos.y, w->height);
-            b.pos.x += shift.x, b.pos.y += shift.y;
-        }
-        dx = b.pos.x - a.pos.x, dy = b.pos.y - a.pos.y, dvx = q->vx - p->vx, dvy = q->vy - p->vy;
-        if (dvx == 0 && dvy == 0) return;
-        dot = dx * dvx + dy * dvy;
-        mag = C2D_W_FABS(dx * dvx) + C2D_W_FABS(dy * dvy);
-        if (mag >= 0x1p-900 && mag <= 0x1p900) {
-            double dd, err, c;
-            if (dot > mag * 0x1p-40) return;
-            dd = dx * dx + dy * dy;
-            err = (dd + rs * rs) * 0x1p-40, c = (dd - rs * rs) - err;
-            if (c > 0 && c <= 0x1p900 && err >= 0x1p-900) {
-                const double dh = -dot + mag * 0x1p-40, vv = (dvx * dvx + dvy * dvy) * (1 - 0x1p-40);
-                if (dh * dh < vv * c * (1 - 0x1p-40)) return;
-                if (best->when - t0 < c / (2 * dh) * (1 - 0x1p-40)) return;
-            }
-        }
-        a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
-        b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
-        if (C2D_W_TOI(&a, &b, rs, &toi) != C2D_OK) return;
+    if (!c2d_w_curved(w, p, q)) {
+        c2d_w_try_straight(w, self, j, best);
+        return;
     }
+    t0 = c2d_w_pair_start(w, p, q, &a, &b, &shift);
+    pa.x = p->ax, pa.y = p->ay, qa.x = q->ax, qa.y = q->ay;
+    if (C2D_W_TOI_ACCEL(&a, pa, &b, qa, p->radius + q->radius, (p->timer < q->timer ? p->timer : q->timer) - t0, &toi) !=
+        C2D_OK)
+        return;
     when = t0 + toi;
-    if (when <= now) {
+    if (when <= w->now) {
         if (c2d_w_pair_refused_now(w, p, q, shift)) return;
-        when = now;
+        when = w->now;
     }
     c2d_w_consider(best, when, C2D_W_PAIR, j, d[j].count);
 }
@@ -722,6 +1010,7 @@ static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *
     const int per = w->periodic;
     size_t k, l, nc, nr, col[3], row[3];
     uint32_t first[9];
+    c2d_w_self self;
     {
         double x0 = (double)cx * w->cw, x1 = cx + 1 == mx ? w->width : (double)(cx + 1) * w->cw;
         double y0 = (double)cy * w->ch, y1 = cy + 1 == my ? w->height : (double)(cy + 1) * w->ch;
@@ -748,10 +1037,20 @@ static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *
             if (j != C2D_W_NONE) __builtin_prefetch(&d[j]);
 #endif
         }
+    c2d_w_self_of(w, i, &self);
+    if (!w->accel) { /* every pair straight, and no removed disk in a cell */
+        for (l = 0; l < nr * 3; l += 3)
+            for (k = 0; k < nc; k++) {
+                uint32_t j;
+                for (j = first[l + k]; j != C2D_W_NONE; j = d[j].next)
+                    if (j != i) c2d_w_try_straight(w, &self, j, best);
+            }
+        return;
+    }
     for (l = 0; l < nr * 3; l += 3)
         for (k = 0; k < nc; k++) {
             uint32_t j;
-            for (j = first[l + k]; j != C2D_W_NONE; j = d[j].next) c2d_w_try_pair(w, i, j, best);
+            for (j = first[l + k]; j != C2D_W_NONE; j = d[j].next) c2d_w_try_pair(w, &self, j, best);
         }
 }
 
@@ -764,14 +1063,14 @@ static void c2d_w_box_of(const c2d_world *w, const c2d_w_disk *p, double x, doub
 
 typedef struct c2d_w_query {
     const c2d_world *w;
-    uint32_t i;
+    c2d_w_self self;
     c2d_w_best *best;
 } c2d_w_query;
 
 static void c2d_w_report(void *context, size_t disk)
 {
     const c2d_w_query *q = (const c2d_w_query *)context;
-    if (disk < q->w->count) c2d_w_try_pair(q->w, q->i, (uint32_t)disk, q->best);
+    if (disk < q->w->count) c2d_w_try_pair(q->w, &q->self, (uint32_t)disk, q->best);
 }
 
 /* Ask the caller's broadphase for the disks whose boxes overlap `box`, and
@@ -814,7 +1113,8 @@ static void c2d_w_predict_caller(const c2d_world *w, uint32_t i, const c2d_body 
     c2d_w_leave(best, p->t, p->x, p->vx, p->ax, bx + fx - m, bx + fx + m, 3u, C2D_W_BOX, w->now);
     c2d_w_leave(best, p->t, p->y, p->vy, p->ay, by + fy - m, by + fy + m, 3u, C2D_W_BOX, w->now);
     c2d_w_box_of(w, p, bx, by, &box);
-    ctx.w = w, ctx.i = i, ctx.best = best;
+    ctx.w = w, ctx.best = best;
+    c2d_w_self_of(w, i, &ctx.self);
     c2d_w_query_images(w, &box, c2d_w_report, &ctx);
 }
 
@@ -839,9 +1139,9 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     p->pcount = best.pcount;
     if (best.kind == C2D_W_PAIR) {
         uint64_t lo = i < best.partner ? i : best.partner, hi = i < best.partner ? best.partner : i;
-        c2d_w_heap_fix(w, i, best.when, lo << 31 | hi); /* kind C2D_W_PAIR = 0 */
+        c2d_w_q_set(w, i, best.when, lo << 31 | hi); /* kind C2D_W_PAIR = 0 */
     } else {
-        c2d_w_heap_fix(w, i, best.when, C2D_W_TIE_KIND(best.kind) | (uint64_t)i << 31 | (uint64_t)i);
+        c2d_w_q_set(w, i, best.when, C2D_W_TIE_KIND(best.kind) | (uint64_t)i << 31 | (uint64_t)i);
     }
 }
 
@@ -1009,11 +1309,10 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     p->partner = 0;
     p->kind = C2D_W_IDLE;
     p->same = 0;
-    p->slot = i;
-    w->heap[i].when = C2D_W_INF;
-    w->heap[i].tie = C2D_W_TIE_KIND(C2D_W_IDLE);
-    w->heap[i].disk = i;
-    w->heap[i].spare = 0;
+    p->slot = 0;
+    w->node[i].when = C2D_W_INF, w->node[i].tie = 0;
+    w->node[i].prev = w->node[i].next = C2D_W_NONE;
+    w->node[i].where = C2D_W_NONE, w->node[i].spare = 0;
     w->count++;
     if (index != NULL) *index = i;
     if (radius > w->rmax) w->rmax = radius;
@@ -1093,7 +1392,7 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
         c2d_w_predict(w, owner);
         return;
     }
-    c2d_w_pair_start(w, p, q, &a, &b, &shift); /* the image the prediction used */
+    shift = c2d_w_pair_shift(w, p, q); /* the image the prediction used */
     c2d_w_body_at(p, now, &a);
     c2d_w_body_at(q, now, &b);
     qx = b.pos.x, qy = b.pos.y;
@@ -1273,12 +1572,14 @@ c2d_status c2d_world_advance(c2d_world *world, double t)
 {
     c2d_world *w = world;
     if (w == NULL || w->busy || !c2d_w_finite(t) || !(t >= w->now)) return C2D_INVALID;
-    while (w->count > 0) {
-        uint32_t i = w->heap[0].disk;
-        c2d_w_disk *p = &w->disk[i];
-        if (!(w->heap[0].when <= t)) break;
-        w->now = w->heap[0].when;
+    for (;;) {
+        const uint32_t i = c2d_w_q_top(w);
+        c2d_w_disk *p;
+        if (i == C2D_W_NONE || !(w->win[0].when <= t)) break;
+        p = &w->disk[i];
+        w->now = w->win[0].when;
         w->stats.events++;
+        c2d_w_q_count(w);
         switch (p->kind) {
         case C2D_W_PAIR: c2d_w_pair(w, i); break;
         case C2D_W_WALL: c2d_w_wall(w, i); break;
@@ -1415,7 +1716,7 @@ c2d_status c2d_world_remove(c2d_world *world, size_t index)
     p->cell = C2D_W_NONE, p->next = C2D_W_NONE;
     p->kind = C2D_W_GONE;
     p->count++;
-    c2d_w_heap_fix(world, (uint32_t)index, C2D_W_INF, C2D_W_TIE_KIND(C2D_W_IDLE) | (uint64_t)index);
+    c2d_w_q_set(world, (uint32_t)index, C2D_W_INF, 0);
     return C2D_OK;
 }
 
