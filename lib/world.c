@@ -95,7 +95,8 @@ typedef struct c2d_w_disk {
     double last;            /* the time of its last impact */
     uint64_t pcount;        /* the partner's count when the event was predicted */
     uint32_t partner;       /* a disk (impact), or a side 0..3: -x, +x, -y, +y */
-    uint32_t slot;          /* its place in the window (while there) */
+    uint32_t side;          /* its event is the cell crossing of this side (0..3), else C2D_W_NONE:
+                               its event is the one of kind/partner (kept through crossings) */
     uint32_t kind;          /* C2D_W_PAIR ... C2D_W_IDLE */
     uint32_t same;          /* impacts at time `last` */
     double ax, ay;          /* its constant acceleration since t */
@@ -124,7 +125,8 @@ typedef struct c2d_w_entry {
 typedef struct c2d_w_node {
     double when;
     uint64_t tie;
-    uint32_t prev, next, where, spare;
+    double mwhen; /* the time of the disk's event other than a crossing (its kind, partner) */
+    uint32_t prev, next, where, slot; /* slot: its place in the window while there */
 } c2d_w_node;
 #define C2D_W_Q_WIN 0xFFFFFFFEu
 #define C2D_W_Q_OVF 0xFFFFFFFDu
@@ -342,26 +344,26 @@ static int c2d_w_before(const c2d_w_entry *a, const c2d_w_entry *b)
 static void c2d_w_win_place(c2d_world *w, size_t s, c2d_w_entry e)
 {
     c2d_w_entry *h = w->win;
-    c2d_w_disk *d = w->disk;
-    const size_t n = w->nwin;
+    c2d_w_node *n = w->node;
+    const size_t count = w->nwin;
     while (s > 0) {
         size_t up = (s - 1) / 2;
         if (!c2d_w_before(&e, &h[up])) break;
         h[s] = h[up];
-        d[h[s].disk].slot = (uint32_t)s;
+        n[h[s].disk].slot = (uint32_t)s;
         s = up;
     }
     for (;;) {
         size_t l = 2 * s + 1, best = l;
-        if (l >= n) break;
-        if (l + 1 < n && c2d_w_before(&h[l + 1], &h[l])) best = l + 1;
+        if (l >= count) break;
+        if (l + 1 < count && c2d_w_before(&h[l + 1], &h[l])) best = l + 1;
         if (!c2d_w_before(&h[best], &e)) break;
         h[s] = h[best];
-        d[h[s].disk].slot = (uint32_t)s;
+        n[h[s].disk].slot = (uint32_t)s;
         s = best;
     }
     h[s] = e;
-    d[e.disk].slot = (uint32_t)s;
+    n[e.disk].slot = (uint32_t)s;
 }
 
 static void c2d_w_win_push(c2d_world *w, uint32_t i)
@@ -375,7 +377,7 @@ static void c2d_w_win_push(c2d_world *w, uint32_t i)
 
 static void c2d_w_win_remove(c2d_world *w, uint32_t i)
 {
-    const size_t s = w->disk[i].slot;
+    const size_t s = w->node[i].slot;
     w->nwin--;
     if (s < w->nwin) c2d_w_win_place(w, s, w->win[w->nwin]);
 }
@@ -1003,7 +1005,24 @@ static void c2d_w_predict_rebase(const c2d_world *w, const c2d_w_disk *p, c2d_w_
 /* The built-in broadphase: leaving the cell is an event, and the
  * candidates are the disks of the 3 x 3 cells around (fewer against
  * walls; each cell once). */
-static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best)
+/* One cell along an axis beyond c (dir -1 or +1), wrapping when periodic:
+ * 1 and *cell, or 0 at a wall. */
+static size_t c2d_w_beyond(size_t c, size_t m, int periodic, int dir, size_t *cell)
+{
+    if (dir < 0) {
+        if (c > 0) *cell = c - 1;
+        else if (periodic) *cell = m - 1;
+        else return 0;
+        return 1;
+    }
+    if (c + 1 < m) *cell = c + 1;
+    else if (periodic) *cell = 0;
+    else return 0;
+    return 1;
+}
+
+static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best, c2d_w_best *cross,
+                                uint32_t side)
 {
     const c2d_w_disk *d = w->disk, *p = &d[i];
     const size_t mx = w->mx, my = w->my, cx = p->cell % mx, cy = p->cell / mx;
@@ -1019,13 +1038,16 @@ static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *
             const double fy = c2d_w_frame_shift(a->pos.y, y0, y1, w->height);
             x0 += fx, x1 += fx, y0 += fy, y1 += fy;
         }
-        c2d_w_leave(best, p->t, p->x, p->vx, p->ax, x0, x1, (cx > 0 || per ? 1u : 0u) | (cx + 1 < mx || per ? 2u : 0u),
+        c2d_w_leave(cross, p->t, p->x, p->vx, p->ax, x0, x1, (cx > 0 || per ? 1u : 0u) | (cx + 1 < mx || per ? 2u : 0u),
                     0, w->now);
-        c2d_w_leave(best, p->t, p->y, p->vy, p->ay, y0, y1, (cy > 0 || per ? 1u : 0u) | (cy + 1 < my || per ? 2u : 0u),
+        c2d_w_leave(cross, p->t, p->y, p->vy, p->ay, y0, y1, (cy > 0 || per ? 1u : 0u) | (cy + 1 < my || per ? 2u : 0u),
                     2, w->now);
     }
-    nc = c2d_w_neighbours(cx, mx, per, col);
-    nr = c2d_w_neighbours(cy, my, per, row);
+    /* All 3 x 3, or after a crossing the strip beyond the new cell. */
+    if (side == C2D_W_NONE || side >= 2) nc = c2d_w_neighbours(cx, mx, per, col);
+    else nc = c2d_w_beyond(cx, mx, per, side == 0 ? -1 : 1, col);
+    if (side == C2D_W_NONE || side < 2) nr = c2d_w_neighbours(cy, my, per, row);
+    else nr = c2d_w_beyond(cy, my, per, side == 2 ? -1 : 1, row);
     /* The cells' first disks, loaded (and their states fetched) all at
      * once before any is used: with many disks these are cache misses, and
      * independent ones overlap. */
@@ -1118,31 +1140,73 @@ static void c2d_w_predict_caller(const c2d_world *w, uint32_t i, const c2d_body 
     c2d_w_query_images(w, &box, c2d_w_report, &ctx);
 }
 
+/* Disk i's event: the earlier of its best event other than a crossing
+ * (kept, with its time, through the crossings) and its crossing. */
+static void c2d_w_settle(c2d_world *w, uint32_t i, const c2d_w_best *best, const c2d_w_best *cross)
+{
+    c2d_w_disk *p = &w->disk[i];
+    p->kind = best->kind;
+    p->partner = best->partner;
+    p->pcount = best->pcount;
+    w->node[i].mwhen = best->when;
+    if (cross->when < best->when ||
+        (cross->when == best->when && (C2D_W_CELL < best->kind || (C2D_W_CELL == best->kind && cross->partner < best->partner)))) {
+        p->side = cross->partner;
+        c2d_w_q_set(w, i, cross->when, C2D_W_TIE_KIND(C2D_W_CELL) | (uint64_t)i << 31 | (uint64_t)i);
+    } else if (best->kind == C2D_W_PAIR) {
+        const uint64_t lo = i < best->partner ? i : best->partner, hi = i < best->partner ? best->partner : i;
+        p->side = C2D_W_NONE;
+        c2d_w_q_set(w, i, best->when, lo << 31 | hi); /* kind C2D_W_PAIR = 0 */
+    } else {
+        p->side = C2D_W_NONE;
+        c2d_w_q_set(w, i, best->when, C2D_W_TIE_KIND(best->kind) | (uint64_t)i << 31 | (uint64_t)i);
+    }
+}
+
+static void c2d_w_best_none(c2d_w_best *b)
+{
+    b->when = C2D_W_INF;
+    b->kind = C2D_W_IDLE;
+    b->partner = 0;
+    b->pcount = 0;
+}
+
+/* Disk i's next event, predicted from scratch. */
 static void c2d_w_predict(c2d_world *w, uint32_t i)
 {
     c2d_w_disk *p = &w->disk[i];
-    c2d_w_best best;
+    c2d_w_best best, cross;
     c2d_body a;
-    best.when = C2D_W_INF;
-    best.kind = C2D_W_IDLE;
-    best.partner = 0;
-    best.pcount = 0;
+    c2d_w_best_none(&best);
+    c2d_w_best_none(&cross);
     c2d_w_body_at(p, w->now, &a);
     if (!w->periodic) c2d_w_predict_walls(w, p, &best);
     else c2d_w_predict_rebase(w, p, &best);
     if (p->timer < C2D_W_INF) c2d_w_consider(&best, p->timer, C2D_W_TIMER, 0, 0);
     if (w->nstatic > 0) c2d_w_predict_statics(w, p, &a, &best);
     if (w->caller) c2d_w_predict_caller(w, i, &a, &best);
-    else c2d_w_predict_cells(w, i, &a, &best);
-    p->kind = best.kind;
-    p->partner = best.partner;
-    p->pcount = best.pcount;
-    if (best.kind == C2D_W_PAIR) {
-        uint64_t lo = i < best.partner ? i : best.partner, hi = i < best.partner ? best.partner : i;
-        c2d_w_q_set(w, i, best.when, lo << 31 | hi); /* kind C2D_W_PAIR = 0 */
-    } else {
-        c2d_w_q_set(w, i, best.when, C2D_W_TIE_KIND(best.kind) | (uint64_t)i << 31 | (uint64_t)i);
+    else c2d_w_predict_cells(w, i, &a, &best, &cross, C2D_W_NONE);
+    c2d_w_settle(w, i, &best, &cross);
+}
+
+/* Disk i's next event after crossing into a new cell by `side`: its
+ * state is unchanged, so its best other event stands (unless it is an
+ * impact whose partner has moved since: then from scratch), and only the
+ * strip of 3 cells that has come into its 3 x 3 is new. */
+static void c2d_w_predict_crossed(c2d_world *w, uint32_t i, uint32_t side)
+{
+    c2d_w_disk *p = &w->disk[i];
+    c2d_w_best best, cross;
+    c2d_body a;
+    if (p->kind == C2D_W_PAIR && w->disk[p->partner].count != p->pcount) {
+        c2d_w_predict(w, i);
+        return;
     }
+    best.when = w->node[i].mwhen, best.kind = p->kind, best.partner = p->partner, best.pcount = p->pcount;
+    c2d_w_best_none(&cross);
+    c2d_w_body_at(p, w->now, &a);
+    c2d_w_predict_cells(w, i, &a, &best, &cross, side);
+    c2d_w_settle(w, i, &best, &cross);
 }
 
 /* ------------------------------------------------------------ grid */
@@ -1309,10 +1373,10 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     p->partner = 0;
     p->kind = C2D_W_IDLE;
     p->same = 0;
-    p->slot = 0;
-    w->node[i].when = C2D_W_INF, w->node[i].tie = 0;
+    p->side = C2D_W_NONE;
+    w->node[i].when = w->node[i].mwhen = C2D_W_INF, w->node[i].tie = 0;
     w->node[i].prev = w->node[i].next = C2D_W_NONE;
-    w->node[i].where = C2D_W_NONE, w->node[i].spare = 0;
+    w->node[i].where = C2D_W_NONE, w->node[i].slot = 0;
     w->count++;
     if (index != NULL) *index = i;
     if (radius > w->rmax) w->rmax = radius;
@@ -1540,31 +1604,32 @@ static void c2d_w_rebase(c2d_world *w, uint32_t i)
     c2d_w_predict(w, i);
 }
 
-/* A C2D_W_CELL event: a cell crossed, a rebase, or the caller's box left.
- * None changes the disk's state but the rebase (which the disk's own state
- * decides, whatever the broadphase). */
-static void c2d_w_cross(c2d_world *w, uint32_t i)
+/* Disk i crosses into the next cell by `side`. */
+static void c2d_w_cross_cell(c2d_world *w, uint32_t i, uint32_t side)
 {
     c2d_w_disk *p = &w->disk[i];
-    size_t cx, cy;
-    if (p->partner == C2D_W_REBASE) {
-        c2d_w_rebase(w, i);
-        return;
-    }
-    if (p->partner >= C2D_W_BOX) {
-        c2d_w_set_box(w, i, 1);
-        c2d_w_predict(w, i);
-        return;
-    }
-    cx = p->cell % w->mx, cy = p->cell / w->mx;
+    size_t cx = p->cell % w->mx, cy = p->cell / w->mx;
     c2d_w_cell_remove(w, i);
-    switch (p->partner) {
+    switch (side) {
     case 0: cx = (cx == 0 ? w->mx : cx) - 1; break;
     case 1: cx = cx + 1 == w->mx ? 0 : cx + 1; break;
     case 2: cy = (cy == 0 ? w->my : cy) - 1; break;
     default: cy = cy + 1 == w->my ? 0 : cy + 1; break;
     }
     c2d_w_cell_insert(w, i, cy * w->mx + cx);
+    c2d_w_predict_crossed(w, i, side);
+}
+
+/* A C2D_W_CELL event other than a crossing: a rebase, or the caller's
+ * box left.  Only the rebase changes the disk's state, and the disk's own
+ * state decides it, whatever the broadphase. */
+static void c2d_w_cross(c2d_world *w, uint32_t i)
+{
+    if (w->disk[i].partner == C2D_W_REBASE) {
+        c2d_w_rebase(w, i);
+        return;
+    }
+    c2d_w_set_box(w, i, 1);
     c2d_w_predict(w, i);
 }
 
@@ -1580,7 +1645,8 @@ c2d_status c2d_world_advance(c2d_world *world, double t)
         w->now = w->win[0].when;
         w->stats.events++;
         c2d_w_q_count(w);
-        switch (p->kind) {
+        if (p->side != C2D_W_NONE) c2d_w_cross_cell(w, i, p->side);
+        else switch (p->kind) {
         case C2D_W_PAIR: c2d_w_pair(w, i); break;
         case C2D_W_WALL: c2d_w_wall(w, i); break;
         case C2D_W_TIMER: c2d_w_timer(w, i); break;
