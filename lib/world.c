@@ -1099,7 +1099,7 @@ static void c2d_w_report(void *context, size_t disk)
  * in a periodic box its images across each side it comes within the
  * largest half-size of a box of (a box near the other side may stick out
  * towards it across the wrap). */
-static void c2d_w_query_images(const c2d_world *w, const c2d_world_box *box, void (*report)(void *, size_t), void *ctx)
+static void c2d_w_query_images(const c2d_world *w, const c2d_world_box *box, c2d_world_report report, void *ctx)
 {
     double sx[3], sy[3];
     size_t nx = 1, ny = 1, k, l;

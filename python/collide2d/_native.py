@@ -288,7 +288,8 @@ class WorldDesc(ctypes.Structure):
                 ("wall_restitution", ctypes.c_double), ("collapse_speed", ctypes.c_double),
                 ("collapse_count", ctypes.c_uint), ("collapse_time", ctypes.c_double),
                 ("collapse_length", ctypes.c_double), ("on_event", EVENT_CALLBACK),
-                ("user", ctypes.c_void_p), ("statics", ctypes.c_size_t)]
+                ("user", ctypes.c_void_p), ("statics", ctypes.c_size_t),
+                ("broadphase", ctypes.c_void_p)]  # const c2d_world_broadphase *: NULL, the built-in cells
 
 
 class WorldStats(ctypes.Structure):

@@ -48,6 +48,12 @@ int main(void)
     FIELD(c2d_world_desc, collapse_speed); FIELD(c2d_world_desc, collapse_count);
     FIELD(c2d_world_desc, collapse_time); FIELD(c2d_world_desc, collapse_length);
     FIELD(c2d_world_desc, on_event); FIELD(c2d_world_desc, user); FIELD(c2d_world_desc, statics);
+    FIELD(c2d_world_desc, broadphase);
+    STRUCT(c2d_world_box);
+    FIELD(c2d_world_box, lo); FIELD(c2d_world_box, hi);
+    STRUCT(c2d_world_broadphase);
+    FIELD(c2d_world_broadphase, insert); FIELD(c2d_world_broadphase, move); FIELD(c2d_world_broadphase, remove);
+    FIELD(c2d_world_broadphase, query); FIELD(c2d_world_broadphase, user); FIELD(c2d_world_broadphase, margin);
     STRUCT(c2d_world_stats);
     FIELD(c2d_world_stats, collisions); FIELD(c2d_world_stats, wall_collisions); FIELD(c2d_world_stats, events);
     FIELD(c2d_world_stats, time); FIELD(c2d_world_stats, virial);

@@ -1219,7 +1219,7 @@ static void naive_remove(void *user, size_t disk)
     b->present[disk] = 0, b->removes++;
 }
 
-static void naive_query(void *user, const c2d_world_box *box, void (*report)(void *, size_t), void *context)
+static void naive_query(void *user, const c2d_world_box *box, c2d_world_report report, void *context)
 {
     naive_bp *b = user;
     size_t k;
