@@ -253,8 +253,9 @@ typedef struct c2d_world_box {
  *                            querying disk itself), fewer is a missed impact.
  * The callbacks must not call the world.  In a periodic box the boxes are
  * in [0, width) x [0, height) coordinates (the centre wrapped), a box may
- * stick out of the box by its half-size, and the world queries every image
- * of a box that sticks out (up to 4 queries).  The events and states are
+ * stick out of the box by its half-size, and the world queries the images
+ * of a box across every side it comes within the largest half-size of (a
+ * box near the other side may stick out towards it; up to 9 queries).  The events and states are
  * the same bits whatever broadphase finds the candidates (a pair's time of
  * impact depends only on the two disks' states: CONVENTIONS, Determinism). */
 /* What a broadphase's query calls for each disk it finds. */
