@@ -110,6 +110,18 @@ $(BENCH_DIR)/world: bench/world.c $(STATIC)
 bench-world: $(BENCH_DIR)/world
 	@for eta in 0.5 0.2; do for n in 1024 10000 100489; do $(BENCH_DIR)/world $$n $$eta || exit 1; done; done
 
+# Instructions per collision (callgrind, the timed part's own dump) at
+# N = 1,024, eta 0.5 and 0.2: make bench-world-ir (needs valgrind).
+.PHONY: bench-world-ir
+bench-world-ir: $(BENCH_DIR)/world
+	@for eta in 0.5 0.2; do \
+	  rm -f $(BENCH_DIR)/world.cg.*; \
+	  line=$$(valgrind --tool=callgrind --callgrind-out-file=$(BENCH_DIR)/world.cg.%p $(BENCH_DIR)/world 1024 $$eta 20 5 2>/dev/null) || exit 1; \
+	  n=$$(echo "$$line" | sed -n 's/.*: \([0-9]*\) collisions.*/\1/p'); \
+	  ir=$$(sed -n 's/^summary: //p' $(BENCH_DIR)/world.cg.*.1); \
+	  echo "world: N = 1024 eta = $$eta: $$ir instructions over $$n collisions: $$((ir / n)) per collision"; \
+	done
+
 TEST_TARGETS += test-bench
 
 # ---------------------------------------------------------- energy bias
