@@ -430,13 +430,24 @@ static double c2d_w_meet(double t, double x, double v, double a, double to, doub
     return now < vertex ? now : C2D_W_INF;
 }
 
+/* An impact that leaves both velocities as they were (an approach speed
+ * so small that even the elastic impulse rounds away) changes nothing, so
+ * it is no impact either. */
+static int c2d_w_unchanged(const c2d_body *a0, const c2d_body *a, const c2d_body *b0, const c2d_body *b)
+{
+    return a->vel.x == a0->vel.x && a->vel.y == a0->vel.y && b->vel.x == b0->vel.x && b->vel.y == b0->vel.y;
+}
+
 /* A pair's contact at the very time `now` that c2d_collide would refuse
- * (touching with no approach speed, pushed together by accelerations): no
- * event, or the world would predict it again and again. */
+ * (touching with no approach speed, pushed together by accelerations) or
+ * resolve to the same velocities even at e = 1: no event, or the world
+ * would predict it again and again at one instant (the collapse rule
+ * makes an impact elastic after collapse_count of them, so a pair whose
+ * elastic impact changes something always ends). */
 static int c2d_w_refused_now(const c2d_body *a, const c2d_body *b)
 {
     c2d_body ta = *a, tb = *b;
-    return C2D_W_COLLIDE(&ta, &tb, 1.0) != C2D_OK;
+    return C2D_W_COLLIDE(&ta, &tb, 1.0) != C2D_OK || c2d_w_unchanged(a, &ta, b, &tb);
 }
 
 /* The contact point and normal (from the disk towards the static) of a
@@ -469,7 +480,7 @@ static int c2d_w_static_refused(const c2d_w_static *st, const c2d_body *a)
     c2d_vec2 n;
     c2d_w_static_contact(st, a->pos.x, a->pos.y, &tb.pos, &n);
     tb.vel.x = tb.vel.y = 0, tb.mass = C2D_W_INF;
-    return C2D_W_COLLIDE_NORMAL(&ta, &tb, n, 1.0) != C2D_OK;
+    return C2D_W_COLLIDE_NORMAL(&ta, &tb, n, 1.0) != C2D_OK || (ta.vel.x == a->vel.x && ta.vel.y == a->vel.y);
 }
 
 /* Disk p (at a, now) entering sensor k: a point meeting a circle, from
@@ -682,8 +693,9 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
                         if (best.when - now < c / (2 * dh) * (1 - 0x1p-40)) continue;
                     }
                 }
-                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = p->mass; /* ignored */
+                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
                 if (C2D_W_TOI(&a, &b, p->radius + q->radius, &toi) != C2D_OK) continue;
+                if (toi == 0 && c2d_w_refused_now(&a, &b)) continue;
                 c2d_w_consider(&best, now + toi, C2D_W_PAIR, j, q->count);
             }
         }
