@@ -112,9 +112,20 @@
  *     A disk at rest against a wall and pushed into it so has one wall
  *     event, then none; a bouncing one with e < 1 stops after about
  *     log(h / collapse_length) / log(1 / e^2) bounces.
- *   - Disks pressed together by accelerations have no resting contact: a
- *     touching pair with no approach speed is no event (c2d_collide would
- *     refuse it); once their paths close in they meet as an impact.
+ *   - Resting on another disk: touching disks whose accelerations press
+ *     them together (relative normal acceleration closing, press) meet at
+ *     once even with no approach speed, and at an impact that parts them
+ *     slower than a rebound of collapse_length (sep^2 <= 2 press
+ *     collapse_length along the unit normal) they rest on each other:
+ *     their relative normal velocity is taken away (momentum kept) and
+ *     each loses the component of its acceleration towards the other (as
+ *     at a wall; c2d_world_get_acceleration shows it, set it anew when
+ *     the situation changes).  So pressed disks never pass through each
+ *     other, and one bouncing on another with e < 1 stops after about
+ *     log(gap / collapse_length) / log(1 / e^2) impacts.  Reported as an
+ *     impact (its impulse possibly 0).  Not after collapse_count impacts
+ *     of one disk at one instant (rounding left by the projections cannot
+ *     loop); statics have no such rule.
  *
  * MEMORY
  *   c2d_world_bytes(desc) bytes aligned to 8 bytes (any malloc result, or a

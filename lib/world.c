@@ -450,6 +450,27 @@ static int c2d_w_refused_now(const c2d_body *a, const c2d_body *b)
     return C2D_W_COLLIDE(&ta, &tb, 1.0) != C2D_OK || c2d_w_unchanged(a, &ta, b, &tb);
 }
 
+/* Disk p has had collapse_count impacts at this very instant (the
+ * collapse rule, c2d_w_collapses). */
+static int c2d_w_crowded(const c2d_world *w, const c2d_w_disk *p, double now)
+{
+    return p->last == now && p->same >= w->collapse_count;
+}
+
+/* Touching disks p (body a) and q (b) that c2d_collide refuses now but
+ * whose accelerations press together (relative normal acceleration
+ * closing) meet now all the same, for the pair rest rule (c2d_w_pair):
+ * else they would pass through each other.  Not once either has had
+ * collapse_count impacts at this instant, so rounding left in the rule's
+ * projections cannot loop. */
+static int c2d_w_pressed(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, const c2d_body *a,
+                         const c2d_body *b)
+{
+    const double nx = b->pos.x - a->pos.x, ny = b->pos.y - a->pos.y;
+    if (c2d_w_crowded(w, p, w->now) || c2d_w_crowded(w, q, w->now)) return 0;
+    return (p->ax - q->ax) * nx + (p->ay - q->ay) * ny > 0;
+}
+
 /* The contact point and normal (from the disk towards the static) of a
  * disk centred at (px, py) against static k: a circle's centre; a
  * segment's end when the centre's foot on its line lies beyond it, else
@@ -666,7 +687,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
                             continue;
                     }
                     when = now + toi;
-                    if (when == now && c2d_w_refused_now(&a, &b)) continue;
+                    if (when == now && c2d_w_refused_now(&a, &b) && !c2d_w_pressed(w, p, q, &a, &b)) continue;
                     c2d_w_consider(&best, when, C2D_W_PAIR, j, q->count);
                     continue;
                 }
@@ -858,10 +879,6 @@ static void c2d_w_emit(c2d_world *w, const c2d_world_event *ev)
  * collapse_time ago, it approaches slower than collapse_speed, or it has
  * closed less than collapse_length since.  vn and the thresholds are
  * scaled by nn, the normal's length (1 for a wall, which scales nothing). */
-static int c2d_w_crowded(const c2d_world *w, const c2d_w_disk *p, double now)
-{
-    return p->last == now && p->same >= w->collapse_count;
-}
 
 static int c2d_w_collapses(const c2d_world *w, int crowded, double since, double vn, double nn, double length)
 {
@@ -957,6 +974,32 @@ static void c2d_w_repredict(c2d_world *w, uint32_t i)
     if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, i);
 }
 
+/* The pair rest rule (collide2d_world.h): disks p (body a) and q (b),
+ * touching, pressed together by their accelerations (closing at press /
+ * |n| along the unit normal) and parting at sep / |n| after the impact,
+ * rebound less than collapse_length high ((sep / |n|)^2 / (2 press / |n|)
+ * <= length): they rest on each other.  Their relative normal velocity
+ * is taken away, momentum kept (dv_a = +m_b / (m_a + m_b) sep n / |n|^2,
+ * dv_b = -m_a / (m_a + m_b) sep n / |n|^2), and each loses the component
+ * of its acceleration towards the other (as a disk on a wall loses the
+ * one into the wall): 1 if it applies, the velocities in a, b and the
+ * accelerations in p, q written. */
+static int c2d_w_pair_rests(c2d_w_disk *p, c2d_w_disk *q, c2d_body *a, c2d_body *b, double length)
+{
+    const double nx = b->pos.x - a->pos.x, ny = b->pos.y - a->pos.y, nn2 = nx * nx + ny * ny;
+    const double ap = p->ax * nx + p->ay * ny, aq = q->ax * nx + q->ay * ny, press = ap - aq;
+    const double sep = (b->vel.x - a->vel.x) * nx + (b->vel.y - a->vel.y) * ny;
+    if (!(press > 0) || !(nn2 > 0) || sep * sep > 2 * press * length * C2D_W_SQRT(nn2)) return 0;
+    if (sep > 0) {
+        const double ka = b->mass / (a->mass + b->mass) * (sep / nn2), kb = a->mass / (a->mass + b->mass) * (sep / nn2);
+        a->vel.x += ka * nx, a->vel.y += ka * ny;
+        b->vel.x -= kb * nx, b->vel.y -= kb * ny;
+    }
+    if (ap > 0) p->ax -= ap / nn2 * nx, p->ay -= ap / nn2 * ny;
+    if (aq < 0) q->ax -= aq / nn2 * nx, q->ay -= aq / nn2 * ny;
+    return 1;
+}
+
 /* The impact event of disk `owner`: stale, or resolved with the lower
  * index as c2d_collide's a (so either disk's copy of the event gives the
  * same bits). */
@@ -967,8 +1010,8 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
     const uint32_t i = owner < partner ? owner : partner, j = owner < partner ? partner : owner;
     c2d_w_disk *p = &d[i], *q = &d[j];
     const double now = w->now, dp = now - p->t, dq = now - q->t;
-    double qx, qy, sx = 0, sy = 0, e = w->restitution;
-    int collapsed = 0;
+    double qx, qy, sx = 0, sy = 0, e = w->restitution, length, vqx, vqy;
+    int collapsed = 0, resolved;
     c2d_world_contact c;
     c2d_body a, b;
     if (d[partner].count != d[owner].pcount) { /* stale */
@@ -984,6 +1027,8 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
     a.vel.x = c2d_w_vel(p->vx, p->ax, dp), a.vel.y = c2d_w_vel(p->vy, p->ay, dp);
     b.pos.x = qx + sx, b.pos.y = qy + sy, b.mass = q->mass;
     b.vel.x = c2d_w_vel(q->vx, q->ax, dq), b.vel.y = c2d_w_vel(q->vy, q->ay, dq);
+    vqx = b.vel.x, vqy = b.vel.y; /* before the impact (the rest rule changes q's acceleration) */
+    length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * (p->radius < q->radius ? p->radius : q->radius);
     if (e < 1) {
         /* The collapse rule (collide2d_world.h): elastic after collapse_count
          * impacts at this instant, within collapse_time of the last impact,
@@ -992,16 +1037,16 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
         const double since = now - (p->last > q->last ? p->last : q->last);
         const double nx = b.pos.x - a.pos.x, ny = b.pos.y - a.pos.y;
         const double vn = -((b.vel.x - a.vel.x) * nx + (b.vel.y - a.vel.y) * ny), nn = C2D_W_SQRT(nx * nx + ny * ny);
-        const double length = w->collapse_length > 0 ? w->collapse_length
-                                                      : 0x1p-20 * (p->radius < q->radius ? p->radius : q->radius);
         collapsed = c2d_w_collapses(w, c2d_w_crowded(w, p, now) || c2d_w_crowded(w, q, now), since, vn, nn, length);
         if (collapsed) e = 1;
     }
     c.kind = C2D_WORLD_IMPACT, c.time = now, c.a = i, c.b = j;
     c.normal.x = b.pos.x - a.pos.x, c.normal.y = b.pos.y - a.pos.y;
     c.restitution = e, c.collapsed = collapsed;
-    if (c2d_w_resolve(w, w->resolve_impact, &c, &a, &b) == C2D_OK) {
-        const double vqx = c2d_w_vel(q->vx, q->ax, dq), vqy = c2d_w_vel(q->vy, q->ay, dq);
+    resolved = c2d_w_resolve(w, w->resolve_impact, &c, &a, &b) == C2D_OK;
+    /* Resting (refused or not): only where accelerations press the pair. */
+    if (w->accel && c2d_w_pair_rests(p, q, &a, &b, length)) resolved = 1;
+    if (resolved) {
         w->stats.virial += ((b.pos.x - a.pos.x) * (b.vel.x - vqx) + (b.pos.y - a.pos.y) * (b.vel.y - vqy)) * q->mass;
         p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
         q->x = qx, q->y = qy, q->vx = b.vel.x, q->vy = b.vel.y, q->t = now;

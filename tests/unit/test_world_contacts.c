@@ -448,6 +448,73 @@ static void test_a_rough_wall_turns_slip_into_spin_by_coulombs_law(void **state_
     free(mem);
 }
 
+/* ------------------------------------------------------------ resting */
+
+/* Two unit-radius-half disks on the x axis, the right one dx further than
+ * touching, accelerated towards each other at 1 each (relative 2). */
+static c2d_world *pressed_pair(void **mem, double e, double dx, double mass_b)
+{
+    c2d_world_desc d = walled(2, 10, 4, 0);
+    c2d_world *w;
+    c2d_vec2 right = {1, 0}, left = {-1, 0};
+    d.restitution = e;
+    w = make(&d, mem);
+    add(w, 4.5, 2, 0, 0, 1, 0.5);
+    add(w, 5.5 + dx, 2, 0, 0, mass_b, 0.5);
+    assert_status(c2d_world_set_acceleration(w, 0, right), C2D_OK);
+    assert_status(c2d_world_set_acceleration(w, 1, left), C2D_OK);
+    return w;
+}
+
+static void test_touching_disks_pressed_together_by_their_accelerations_never_pass_through(void **state_)
+{
+    double mass_b[2] = {1, 3};
+    int k;
+    (void)state_;
+    for (k = 0; k < 2; k++) {
+        void *mem;
+        c2d_world *w = pressed_pair(&mem, 1, 0, mass_b[k]);
+        c2d_body a, b;
+        c2d_vec2 acc;
+        c2d_world_stats s;
+        assert_status(c2d_world_advance(w, 5), C2D_OK);
+        a = state(w, 0), b = state(w, 1);
+        c2d_world_get_stats(w, &s);
+        assert_true(a.pos.x == 4.5 && b.pos.x == 5.5 && a.vel.x == 0 && b.vel.x == 0);
+        assert_true(s.collisions == 1);
+        assert_status(c2d_world_get_acceleration(w, 0, &acc), C2D_OK);
+        assert_true(acc.x == 0 && acc.y == 0);
+        assert_status(c2d_world_get_acceleration(w, 1, &acc), C2D_OK);
+        assert_true(acc.x == 0 && acc.y == 0);
+        free(mem);
+    }
+}
+
+static void test_a_disk_bouncing_on_another_under_its_acceleration_comes_to_rest(void **state_)
+{
+    /* Gap g = 0.1 closing at relative acceleration 2: each impact at
+     * e = 0.5 leaves e^2 of the last rebound's height, so it rests once
+     * g e^(2n) <= collapse_length = 2^-20 x 0.5: n = ceil(log(g / L) /
+     * log(1 / e^2)) impacts, one more for rounding at the boundary. */
+    const double e = 0.5, g = 0.1, length = 0x1p-20 * 0.5;
+    const double n = ceil(log(g / length) / log(1 / (e * e)));
+    void *mem;
+    c2d_world *w = pressed_pair(&mem, e, g, 1);
+    c2d_world_stats s, later;
+    c2d_body a, b;
+    (void)state_;
+    assert_status(c2d_world_advance(w, 5), C2D_OK);
+    c2d_world_get_stats(w, &s);
+    assert_true((double)s.collisions >= n && (double)s.collisions <= n + 1);
+    a = state(w, 0), b = state(w, 1);
+    assert_true(a.vel.x == 0 && b.vel.x == 0);
+    assert_close(b.pos.x - a.pos.x, 1, 4e-16);
+    assert_status(c2d_world_advance(w, 50), C2D_OK);
+    c2d_world_get_stats(w, &later);
+    assert_true(later.collisions == s.collisions && later.events == s.events);
+    free(mem);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -462,6 +529,8 @@ int main(void)
         cmocka_unit_test(test_a_callers_static_resolver_sees_the_contact_normal),
         cmocka_unit_test(test_a_perfectly_rough_elastic_gas_keeps_its_energy_with_rotation),
         cmocka_unit_test(test_a_rough_wall_turns_slip_into_spin_by_coulombs_law),
+        cmocka_unit_test(test_touching_disks_pressed_together_by_their_accelerations_never_pass_through),
+        cmocka_unit_test(test_a_disk_bouncing_on_another_under_its_acceleration_comes_to_rest),
     };
     const int total = (int)(sizeof tests / sizeof tests[0]);
     int failed = cmocka_run_group_tests_name("world contacts", tests, NULL, NULL);
