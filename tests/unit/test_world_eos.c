@@ -138,10 +138,25 @@ static double uniform(void) /* splitmix64 -> [-1, 1) */
 /* ------------------------------------------------------------ the reference */
 
 /* Kolafa-Rottner, Eq. 7, the rho_max = 0.90 fit: powers of x and A_i. */
-static const struct { int power; double a; } kr_terms[] = {
-    {0, 1.0},           {1, 2.0},           {2, 1.12801775},      {3, 0.00181895291},   {4, -0.0526134737},
-    {5, 0.0504960168},  {6, -0.0325537792}, {7, 0.0134578632},    {8, 0.00140888182},   {9, -0.00834273601},
-    {10, 0.00694127367}, {11, -0.00262254723}, {12, 0.000355746352}, {22, -5.24672938e-9}, {57, 5.88054639e-23},
+static const struct {
+    int power;
+    double a;
+} kr_terms[] = {
+    {0, 1.0},
+    {1, 2.0},
+    {2, 1.12801775},
+    {3, 0.00181895291},
+    {4, -0.0526134737},
+    {5, 0.0504960168},
+    {6, -0.0325537792},
+    {7, 0.0134578632},
+    {8, 0.00140888182},
+    {9, -0.00834273601},
+    {10, 0.00694127367},
+    {11, -0.00262254723},
+    {12, 0.000355746352},
+    {22, -5.24672938e-9},
+    {57, 5.88054639e-23},
 };
 
 /* Z and its first two derivatives in eta: with x = eta / (1 - eta),
@@ -197,8 +212,8 @@ static void test_the_kolafa_rottner_fit_gives_the_known_virial_coefficients_and_
      * Z, its standard error): the fit passes within its s ~ 0.93, so
      * within 3 standard errors; Henderson's equation within 0.03 % at 0.3. */
     {
-        const double table[][3] = {{0.40, 2.1514393, 5.2e-6}, {0.60, 3.663691, 1.2e-5}, {0.75, 6.113391, 2.6e-5},
-                                   {0.80, 7.476491, 3.6e-5}};
+        const double table[][3] = {
+            {0.40, 2.1514393, 5.2e-6}, {0.60, 3.663691, 1.2e-5}, {0.75, 6.113391, 2.6e-5}, {0.80, 7.476491, 3.6e-5}};
         double z, dz, d2z, henderson = (1 + 0.3 * 0.3 / 8) / (0.7 * 0.7);
         for (k = 0; k < sizeof table / sizeof table[0]; k++) {
             kolafa_rottner(PI / 4 * table[k][0], &z, &dz, &d2z);
@@ -211,7 +226,9 @@ static void test_the_kolafa_rottner_fit_gives_the_known_virial_coefficients_and_
 
 /* ------------------------------------------------------------ the simulation */
 
-typedef struct order { double rho_k, psi4, psi6; } order;
+typedef struct order {
+    double rho_k, psi4, psi6;
+} order;
 
 /* The lattice's Fourier amplitude and the bond orders of neighbours
  * within 1.2 lattice spacings (the 4 of the lattice, not its diagonals). */
@@ -253,7 +270,8 @@ static order measure_order(const c2d_world *w, double box)
 
 static void assert_fluid(order o, const char *when, double eta)
 {
-    printf("test_world_eos: eta %.1f, %s: |rho_k| %.3f, |psi_4| %.3f, |psi_6| %.3f\n", eta, when, o.rho_k, o.psi4, o.psi6);
+    printf("test_world_eos: eta %.1f, %s: |rho_k| %.3f, |psi_4| %.3f, |psi_6| %.3f\n", eta, when, o.rho_k, o.psi4,
+           o.psi6);
     assert_true(o.rho_k < 0.2);
     assert_true(o.psi4 < 0.1);
     assert_true(o.psi6 < 0.25);
