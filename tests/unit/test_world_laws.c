@@ -284,15 +284,20 @@ static void test_a_cradle_of_n_equal_disks_has_n_minus_1_impacts_and_passes_the_
  * `limit`: a world that never finishes an advance. */
 typedef struct event_budget {
     long events, limit;
+    void *mem; /* the world's, freed before failing: the advance never returns to free it */
 } event_budget;
 
 static void spend_event(void *user, const c2d_world_event *e)
 {
     event_budget *b = user;
-    if (++b->events > b->limit)
+    if (++b->events > b->limit) {
+        const c2d_world_event last = *e;
+        free(b->mem);
         fail_msg("more than %ld events: the advance does not finish (the last of kind %d at t = %.17g between %lu "
                  "and %lu, impulse (%g, %g))",
-                 b->limit, (int)e->kind, e->time, (unsigned long)e->a, (unsigned long)e->b, e->impulse.x, e->impulse.y);
+                 b->limit, (int)last.kind, last.time, (unsigned long)last.a, (unsigned long)last.b, last.impulse.x,
+                 last.impulse.y);
+    }
 }
 
 /* A 5 x 5 square cluster of touching disks (centres 1 apart) in a box
@@ -303,7 +308,7 @@ static void spend_event(void *user, const c2d_world_event *e)
 static void run_cluster(int strikers)
 {
     c2d_world_desc d = box_desc(27, 20, 20, C2D_WALLS, 0, 0);
-    event_budget budget = {0, 100000};
+    event_budget budget = {0, 100000, NULL};
     void *mem;
     c2d_world *w;
     c2d_body b = {{0, 0}, {0, 0}, 1};
@@ -312,6 +317,7 @@ static void run_cluster(int strikers)
     size_t i, j;
     d.on_event = spend_event, d.user = &budget;
     w = new_world(&d, &mem);
+    budget.mem = mem;
     for (i = 0; i < 25; i++) {
         b.pos.x = 8 + (double)(i % 5), b.pos.y = 8 + (double)(i / 5);
         assert_status(c2d_world_add(w, &b, 0.5, NULL), C2D_OK);
