@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The world's hard-disk fluid against the equation of state of Kolafa and
- * Rottner (Mol. Phys. 104, 3435-3441, 2006; the brief's "1435"), at packing
+ * Rottner (Mol. Phys. 104, 3435-3441, 2006), at packing
  * fractions 0.3 and 0.6, corrected to the simulation's N.
  *
  * THE PRESSURE FROM THE VIRIAL OF IMPULSIVE FORCES (2-D, N equal disks of
@@ -36,8 +36,8 @@
  * THE REFERENCE AND ITS FINITE-N CORRECTION
  *   Kolafa-Rottner's fit (their Eq. 7, the rho_max = 0.90 equation of
  *   section 3.2): Z(eta) = sum A_i x^i, x = eta / (1 - eta), the A_i below.
- *   The coefficients are taken from transcriptions of the paper's page
- *   (I could not read the paper itself); they are checked here against
+ *   The coefficients are taken from transcriptions of the paper's section
+ *   3.2 (the paper itself was not at hand); they are checked here against
  *   what is independent of them: expanded in eta they give the virial
  *   coefficients 2, 3.1280177, 4.2578545, 5.3368966 (the known exact and
  *   Monte Carlo B2..B5 of hard disks, e.g. Clisby and McCoy, J. Stat. Phys.
