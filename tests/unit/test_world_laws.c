@@ -358,10 +358,11 @@ static void test_a_touching_cluster_at_e_0_struck_at_a_corner_finishes_and_only_
     run_cluster(1);
 }
 
-/* Found by this test (2026-12-02): the two strikers meet the cluster's
- * opposite corners at the same instant; at t = 5.63 disks 2 and 9 then
- * have one zero-impulse impact after the other at the very same time, and
- * c2d_world_advance never returns (e = 0 only: 0.001 finishes). */
+/* The two strikers meet the cluster's opposite corners at the same
+ * instant; at t = 5.63 disks 2 and 9 then meet so slowly that even the
+ * elastic impulse rounds away, which once made one zero-impulse impact
+ * follow the other at that instant for ever (e = 0 only): the world takes
+ * an impact that changes nothing as no impact. */
 static void test_a_touching_cluster_at_e_0_struck_at_opposite_corners_at_once_finishes(void **state)
 {
     (void)state;
@@ -556,14 +557,18 @@ typedef struct refusal_probe {
 
 /* From inside the callback, at the first timer: the world's memory as it
  * is mid-advance must not change by any refused call, nor by the calls
- * the callback may not make (add, remove, advance). */
+ * the callback may not make (add, a static, advance; removing is allowed,
+ * for pockets). */
 static void probe_refusals(void *user, const c2d_world_event *e)
 {
     refusal_probe *p = user;
     if (e->kind != C2D_WORLD_TIMER || p->probed) return;
     memcpy(p->copy, p->mem, p->bytes);
     refuse_everything(p->w, e->time);
-    assert_status(c2d_world_remove(p->w, 0), C2D_INVALID);
+    {
+        const c2d_vec2 centre = {6, 6};
+        assert_status(c2d_world_add_sensor(p->w, centre, 1, NULL), C2D_INVALID);
+    }
     assert_status(c2d_world_advance(p->w, e->time + 1), C2D_INVALID);
     assert_status(c2d_world_advance(p->w, e->time), C2D_INVALID);
     assert_memory_equal(p->copy, p->mem, p->bytes);
