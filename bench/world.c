@@ -20,7 +20,9 @@
  *   10,000   0.64  (0.63)         0.44  (0.43)
  *   100,489  0.29  (0.31)         0.22  (0.20)
  *   callgrind (make bench-world-ir), N = 1,024: 4,165 instructions per
- *   collision at eta 0.5 (3,922 before), 5,043 at eta 0.2 (5,317 before).
+ *   collision at eta 0.5 (3,922 before), 5,043 at eta 0.2 (5,317 before);
+ *   after merging main's sensors, resolvers and rest rule (5bac685: 4,071
+ *   and 5,482): 4,212 and 5,087.
  * The steps, instructions per collision at eta 0.5, N = 1,024:
  *   3,922  before (cells, a 4-ary heap, the image from the cell offset)
  *   5,609  the canonical frame (both disks at the later state time, lower

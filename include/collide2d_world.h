@@ -199,9 +199,10 @@
  *   query otherwise; adding a disk larger than all before rebuilds the grid
  *   (O(N)); every round the calendar may be re-filed (O(N), amortised O(1)).
  *   Measured (bench/world.c, periodic gas, e = 1, gcc -O2, x86-64):
- *   N = 1,024 at eta 0.5: 4,165 instructions per collision (callgrind; the
- *   world before the canonical rule: 3,922); collisions per CPU second in
- *   bench/world.c's opening comment.
+ *   N = 1,024 at eta 0.5: 4,212 instructions per collision (callgrind; the
+ *   world with a 4-ary heap and the image from the cells, before the
+ *   canonical rule: 4,071), at eta 0.2 5,087 (5,482); collisions per CPU
+ *   second in bench/world.c's opening comment.
  *
  * CONFIGURATION
  *   C2D_NO_WORLD (when compiling the library): leave the world out.  The
