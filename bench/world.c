@@ -19,6 +19,9 @@
  *   1,024    1.00  (0.92)         0.73  (0.62)
  *   10,000   0.64  (0.63)         0.44  (0.43)
  *   100,489  0.29  (0.31)         0.22  (0.20)
+ *   After merging main (sensors, resolvers, rest rule), against main
+ *   5bac685 in brackets, load 3.3 to 4.4: 1,024: 1.12 (1.00), 0.70 (0.60);
+ *   10,000: 0.76 (0.62), 0.46 (0.43); 100,489: 0.29 (0.31), 0.22 (0.20).
  *   callgrind (make bench-world-ir), N = 1,024: 4,165 instructions per
  *   collision at eta 0.5 (3,922 before), 5,043 at eta 0.2 (5,317 before);
  *   after merging main's sensors, resolvers and rest rule (5bac685: 4,071
