@@ -1251,7 +1251,7 @@ static void log_scene_event(void *user, const c2d_world_event *e)
     }
 }
 
-enum { SCENE_WALLS, SCENE_PERIODIC, SCENE_ACCEL, SCENE_STATICS, SCENES };
+enum { SCENE_WALLS, SCENE_PERIODIC, SCENE_ACCEL, SCENE_STATICS, SCENES }; /* statics: segments, circles, sensors */
 
 /* Scene s run to t = 30 with the built-in broadphase (nb NULL) or nb
  * (margin m): its events, final states and statistics. */
@@ -1274,7 +1274,7 @@ static void run_scene(int s, naive_bp *nb, double m, scene_log *log, c2d_body *o
     log->ev = malloc(log->cap * sizeof *log->ev);
     assert_non_null(log->ev);
     d.on_event = log_scene_event, d.user = log;
-    d.statics = s == SCENE_STATICS ? 3 : 0;
+    d.statics = s == SCENE_STATICS ? 5 : 0;
     w = new_world(&d, &mem);
     log->w = w;
     if (s == SCENE_STATICS) {
@@ -1282,6 +1282,11 @@ static void run_scene(int s, naive_bp *nb, double m, scene_log *log, c2d_body *o
         assert_status(c2d_world_add_segment(w, a, b, 0.8, NULL), C2D_OK);
         assert_status(c2d_world_add_circle(w, c, 0.2, 1, NULL), C2D_OK);
         assert_status(c2d_world_add_circle(w, b, 0.5, 0.5, NULL), C2D_OK);
+        { /* sensors: entries reported, nothing resolved */
+            c2d_vec2 s0 = {4.1, 12.3}, s1 = {12.7, 4.4};
+            assert_status(c2d_world_add_sensor(w, s0, 0.9, NULL), C2D_OK);
+            assert_status(c2d_world_add_sensor(w, s1, 1.3, NULL), C2D_OK);
+        }
         rng_state = 11;
         for (i = 0; i < 144; i++) { /* a lattice, the disks in the statics' way left out */
             c2d_body k;
@@ -1338,10 +1343,14 @@ static void test_a_callers_broadphase_gives_the_same_bits_as_the_built_in_one(vo
             assert_true(sw.collisions == sh.collisions && sw.wall_collisions == sh.wall_collisions);
             assert_memory_equal(&sw.virial, &sh.virial, sizeof sw.virial);
             assert_true(nb.moves > 0 && nb.queries > 0);
-            if (m == 0)
-                printf("test_world: scene %d: %zu events (%llu impacts), the same bits with the brute-force "
-                       "broadphase (%llu box moves, %llu queries)\n",
-                       s, ref.n, sw.collisions, nb.moves, nb.queries);
+            if (m == 0) {
+                size_t sensed = 0;
+                for (k = 0; k < ref.n; k++) sensed += ref.ev[k].kind == C2D_WORLD_SENSOR;
+                if (s == SCENE_STATICS) assert_true(sensed > 20);
+                printf("test_world: scene %d: %zu events (%llu impacts, %zu sensor entries), the same bits with the "
+                       "brute-force broadphase (%llu box moves, %llu queries)\n",
+                       s, ref.n, sw.collisions, sensed, nb.moves, nb.queries);
+            }
             free(got.ev);
             runs++;
         }
