@@ -101,14 +101,15 @@ test-bench: check-deps-test-bench
 # ------------------------------------------------------------------ world
 # Collisions per CPU second of the event-driven world (bench/world.c, its
 # usage and the figures measured in its opening comment): make bench-world
-# runs N = 1,024, 10,000 and 100,489 at eta 0.5 and 0.2.
+# runs N = 1,024, 10,000 and 100,489 at eta 0.5 and 0.2 and writes the
+# table bench/RESULTS-world.md (bench/world_table.sh).
 .PHONY: bench-world
 $(BENCH_DIR)/world: bench/world.c $(STATIC)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Ibench -Ireferee -o $@ $< $(STATIC) -lm
 
 bench-world: $(BENCH_DIR)/world
-	@for eta in 0.5 0.2; do for n in 1024 10000 100489; do $(BENCH_DIR)/world $$n $$eta || exit 1; done; done
+	@sh bench/world_table.sh $(BENCH_DIR)/world bench/RESULTS-world.md
 
 # Instructions per collision (callgrind, the timed part's own dump) at
 # N = 1,024, eta 0.5 and 0.2: make bench-world-ir (needs valgrind).
