@@ -36,7 +36,7 @@ endif
 # fixed.c) over shared template headers (lib/real/).
 LIB_SRC := $(wildcard lib/*.c)
 LIB_HDR := include/collide2d.h
-LIB_TEMPLATES := $(wildcard lib/*.h lib/real/*.h lib/real/*/*.h)
+LIB_TEMPLATES := $(wildcard lib/*.h lib/real/*.h lib/real/*/*.h lib/world/*.h)
 LIB_OBJ := $(patsubst lib/%.c,$(B)/obj/%.o,$(LIB_SRC))
 LIB_PIC := $(patsubst lib/%.c,$(B)/obj/%.pic.o,$(LIB_SRC))
 STATIC := $(B)/libcollide2d.a
