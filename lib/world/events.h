@@ -52,12 +52,7 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
         c2d_w_impact_clock(p, now);
         c2d_w_impact_clock(q, now);
         w->stats.collisions++;
-        if (w->on_event != NULL) {
-            c2d_world_event ev;
-            ev.kind = C2D_WORLD_IMPACT, ev.time = now, ev.a = i, ev.b = j;
-            ev.impulse.x = (b.vel.x - vqx) * q->mass, ev.impulse.y = (b.vel.y - vqy) * q->mass;
-            c2d_w_emit(w, &ev);
-        }
+        c2d_w_tell(w, C2D_WORLD_IMPACT, i, j, (b.vel.x - vqx) * q->mass, (b.vel.y - vqy) * q->mass);
         c2d_w_repredict(w, i);
         c2d_w_repredict(w, j);
     } else {
@@ -98,12 +93,7 @@ static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
             c2d_w_restate(w, p, a.pos.x, a.pos.y, a.vel.x, a.vel.y);
             c2d_w_impact_clock(p, now);
             w->stats.wall_collisions++;
-            if (w->on_event != NULL) {
-                c2d_world_event ev;
-                ev.kind = C2D_WORLD_STATIC, ev.time = now, ev.a = i, ev.b = k;
-                ev.impulse.x = (a.vel.x - vx0) * p->mass, ev.impulse.y = (a.vel.y - vy0) * p->mass;
-                c2d_w_emit(w, &ev);
-            }
+            c2d_w_tell(w, C2D_WORLD_STATIC, i, k, (a.vel.x - vx0) * p->mass, (a.vel.y - vy0) * p->mass);
         }
     }
     c2d_w_repredict(w, i);
@@ -114,12 +104,7 @@ static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
 static void c2d_w_sensor(c2d_world *w, uint32_t i, size_t k)
 {
     w->entered[i].time = w->now, w->entered[i].sensor = (uint32_t)(k + 1);
-    if (w->on_event != NULL) {
-        c2d_world_event ev;
-        ev.kind = C2D_WORLD_SENSOR, ev.time = w->now, ev.a = i, ev.b = k;
-        ev.impulse.x = ev.impulse.y = 0;
-        c2d_w_emit(w, &ev);
-    }
+    c2d_w_tell(w, C2D_WORLD_SENSOR, i, k, 0, 0);
     c2d_w_repredict(w, i);
 }
 
@@ -189,12 +174,7 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
     p->x = x, p->y = y, p->t = now;
     c2d_w_impact_clock(p, now);
     w->stats.wall_collisions++;
-    if (w->on_event != NULL) {
-        c2d_world_event ev;
-        ev.kind = C2D_WORLD_WALL, ev.time = now, ev.a = i, ev.b = p->partner;
-        ev.impulse.x = (p->vx - vx0) * p->mass, ev.impulse.y = (p->vy - vy0) * p->mass;
-        c2d_w_emit(w, &ev);
-    }
+    c2d_w_tell(w, C2D_WORLD_WALL, i, p->partner, (p->vx - vx0) * p->mass, (p->vy - vy0) * p->mass);
     c2d_w_repredict(w, i);
 }
 
@@ -203,12 +183,7 @@ static void c2d_w_timer(c2d_world *w, uint32_t i)
 {
     w->disk[i].timer = C2D_W_INF;
     w->disk[i].count++; /* a horizon of its partners' predictions was the timer */
-    if (w->on_event != NULL) {
-        c2d_world_event ev;
-        ev.kind = C2D_WORLD_TIMER, ev.time = w->now, ev.a = i, ev.b = 0;
-        ev.impulse.x = ev.impulse.y = 0;
-        c2d_w_emit(w, &ev);
-    }
+    c2d_w_tell(w, C2D_WORLD_TIMER, i, 0, 0, 0);
     c2d_w_repredict(w, i);
 }
 

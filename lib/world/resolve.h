@@ -12,6 +12,16 @@ static void c2d_w_emit(c2d_world *w, const c2d_world_event *ev)
     w->busy = 0;
 }
 
+/* Report an event (at the world's time) to on_event, if any. */
+static void c2d_w_tell(c2d_world *w, c2d_world_event_kind kind, size_t a, size_t b, double jx, double jy)
+{
+    c2d_world_event ev;
+    if (w->on_event == NULL) return;
+    ev.kind = kind, ev.time = w->now, ev.a = a, ev.b = b;
+    ev.impulse.x = jx, ev.impulse.y = jy;
+    c2d_w_emit(w, &ev);
+}
+
 /* The collapse rule (collide2d_world.h), one place for pairs, walls and
  * statics: an impact is elastic when a disk of it has had collapse_count
  * impacts at this very instant (crowded), its previous impact is less than
