@@ -108,21 +108,38 @@ typedef C2D_R_CUSHION c2d_real_cushion;
  * result.  exp(-r) by the Taylor series to degree C2D_R_EXP_NEG_DEGREE,
  * nested as 1 + y (1 + y/2 (1 + y/3 (...))), y = -r: every factor |y/i| <
  * 0.35, so each nesting step's rounding is damped by the steps outside it
- * (a few u in all), and the truncation (ln2/2)^(N+1)/(N+1)! is below u/4
+ * (a few u in all; the constants 1/i are rounded, one more u each, damped
+ * alike), and the truncation (ln2/2)^(N+1)/(N+1)! is below u/4
  * (double N = 13: 4e-18; float N = 7: 5e-9).  Then 2^-k exactly (the result
- * stays normal).  Measured against MPFR in tests/unit/test_sphere.c. */
+ * stays normal).  Measured against MPFR in tests/unit/test_exp_neg.c, test_exp_negf.c. */
 static c2d_real c2d_exp_neg(c2d_real x)
 {
     const c2d_real ln2_hi = (c2d_real)0.693145751953125, ln2_lo = (c2d_real)1.42860682030941723212e-6;
     const c2d_real inv_ln2 = (c2d_real)1.44269504088896340736;
     c2d_real r, y, p;
-    int k, i;
+    int k;
     if (x > (c2d_real)C2D_R_EXP_NEG_MAX) return 0;
     k = (int)(x * inv_ln2 + (c2d_real)0.5);
     r = (x - (c2d_real)k * ln2_hi) - (c2d_real)k * ln2_lo;
     y = -r;
     p = 1;
-    for (i = C2D_R_EXP_NEG_DEGREE; i >= 1; i--) p = 1 + y * p / (c2d_real)i;
+#if C2D_R_EXP_NEG_DEGREE == 13
+    p = 1 + y * p * (c2d_real)(1.0 / 13);
+    p = 1 + y * p * (c2d_real)(1.0 / 12);
+    p = 1 + y * p * (c2d_real)(1.0 / 11);
+    p = 1 + y * p * (c2d_real)(1.0 / 10);
+    p = 1 + y * p * (c2d_real)(1.0 / 9);
+    p = 1 + y * p * (c2d_real)(1.0 / 8);
+#elif C2D_R_EXP_NEG_DEGREE != 7
+#error "c2d_exp_neg: degree 7 or 13"
+#endif
+    p = 1 + y * p * (c2d_real)(1.0 / 7);
+    p = 1 + y * p * (c2d_real)(1.0 / 6);
+    p = 1 + y * p * (c2d_real)(1.0 / 5);
+    p = 1 + y * p * (c2d_real)(1.0 / 4);
+    p = 1 + y * p * (c2d_real)(1.0 / 3);
+    p = 1 + y * p * (c2d_real)0.5;
+    p = 1 + y * p;
     return p * c2d_pow2(-k);
 }
 
@@ -173,13 +190,17 @@ static c2d_real c2d_unit_normal(c2d_real *nx, c2d_real *ny, c2d_real x, c2d_real
     return l * m;
 }
 
-/* (vb - va).d / |d|, d = dh + dl exactly, to ~1 ulp of the result: a
- * glancing impact's normal speed is a cancelling sum, and the normal
- * impulse it gives reaches the spins through mu Jn R^2 / I, which the
- * pair's scale does not bound (c2d_dot2, real/arith/exact.h). */
-static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len,
-                                 const c2d_real_vec *va, const c2d_real_vec *vb)
+/* (vb - va).n^ to a few u of itself.  A glancing impact's normal speed is a
+ * cancelling sum, and the normal impulse it gives reaches the spins through
+ * mu Jn R^2 / I, which the pair's scale does not bound: plainly (error
+ * ~3u (|dvx| + |dvy|)) only when that is within 6u of the result, else
+ * from d = dh + dl exactly with exact products (c2d_dot2,
+ * real/arith/exact.h), to ~1 ulp. */
+static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len, c2d_real nx,
+                                 c2d_real ny, const c2d_real_vec *va, const c2d_real_vec *vb)
 {
+    c2d_real dvx = vb->x - va->x, dvy = vb->y - va->y, gn = dvx * nx + dvy * ny;
+    if (2 * c2d_abs(gn) >= c2d_abs(dvx) + c2d_abs(dvy)) return gn;
     return c2d_dot2(dh, dl, va, vb) / len;
 }
 
@@ -213,9 +234,10 @@ static void c2d_ball_write(c2d_real_ball *d, const c2d_ball_out *o)
  * -sign R n^: v += sign Jt t^ / m and, the two signs cancelling,
  * w += R (Jz t^ - Jt z^) / I for both balls. */
 static void c2d_ball_friction_apply(c2d_ball_out *o, const c2d_real_vec *v_normal, const c2d_real_ball *d,
-                                    c2d_real nx, c2d_real ny, c2d_real jt, c2d_real jz, c2d_real sign)
+                                    c2d_real inv_mass, c2d_real q, c2d_real nx, c2d_real ny, c2d_real jt,
+                                    c2d_real jz, c2d_real sign)
 {
-    c2d_real dv = sign * jt * c2d_sphere_inverse(d->mass), q = d->radius * c2d_sphere_inverse(d->inertia);
+    c2d_real dv = sign * jt * inv_mass;
     o->v[0] = v_normal->x - dv * ny;
     o->v[1] = v_normal->y + dv * nx;
     o->w[0] = d->spin[0] - q * jz * ny;
@@ -227,7 +249,7 @@ static void c2d_ball_friction_apply(c2d_ball_out *o, const c2d_real_vec *v_norma
 static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_body *ta,
                                      const c2d_real_body *tb, const c2d_real_ball_surface *s)
 {
-    c2d_real nx, ny, gn, gt, gz, g, qa, qb, inv_mn, inv_mt, lam, len, jn, f;
+    c2d_real nx, ny, gn, gt, gz, g, qa, qb, ima, imb, inv_mn, inv_mt, lam, len, jn, f;
     c2d_real dvx = b->vel.x - a->vel.x, dvy = b->vel.y - a->vel.y;
     c2d_real_vec dh, dl;
     c2d_ball_out oa, ob;
@@ -240,9 +262,11 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     len = c2d_unit_normal(&nx, &ny, dh.x, dh.y);
     qa = a->radius * c2d_sphere_inverse(a->inertia);
     qb = b->radius * c2d_sphere_inverse(b->inertia);
-    inv_mn = c2d_sphere_inverse(a->mass) + c2d_sphere_inverse(b->mass);
+    ima = c2d_sphere_inverse(a->mass);
+    imb = c2d_sphere_inverse(b->mass);
+    inv_mn = ima + imb;
     inv_mt = inv_mn + a->radius * qa + b->radius * qb;
-    gn = c2d_normal_speed(&dh, &dl, len, &a->vel, &b->vel);
+    gn = c2d_normal_speed(&dh, &dl, len, nx, ny, &a->vel, &b->vel);
     gt = (dvy * nx - dvx * ny) - (a->radius * a->spin[2] + b->radius * b->spin[2]);
     gz = -(a->radius * (a->spin[0] * ny - a->spin[1] * nx) + b->radius * (b->spin[0] * ny - b->spin[1] * nx));
     g = C2D_R_SQRT(gt * gt + gz * gz);
@@ -255,8 +279,8 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
         lam = c2d_friction_size(c2d_ball_friction(s, g), jn, g / inv_mt);
         f = lam / g;
     }
-    c2d_ball_friction_apply(&oa, &ta->vel, a, nx, ny, -f * gt, -f * gz, -1);
-    c2d_ball_friction_apply(&ob, &tb->vel, b, nx, ny, -f * gt, -f * gz, 1);
+    c2d_ball_friction_apply(&oa, &ta->vel, a, ima, qa, nx, ny, -f * gt, -f * gz, -1);
+    c2d_ball_friction_apply(&ob, &tb->vel, b, imb, qb, nx, ny, -f * gt, -f * gz, 1);
     if (!c2d_ball_out_finite(&oa) || !c2d_ball_out_finite(&ob)) return C2D_RANGE;
     c2d_ball_write(a, &oa);
     c2d_ball_write(b, &ob);
@@ -318,7 +342,7 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     len = c2d_unit_normal(&nx, &ny, c->normal.x, c->normal.y);
     sn = (c->height - d->radius) / d->radius;
     cs = C2D_R_SQRT((1 - sn) * (1 + sn));
-    vn = c2d_normal_speed(&c->normal, &zero, len, &zero, &d->vel);
+    vn = c2d_normal_speed(&c->normal, &zero, len, nx, ny, &zero, &d->vel);
     if (!(cs * vn > 0)) return C2D_SEPARATING;
     vt = d->vel.y * nx - d->vel.x * ny;
     wn = d->spin[0] * nx + d->spin[1] * ny;
