@@ -11,8 +11,9 @@
  *                          make bench-sphere runs both under callgrind with
  *                          --toggle-collect on the call and prints Ir/call.
  *
- * Measured (x86-64, gcc 12 -O2, 2026-12-02, N = 100,000): see the README's
- * sphere section and docs; the figures are printed, not asserted. */
+ * Measured (x86-64, gcc 12.2 -O2, 2026-12-02, N = 100,000; docs/API.md):
+ * accuracy worst 4.87 ulp (library) and 6.31 (plain), median 0.40 both;
+ * 716 instructions per call against 248: 2.89x.  Printed, not asserted. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -11,8 +11,10 @@
  *   moving disks.  Double, float and Q16.16 fixed-point variants, plus batch
  *   entry points over structure-of-arrays data.  For scenes that need them
  *   (a pool table, granular matter): friction and spin at contact
- *   (c2d_collide_rough, Walton's rough disks) and the time of impact under
- *   constant acceleration (c2d_time_of_impact_accel); a scene pays only for
+ *   (c2d_collide_rough, Walton's rough disks), pool balls as spheres with
+ *   three-component spin and cushions above the centre (c2d_collide_balls,
+ *   c2d_collide_cushion) and the time of impact under constant
+ *   acceleration (c2d_time_of_impact_accel); a scene pays only for
  *   the model it calls.  Axis-aligned impacts are correctly rounded (an
  *   equal-mass swap and a wall's sign flip are exact).
  *
