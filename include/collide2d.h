@@ -315,7 +315,9 @@ typedef struct c2d_ball_surface { double restitution, friction, friction_boost, 
  *                normal part exactly as c2d_collide; C2D_INVALID also for a
  *                NaN/Inf spin or radius, radius < 0, inertia <= 0 or NaN, a
  *                surface field outside its range; C2D_RANGE also when a
- *                slip speed, normal impulse or output is beyond DBL_MAX.  Same
+ *                slip speed, normal impulse, R/I, R^2/I or an output is
+ *                beyond DBL_MAX (the friction part is plain arithmetic), or
+ *                would be NaN from such an overflow.  Same
  *                priority; a == b is C2D_DEGENERATE; nothing is written
  *                unless C2D_OK.
  *   identities   friction = friction_boost = 0: c2d_collide's velocities bit
@@ -358,7 +360,8 @@ typedef struct c2d_cushion { c2d_vec2 normal; double height, restitution, fricti
  *                [R, 2R], restitution or friction outside its range;
  *                C2D_DEGENERATE for a zero normal; C2D_SEPARATING when
  *                v.n^ <= 0 (or height = 2R); C2D_RANGE when the normal
- *                impulse, the slip or an output is beyond DBL_MAX.  Priority
+ *                impulse, the slip, R/I or an output is beyond DBL_MAX (or
+ *                NaN from such an overflow).  Priority
  *                INVALID > DEGENERATE > SEPARATING > RANGE > OK; nothing is
  *                written unless C2D_OK.
  *   identities   height = R and wx = wy = 0: c2d_collide_rough_normal against

@@ -10,5 +10,5 @@
 #include "../../lib/real/double.h"
 
 #define EXP_PREC 53
-#define EXP_NAME "test_exp_neg"
+#define EXP_NAME "exp_neg"
 #include "exp_neg_check.h"

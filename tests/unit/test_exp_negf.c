@@ -10,5 +10,5 @@
 #include "../../lib/real/float.h"
 
 #define EXP_PREC 24
-#define EXP_NAME "test_exp_negf"
+#define EXP_NAME "exp_negf"
 #include "exp_neg_check.h"

@@ -12,6 +12,7 @@
 /* The cushion's: at most ten roundings, each of a term within twice the
  * ball's scale, on the way to an output, plus the unit normal's (the header's bound) */
 #define CUSHION_BOUND_ULP 16.0
+#define SPHERE_ANY_BITS_OK 38421 /* the seeded stream's OK calls (test_any_bits_...) */
 #define SPHERE_ENERGY_CHECKED 18748 /* the seeded stream's finite pairs (test_energy_never_grows...) */
 
 static void print_ball(const char *name, const ref_ball *d)
@@ -443,6 +444,57 @@ static void test_a_rolling_ball_into_a_rail_loses_topspin_as_derived(void **stat
     assert_close(a2.vel.x, -e * v, 16 * DBL_EPSILON);
 }
 
+/* A double from random bits: any exponent, NaN and Inf included, or (half
+ * the time) a plausible value, so some calls get through to C2D_OK. */
+static double any_double(c2d_rng *r)
+{
+    uint64_t u = c2d_rng_next(r);
+    double x;
+    if (u & 1) return c2d_rng_range(r, -2, 2);
+    memcpy(&x, &u, sizeof x);
+    return x;
+}
+
+static void any_ball(c2d_rng *r, c2d_ball *d)
+{
+    d->pos.x = any_double(r), d->pos.y = any_double(r), d->vel.x = any_double(r), d->vel.y = any_double(r);
+    d->spin[0] = any_double(r), d->spin[1] = any_double(r), d->spin[2] = any_double(r);
+    d->mass = fabs(any_double(r)), d->radius = fabs(any_double(r)), d->inertia = fabs(any_double(r));
+}
+
+/* Whatever the bits: never a NaN or Inf written, and nothing written
+ * unless C2D_OK.  The count of OK calls is what the seeded stream gives. */
+static void test_any_bits_never_write_nan_and_leave_refused_balls_untouched(void **state)
+{
+    int i, k, ok = 0;
+    c2d_rng r;
+    (void)state;
+    r.s = 91;
+    for (i = 0; i < 200000; i++) {
+        c2d_ball a, b, a0, b0;
+        c2d_ball_surface s;
+        c2d_cushion c;
+        c2d_status st;
+        any_ball(&r, &a), any_ball(&r, &b);
+        s.restitution = c2d_rng_unit(&r), s.friction = fabs(any_double(&r)), s.friction_boost = fabs(any_double(&r));
+        s.friction_decay = fabs(any_double(&r));
+        c.normal.x = any_double(&r), c.normal.y = any_double(&r), c.restitution = c2d_rng_unit(&r);
+        c.friction = fabs(any_double(&r)), c.height = a.radius * (1 + c2d_rng_unit(&r));
+        a0 = a, b0 = b;
+        st = i % 2 ? c2d_collide_balls(&a, &b, s) : c2d_collide_cushion(&a, c);
+        if (st != C2D_OK) {
+            assert_memory_equal(&a, &a0, sizeof a);
+            assert_memory_equal(&b, &b0, sizeof b);
+            continue;
+        }
+        for (k = 0; k < 3; k++) assert_true(isfinite(a.spin[k]) && (i % 2 == 0 || isfinite(b.spin[k])));
+        assert_true(isfinite(a.vel.x) && isfinite(a.vel.y));
+        assert_true(i % 2 == 0 || (isfinite(b.vel.x) && isfinite(b.vel.y))); /* b is the cushion's bystander */
+        ok++;
+    }
+    assert_cases_checked(ok, SPHERE_ANY_BITS_OK);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -457,6 +509,7 @@ int main(void)
         cmocka_unit_test(test_frictionless_balls_are_c2d_collide_bit_for_bit),
         cmocka_unit_test(test_bad_fields_are_invalid_in_priority_and_untouched),
         cmocka_unit_test(test_a_rolling_ball_into_a_rail_loses_topspin_as_derived),
+        cmocka_unit_test(test_any_bits_never_write_nan_and_leave_refused_balls_untouched),
     };
-    return c2d_run_tests("test_sphere", tests);
+    return c2d_run_tests("sphere", tests);
 }
