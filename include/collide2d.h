@@ -337,7 +337,9 @@ typedef struct c2d_ball_surface { double restitution, friction, friction_boost, 
  *                ball brushed by a much faster one gets an error of the fast
  *                one's scale.
  *   cost         c2d_collide's plus ~100 floating-point operations (exp
- *                adds ~40 when friction_boost != 0); no tiers. */
+ *                adds ~40 when friction_boost != 0), exact products for a
+ *                glancing normal speed only: 716 instructions per pool pair
+ *                against 248 for a plain transcription (make bench-sphere). */
 c2d_status c2d_collide_balls(c2d_ball *a, c2d_ball *b, c2d_ball_surface s);
 
 /* A cushion (rail): normal = any finite non-zero horizontal vector from the
