@@ -168,7 +168,7 @@ TEST_SRCS := $(wildcard tests/unit/test_*.c tests/vectors/test_*.c)
 TEST_BINS := $(patsubst %.c,$(B)/tests/%,$(notdir $(TEST_SRCS)))
 HARNESS_SRC := $(wildcard tests/harness/*.c)
 VECTORS_SRC := tests/vectors/vectors.c $(wildcard tests/vectors/check_*.c)
-TEST_SUPPORT := referee/referee.c referee/cases.c referee/ref_rough.c referee/cases_rough.c referee/ref_toi_accel.c referee/cases_toi_accel.c $(VECTORS_SRC) $(HARNESS_SRC)
+TEST_SUPPORT := referee/referee.c referee/cases.c referee/ref_rough.c referee/cases_rough.c referee/ref_sphere.c referee/cases_sphere.c referee/ref_toi_accel.c referee/cases_toi_accel.c $(VECTORS_SRC) $(HARNESS_SRC)
 TEST_INC := -Ireferee -Itests/harness -Itests/unit -Itests/vectors
 
 check-deps-test:

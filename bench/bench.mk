@@ -125,6 +125,26 @@ bench-world-ir: $(BENCH_DIR)/world
 
 TEST_TARGETS += test-bench
 
+# ------------------------------------------------------------------ sphere
+# Pool balls as spheres (bench/sphere.c): accuracy of the library and of a
+# plain transcription against the MPFR referee, and instructions per call
+# of each under callgrind (printed; the figures are quoted in the README).
+.PHONY: bench-sphere
+BENCH_SPHERE_N := 100000
+$(BENCH_DIR)/sphere: bench/sphere.c referee/cases_sphere.c referee/ref_sphere.c $(STATIC)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Wno-conversion -Ireferee -o $@ bench/sphere.c referee/cases_sphere.c referee/ref_sphere.c $(STATIC) -lmpfr -lgmp -lm
+
+bench-sphere: $(BENCH_DIR)/sphere
+	$(BENCH_DIR)/sphere accuracy $(BENCH_SPHERE_N)
+	@for w in lib:c2d_collide_balls plain:sphere_plain; do f=$${w#*:}; w=$${w%%:*}; \
+	  valgrind --tool=callgrind --callgrind-out-file=$(BENCH_DIR)/sphere.$$w.cg --toggle-collect=$$f \
+	    $(BENCH_DIR)/sphere $$w $(BENCH_SPHERE_N) >/dev/null 2>&1 || exit 1; \
+	  ir=$$(sed -n 's/^summary: //p' $(BENCH_DIR)/sphere.$$w.cg); \
+	  echo "$$w: $$ir instructions over $(BENCH_SPHERE_N) calls: $$((ir / $(BENCH_SPHERE_N))) per call"; \
+	done
+
+
 # ---------------------------------------------------------- energy bias
 # Is the energy error of e = 1 impacts a bias?  10^8 random impacts (about a
 # minute): mean dE/E and its standard error, overall and with |n|^2 near a
