@@ -25,6 +25,11 @@ const char kUsage[] =
     "                              surface being [0,2.54] x [0,1.27]; may repeat; only\n"
     "                              the placed balls are on the table\n"
     "  --seed N                    rack order / gas start (default 1)\n"
+    "  --check full|sample|off     the frame checker (tunnelling, overlap, escapes,\n"
+    "                              energy): full checks every pair near another each\n"
+    "                              frame (default); sample the pairs of every m-th\n"
+    "                              ball, m = ceil(N/1024), from a seeded offset drawn\n"
+    "                              each frame, the rest whole; off checks nothing\n"
     "  --headless                  no window (automatic without a display)\n"
     "  --game practice|8ball       practice: clear the table (the window's default);\n"
     "                              8ball: two players, WPA-style rules\n"
@@ -115,7 +120,8 @@ unsigned long long parse_unsigned(const std::string &flag, const std::string &te
 bool takes_value(const std::string &flag) {
     static const char *const options[] = {"--scene",   "--response", "--balls",  "--place",      "--seed",
                                           "--game",    "--players",  "--seconds", "--shot",      "--events",
-                                          "--trace",   "--speeds",   "--screenshot", "--screenshot-window"};
+                                          "--trace",   "--speeds",   "--screenshot", "--screenshot-window",
+                                          "--check"};
     for (const char *o : options)
         if (flag == o) return true;
     return false;
@@ -261,6 +267,12 @@ Options parse(int argc, char **argv) {
             o.config.placements.push_back(parse_place(value()));
         } else if (flag == "--seed") {
             o.config.seed = parse_unsigned(flag, value());
+        } else if (flag == "--check") {
+            const std::string v = value();
+            if (v == "full") o.config.check = CheckMode::Full;
+            else if (v == "sample") o.config.check = CheckMode::Sample;
+            else if (v == "off") o.config.check = CheckMode::Off;
+            else fail("--check: unknown mode '" + v + "' (full, sample or off)");
         } else if (flag == "--game") {
             const std::string v = value();
             if (v == "practice") o.game = GameMode::Practice;

@@ -190,6 +190,10 @@ const char *scene_name(Scene s) {
 }
 const char *response_name(Response r) { return r == Response::Box2d ? "box2d" : "collide2d"; }
 
+const char *check_name(demo::CheckMode m) {
+    return m == demo::CheckMode::Full ? "full" : m == demo::CheckMode::Sample ? "sample" : "off";
+}
+
 void print_model(const Simulation &sim) {
     const demo::SimConfig &c = sim.config();
     const demo::Model &m = c.model;
@@ -252,6 +256,8 @@ void print_json(const Simulation &sim, const Totals &t) {
                 t.wall_seconds, sim.balls_total(), s.ball_ball_collisions, s.cushion_collisions, s.pocketed,
                 s.scratches, s.escaped, s.tunnelled, s.max_overlap, t.energy_start, t.energy_end, t.momentum_start[0],
                 t.momentum_start[1], t.momentum_end[0], t.momentum_end[1]);
+    std::printf("\"check\":\"%s\",\"checked_pairs\":%ld,\"max_energy_step\":%.17g,", check_name(sim.config().check),
+                s.checked_pairs, s.max_energy_step);
     print_model(sim);
     std::printf(",");
     print_balls(sim.balls());
@@ -270,8 +276,10 @@ void print_summary(const Simulation &sim, const Totals &t) {
     std::printf("  collisions: %ld ball-ball, %ld cushion; pocketed %d (+%d cue ball), on the table %d\n",
                 s.ball_ball_collisions, s.cushion_collisions, s.pocketed, s.scratches,
                 sim.balls_total() - s.pocketed - s.scratches);
-    std::printf("  escaped %d, tunnelled pairs %ld, worst overlap %.3g%% of a diameter\n", s.escaped, s.tunnelled,
-                100 * s.max_overlap);
+    std::printf("  checked %s (%ld pairs): escaped %d, tunnelled pairs %ld, worst overlap %.3g%% of a diameter, "
+                "largest energy step %.3g\n",
+                check_name(sim.config().check), s.checked_pairs, s.escaped, s.tunnelled, 100 * s.max_overlap,
+                s.max_energy_step);
     std::printf("  kinetic energy %.6g J -> %.6g J (%+.3g relative)\n", t.energy_start, t.energy_end, drift);
     std::printf("  momentum (%.6g, %.6g) -> (%.6g, %.6g) kg m/s\n", t.momentum_start[0], t.momentum_start[1],
                 t.momentum_end[0], t.momentum_end[1]);

@@ -137,13 +137,9 @@ void Checker::bound_paths(const std::vector<Ball> &before, const std::vector<Bal
 // Candidate pairs come from a uniform grid, not from Box2D, so the check
 // shares nothing with the engines.  Cells are at least as wide as the
 // largest path box: boxes that overlap sit in the same or neighbouring
-// cells, so each ball looks at its own cell's later balls and at all balls
-// of the four neighbours that follow its cell (east, and the three above):
-// every neighbouring pair of cells once.  The boxes are copied out in cell
-// order, so the scan reads memory in order.  A pair is visited lower index
-// first.
-template <typename Visit>
-void Checker::for_each_close_pair(Visit visit) {
+// cells.  The boxes are copied out in cell order, so the scan reads memory
+// in order.  No ball live: no cells (nx_ = 0).
+void Checker::build_grid() {
     const size_t n = box_.size();
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, cell = kBallDiameter;
     for (size_t i = 0; i < n; ++i) {
@@ -152,9 +148,17 @@ void Checker::for_each_close_pair(Visit visit) {
         x0 = std::min(x0, b.x0), y0 = std::min(y0, b.y0), x1 = std::max(x1, b.x1), y1 = std::max(y1, b.y1);
         cell = std::max(cell, std::max(b.x1 - b.x0, b.y1 - b.y0));
     }
-    if (!(x0 <= x1)) return;
+    if (!(x0 <= x1)) {
+        nx_ = ny_ = 0;
+        return;
+    }
     cell = std::max(cell, std::max(x1 - x0, y1 - y0) / 2048);  // bounded grid, whatever the spread
-    const size_t nx = static_cast<size_t>((x1 - x0) / cell) + 1, ny = static_cast<size_t>((y1 - y0) / cell) + 1;
+    // about two balls a cell: a sparse gas would otherwise have more cells
+    // than balls, and scanning empty cells cost more than testing boxes
+    cell = std::max(cell, std::sqrt(2 * (x1 - x0) * (y1 - y0) / static_cast<double>(n)));
+    gx0_ = x0, gy0_ = y0, cell_ = cell;
+    nx_ = static_cast<size_t>((x1 - x0) / cell) + 1, ny_ = static_cast<size_t>((y1 - y0) / cell) + 1;
+    const size_t nx = nx_, ny = ny_;
     cell_of_.resize(n);
     cell_start_.assign(nx * ny + 1, 0);
     auto cell_x = [&](const Box &b) { return std::min(nx - 1, static_cast<size_t>((0.5 * (b.x0 + b.x1) - x0) / cell)); };
@@ -173,6 +177,16 @@ void Checker::for_each_close_pair(Visit visit) {
             by_cell_[fill_[cell_of_[i]]] = i;
             cell_box_[fill_[cell_of_[i]]++] = box_[i];
         }
+}
+
+// Every pair of the grid whose boxes overlap, once, lower index first: each
+// ball looks at its own cell's later balls and at all balls of the four
+// neighbours that follow its cell (east, and the three above), every
+// neighbouring pair of cells once.
+template <typename Visit>
+void Checker::for_each_close_pair(Visit visit) {
+    build_grid();
+    const size_t nx = nx_, ny = ny_;
     // east, north-west, north, north-east: (dx, dy)
     static const int kForward[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
     auto pair = [&](size_t a, size_t b) {
@@ -196,6 +210,52 @@ void Checker::for_each_close_pair(Visit visit) {
         }
 }
 
+// This frame's sample (checker.h): every stride_-th ball from offset_, the
+// offset drawn from the seed and the frame's number (splitmix64), so a run
+// checks the same balls every time.
+void Checker::choose_sample(size_t n) {
+    stride_ = std::max<size_t>(1, (n + kSampledBalls - 1) / kSampledBalls);
+    Rng rng(seed_ ^ (0x5851f42d4c957f2dULL * ++frame_));
+    offset_ = static_cast<size_t>(rng.next() % stride_);
+}
+
+// Every pair with a sampled ball whose boxes overlap, once (lower index
+// first): each sampled ball against the balls of the 3 x 3 cells around its
+// own; a pair of two sampled balls is taken from the lower one.
+template <typename Visit>
+void Checker::for_each_sampled_pair(Visit visit) {
+    build_grid();
+    if (nx_ == 0) return;
+    auto sampled = [&](size_t i) { return i % stride_ == offset_; };
+    for (size_t i = offset_; i < box_.size(); i += stride_) {
+        if (!live_[i]) continue;
+        const size_t own = cell_of_[i], cx = own % nx_, cy = own / nx_;
+        const Box &bi = box_[i];
+        for (size_t y = cy > 0 ? cy - 1 : 0; y <= std::min(ny_ - 1, cy + 1); ++y)
+            for (size_t x = cx > 0 ? cx - 1 : 0; x <= std::min(nx_ - 1, cx + 1); ++x) {
+                const size_t c = y * nx_ + x;
+                for (size_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+                    const size_t j = by_cell_[k];
+                    const Box &bj = cell_box_[k];
+                    if (j == i || (sampled(j) && j < i)) continue;
+                    if (!(bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1)) continue;
+                    if (i < j) visit(i, j, bi, bj);
+                    else visit(j, i, bj, bi);
+                }
+            }
+    }
+}
+
+// Friction only takes energy; the lossless scenes keep it to rounding.
+void Checker::check_energy(const std::vector<Ball> &before, const std::vector<Ball> &after, Stats &stats) const {
+    double e0 = 0, e1 = 0;
+    for (const Ball &b : before) e0 += energy(b);
+    for (const Ball &b : after) e1 += energy(b);
+    if (e0 <= 0) return;
+    const double change = (e1 - e0) / e0;
+    stats.max_energy_step = std::max(stats.max_energy_step, lossless_ ? std::fabs(change) : change);
+}
+
 void Checker::count_escaped(const std::vector<Ball> &after, const Table &table, Stats &stats) {
     escaped_.resize(after.size(), 0);
     for (size_t i = 0; i < after.size(); ++i) {
@@ -210,6 +270,7 @@ void Checker::count_escaped(const std::vector<Ball> &after, const Table &table, 
 
 void Checker::check_frame(const std::vector<Ball> &before, const std::vector<Ball> &after, FrameLog &log,
                           const Table &table, double dt, Stats &stats) {
+    if (mode_ == CheckMode::Off) return;
     index_waypoints(log, after.size());
     bound_paths(before, after);
     for (size_t i = 0; i < after.size(); ++i)
@@ -219,15 +280,23 @@ void Checker::check_frame(const std::vector<Ball> &before, const std::vector<Bal
     auto path = [&](size_t i) {
         return Path{&before[i], &after[i], points_.data() + first_[i], points_.data() + first_[i + 1], dt};
     };
-    for_each_close_pair([&](size_t i, size_t j, const Box &bi, const Box &bj) {
+    auto check_pair = [&](size_t i, size_t j, const Box &bi, const Box &bj) {
+        ++stats.checked_pairs;
         const double gap = std::hypot(bj.x - bi.x, bj.y - bi.y);
         stats.max_overlap = std::max(stats.max_overlap, (kBallDiameter - gap) / kBallDiameter);
         // crossed: came into contact during the frame and is out the other side
         if (gap > kBallDiameter && entered(path(i), path(j), cuts_) &&
             !std::binary_search(resolved.begin(), resolved.end(), pair_key(static_cast<int>(i), static_cast<int>(j))))
             ++stats.tunnelled;
-    });
+    };
+    if (mode_ == CheckMode::Full) {
+        for_each_close_pair(check_pair);
+    } else {
+        choose_sample(after.size());
+        for_each_sampled_pair(check_pair);
+    }
     count_escaped(after, table, stats);
+    check_energy(before, after, stats);
 }
 
 }  // namespace demo

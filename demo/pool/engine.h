@@ -36,6 +36,8 @@ struct Stats {
     long tunnelled = 0;
     double max_overlap = 0;       // fraction of a diameter
     long event_cap_frames = 0;    // frames whose event budget ran out
+    long checked_pairs = 0;       // pairs the checker looked at (checker.h)
+    double max_energy_step = 0;   // the checker's largest relative energy change between frames
 };
 
 // Where a ball's motion changes inside a frame, and the motion from there on:

@@ -8,6 +8,7 @@
 
 #include "pool/box2d_engine.h"
 #include "pool/exact_engine.h"
+#include "pool/world_engine.h"
 
 namespace demo {
 
@@ -15,6 +16,7 @@ namespace {
 
 std::unique_ptr<Engine> make_engine(const SimConfig &config, const std::vector<Ball> &balls, const Table &table) {
     if (config.response == Response::Box2d) return make_box2d_engine(balls, table, config.model);
+    if (world_engine_runs(table, config.model)) return make_world_engine(balls, table, config.model);
     // the gas's many even balls: a uniform grid finds candidates faster than
     // Box2D's tree (broadphase.h); the pool scenes keep the tree
     return make_exact_engine(balls, table, config.model, config.scene == Scene::Gas);
@@ -38,7 +40,8 @@ Event strike_cue(Engine &engine, int cue, const Shot &shot) {
 
 }  // namespace
 
-Simulation::Simulation(const SimConfig &config) : config_(config) {
+Simulation::Simulation(const SimConfig &config)
+    : config_(config), checker_(config.check, config.seed, !config.model.friction) {
     const int count = config.scene == Scene::Cradle ? config.cradle_balls : config.gas_balls;
     const Setup start = set_up(config.scene, config.table, count, config.seed, config.placements);
     table_ = start.table;
@@ -99,12 +102,13 @@ void Simulation::momentum(double out[2]) const {
 }
 
 void Simulation::step() {
-    const std::vector<Ball> before = balls();
+    const bool checked = checker_.mode() != CheckMode::Off;
+    if (checked) before_ = balls();
     frame_log_.contacts.clear();
     frame_log_.waypoints.clear();
     frame_log_.events.clear();
     engine_->step(kFrameDt, stats_, frame_log_);
-    checker_.check_frame(before, balls(), frame_log_, table_, kFrameDt, stats_);
+    if (checked) checker_.check_frame(before_, balls(), frame_log_, table_, kFrameDt, stats_);
     frame_events_.swap(strikes_);
     strikes_.clear();
     frame_events_.insert(frame_events_.end(), frame_log_.events.begin(), frame_log_.events.end());

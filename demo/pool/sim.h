@@ -69,6 +69,7 @@ struct SimConfig {
     Model model = kPoolModel;
     TableSpec table;                     // table.h: size and pocket geometry
     std::vector<Placement> placements;   // break, elastic: only these balls
+    CheckMode check = CheckMode::Full;   // how much of each frame the checker checks (checker.h)
     // The scene with the physics that goes with it.
     void set_scene(Scene s) {
         scene = s;
@@ -121,6 +122,7 @@ private:
     std::unique_ptr<Engine> engine_;
     FrameLog frame_log_;
     std::vector<Event> frame_events_, strikes_;
+    std::vector<Ball> before_;  // the balls at the frame's start, for the checker
     Stats stats_;
     Checker checker_;
 };

@@ -16,7 +16,8 @@ check() { if [ "$2" = 0 ]; then c2d_passed; echo "ok - $1"; else c2d_failed "$1"
 
 # --- the layers (demo/demo.mk): pool/ (the simulation) <- game/ (8-ball) <-
 # app/ (the program); tests/ test pool/ and game/ (and share tests/check.h).
-# Every include of ours names its layer ("pool/sim.h"; collide2d.h aside)
+# Every include of ours names its layer ("pool/sim.h"; the library's
+# collide2d.h and collide2d_world.h aside)
 # and a layer includes only itself and the layers below it; pool/, game/
 # and tests/ use no SDL (they are compiled and linked without it).
 # layer_check LAYER "ALLOWED LAYERS" SDL(yes|no): prints each violation, and
@@ -40,7 +41,7 @@ layer_check() {
             top = name
             if (!sub(/\/.*$/, "", top)) top = ""
             if (top ~ /^(pool|game|app|tests|tools)$/) { if (index(allowed, " " top " ") == 0) bad("includes from " top "/") }
-            else if (quote == "\"" && name != "collide2d.h") bad("an include of ours without its layer")
+            else if (quote == "\"" && name !~ /^collide2d(_world)?\.h$/) bad("an include of ours without its layer")
             if (sdl == "no" && name ~ /SDL/) bad("SDL")
         }
         sdl == "no" && /SDL_[A-Za-z]/ && !/^[ \t]*#[ \t]*include/ { bad("SDL") }
@@ -67,7 +68,8 @@ awk -v d="$drift" 'BEGIN { exit !(d < 1e-9) }'; check "elastic energy drift < 1e
 [ "$(json_get "$TMP/elastic.json" tunnelled)" = 0 ]; check "elastic tunnelled 0" $?
 awk -v o="$(json_get "$TMP/elastic.json" max_overlap)" 'BEGIN { exit !(o < 1e-9) }'; check "elastic max_overlap < 1e-9" $?
 for key in scene response steps sim_seconds wall_seconds balls ball_ball_collisions cushion_collisions pocketed \
-           escaped tunnelled max_overlap energy_start energy_end momentum_start momentum_end; do
+           escaped tunnelled max_overlap energy_start energy_end momentum_start momentum_end check checked_pairs \
+           max_energy_step; do
     grep -q "\"$key\":" "$TMP/elastic.json" || { echo "    missing key $key"; key=missing; break; }
 done
 [ "$key" != missing ] && [ "$(wc -l < "$TMP/elastic.json")" = 1 ]; check "JSON has every key, one object" $?
@@ -138,6 +140,9 @@ bad --scene cradle --balls 21
 bad --scene cradle --balls 0
 bad --scene cradle --place 0,1,0.6
 bad --scene elastic --balls 5
+bad --check bogus
+bad --check
+bad --check ""
 bad --trace ""
 bad --events ""
 bad --events /nonexistent-dir/events.csv
@@ -181,7 +186,7 @@ check "--seconds 0 is no underflow" $?
 # --- repeated options: --place and --shot accumulate, the
 # switches (--headless, --json) may repeat; any other option taking a value
 # given twice is an error naming it, and nothing is written
-for opt in "--scene break" "--response box2d" "--balls 5" "--seed 3" "--game 8ball" "--players computer,computer" \
+for opt in "--scene break" "--response box2d" "--balls 5" "--seed 3" "--check sample" "--game 8ball" "--players computer,computer" \
            "--seconds 1" "--events $TMP/twice1.csv" "--trace $TMP/twice2.csv" "--speeds $TMP/twice3.txt" \
            "--screenshot $TMP/twice4.png" "--screenshot-window $TMP/twice5.png"; do
     # shellcheck disable=SC2086
@@ -334,6 +339,36 @@ awk -v d="$d_relaxed" -v b="$bound" 'BEGIN { exit !(d < b) }'; check "gas speeds
 awk -v d="$d_start" -v b="$bound" 'BEGIN { exit !(d > b) }'; check "KS rejects the non-equilibrium start" $?
 [ "$(json_get "$TMP/gas.json" tunnelled)" = 0 ] && [ "$(json_get "$TMP/gas.json" escaped)" = 0 ]
 check "gas tunnelled 0, escaped 0" $?
+
+# --- --check full|sample|off (checker.h).  The JSON says which ran; off
+# checks no pair; sample checks the pairs of every m-th ball, m = ceil(N /
+# 1024), so up to 1,024 disks it is full, and beyond it sees each pair's
+# fault with probability 1 - (1 - 1/m)^2.  Box2D's own solver tunnels in a
+# 3,000-disk gas (m = 3): sample must see 5/9 of what full sees, within 5
+# binomial standard deviations.
+bad_says "--check: unknown mode 'all' (full, sample or off)" --check all
+json_str() { sed -n "s/.*\"$2\":\"\([^\"]*\)\".*/\1/p" "$1"; }
+[ "$(json_str "$TMP/gas.json" check)" = full ]; check "--check is full by default, and the JSON says so" $?
+"$BIN" --headless --scene gas --balls 2000 --seconds 10 --check off --speeds "$TMP/off.txt" --json > "$TMP/gas_off.json"
+[ "$(json_str "$TMP/gas_off.json" check)" = off ] && [ "$(json_get "$TMP/gas_off.json" checked_pairs)" = 0 ] &&
+    cmp -s "$TMP/off.txt" "$TMP/relaxed.txt"
+check "--check off checks nothing and changes nothing of the run" $?
+"$BIN" --headless --scene gas --balls 1000 --seconds 5 --check full --json > "$TMP/gas_full.json"
+"$BIN" --headless --scene gas --balls 1000 --seconds 5 --check sample --json > "$TMP/gas_sample.json"
+[ "$(json_str "$TMP/gas_sample.json" check)" = sample ] &&
+    [ "$(json_get "$TMP/gas_sample.json" checked_pairs)" = "$(json_get "$TMP/gas_full.json" checked_pairs)" ] &&
+    [ "$(json_get "$TMP/gas_sample.json" checked_pairs)" -gt 0 ]
+check "--check sample of 1,000 disks checks every pair full does" $?
+"$BIN" --headless --scene gas --balls 3000 --seconds 10 --response box2d --check full --json > "$TMP/b2_full.json"
+"$BIN" --headless --scene gas --balls 3000 --seconds 10 --response box2d --check sample --json > "$TMP/b2_sample.json"
+full=$(json_get "$TMP/b2_full.json" tunnelled)
+sampled=$(json_get "$TMP/b2_sample.json" tunnelled)
+echo "    Box2D gas, 3000 disks: full sees $full tunnelled pairs, sample $sampled (expected 5/9 of full)"
+awk -v f="$full" -v s="$sampled" 'BEGIN { p = 5 / 9; sd = sqrt(f * p * (1 - p)); exit !(f > 0 && s >= f * p - 5 * sd && s <= f * p + 5 * sd) }'
+check "--check sample sees 5/9 of Box2D's tunnelling at m = 3" $?
+"$BIN" --headless --scene gas --balls 3000 --seconds 10 --check sample --json > "$TMP/gas3k.json"
+[ "$(json_get "$TMP/gas3k.json" tunnelled)" = 0 ] && [ "$(json_get "$TMP/gas3k.json" checked_pairs)" -gt 0 ]
+check "--check sample: the world's gas of 3,000 disks tunnels nowhere" $?
 
 # --- Newton's cradle: a head-on cue ball into N touching balls on the
 # lossless table.  Textbook: the last ball leaves at v, the cue ball and the

@@ -1,0 +1,26 @@
+/* SPDX-License-Identifier: MIT */
+// world_engine.h - the engine on the library's event-driven world
+// (collide2d_world.h): the world keeps every ball's exact motion, orders the
+// events and resolves the impacts; this engine only sets the scene up in it,
+// advances it a frame at a time and turns the world's events into the
+// demo's records (events.h) and the checker's view (engine.h: the pairs
+// resolved and the waypoints where paths bend).
+#ifndef C2D_DEMO_WORLD_ENGINE_H
+#define C2D_DEMO_WORLD_ENGINE_H
+
+#include <memory>
+#include <vector>
+
+#include "pool/engine.h"
+
+namespace demo {
+
+// Whether make_world_engine runs this model on this table: the frictionless
+// scenes in a closed box (elastic, gas, cradle).
+bool world_engine_runs(const Table &table, const Model &model);
+
+std::unique_ptr<Engine> make_world_engine(const std::vector<Ball> &balls, const Table &table, const Model &model);
+
+}  // namespace demo
+
+#endif
