@@ -315,7 +315,7 @@ static c2d_vec2 c2d_w_pair_shift(const c2d_world *w, const c2d_w_disk *p, const 
     if (!w->periodic) return shift;
     if (c2d_w_curved(w, p, q)) {
         c2d_body a, b;
-        c2d_w_pair_start(w, p, q, &a, &b, &shift);
+        (void)c2d_w_pair_start(w, p, q, &a, &b, &shift); /* only the shift is wanted */
     } else {
         const double t0 = p->t > q->t ? p->t : q->t, sp = t0 - p->t, sq = t0 - q->t;
         shift.x = c2d_w_image_shift((q->x + q->vx * sq) - (p->x + p->vx * sp), w->width);
