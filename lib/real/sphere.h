@@ -280,7 +280,6 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     jn = gn < 0 ? -(1 + s->restitution) * gn / inv_mn : 0;
     if (!c2d_finite4(g, jn, inv_mt, 0)) return C2D_RANGE;
     if (g == 0 || jn == 0) {
-        lam = 0;
         f = 0;
     } else {
         lam = c2d_friction_size(c2d_ball_friction(s, g), jn, g / inv_mt);

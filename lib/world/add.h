@@ -11,7 +11,7 @@ static void c2d_w_set_box(c2d_world *w, uint32_t i, int moved)
     c2d_world_box box;
     c2d_w_body_at(p, w->now, &b);
     if (w->periodic) b.pos.x = c2d_w_wrap(b.pos.x, w->width), b.pos.y = c2d_w_wrap(b.pos.y, w->height);
-    w->box[2 * i] = b.pos.x, w->box[2 * i + 1] = b.pos.y;
+    w->box[2 * (size_t)i] = b.pos.x, w->box[2 * (size_t)i + 1] = b.pos.y;
     c2d_w_box_of(w, p, b.pos.x, b.pos.y, &box);
     if (box.hi.x - b.pos.x > w->hmax) w->hmax = box.hi.x - b.pos.x;
     if (moved) w->bp.move(w->bp.user, i, &box);

@@ -646,7 +646,7 @@ static void c2d_w_query_images(const c2d_world *w, const c2d_world_box *box, c2d
 static void c2d_w_predict_caller(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best)
 {
     const c2d_w_disk *p = &w->disk[i];
-    const double m = c2d_w_margin(w, p), bx = w->box[2 * i], by = w->box[2 * i + 1];
+    const double m = c2d_w_margin(w, p), bx = w->box[2 * (size_t)i], by = w->box[2 * (size_t)i + 1];
     double fx = 0, fy = 0;
     c2d_world_box box;
     c2d_w_query ctx;
