@@ -256,7 +256,7 @@ static void c2d_ball_friction_apply(c2d_ball_out *o, const c2d_real_vec *v_norma
 static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_body *ta,
                                      const c2d_real_body *tb, const c2d_real_ball_surface *s)
 {
-    c2d_real nx, ny, gn, gt, gz, g, qa, qb, ima, imb, inv_mn, inv_mt, lam, len, jn, f;
+    c2d_real nx, ny, gn, gt, gz, g, qa, qb, ima, imb, inv_mn, inv_mt, len, jn, f;
     c2d_real dvx = b->vel.x - a->vel.x, dvy = b->vel.y - a->vel.y;
     c2d_real_vec dh, dl;
     c2d_ball_out oa, ob;
@@ -282,8 +282,7 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     if (g == 0 || jn == 0) {
         f = 0;
     } else {
-        lam = c2d_friction_size(c2d_ball_friction(s, g), jn, g / inv_mt);
-        f = lam / g;
+        f = c2d_friction_size(c2d_ball_friction(s, g), jn, g / inv_mt) / g;
     }
     c2d_ball_friction_apply(&oa, &ta->vel, a, ima, qa, nx, ny, -f * gt, -f * gz, -1);
     c2d_ball_friction_apply(&ob, &tb->vel, b, imb, qb, nx, ny, -f * gt, -f * gz, 1);
@@ -340,7 +339,7 @@ static void c2d_cushion_apply(c2d_ball_out *o, const c2d_real_ball *d, c2d_real 
 
 static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cushion *c)
 {
-    c2d_real nx, ny, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, lam, f, len;
+    c2d_real nx, ny, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, f, len;
     c2d_real_vec zero = {0, 0};
     c2d_ball_out o;
     if (d == NULL || !c2d_ball_valid(d) || !c2d_cushion_valid(c, d)) return C2D_INVALID;
@@ -361,9 +360,9 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     if (sl == 0) {
         f = 0;
     } else {
-        lam = c2d_friction_size(c->friction, pn, sl / (1 / d->mass + d->radius * d->radius *
-                                                               c2d_sphere_inverse(d->inertia)));
-        f = lam / sl;
+        f = c2d_friction_size(c->friction, pn, sl / (1 / d->mass + d->radius * d->radius *
+                                                             c2d_sphere_inverse(d->inertia))) /
+            sl;
     }
     c2d_cushion_apply(&o, d, nx, ny, sn, cs, pn, -f * s1, -f * s2);
     if (!c2d_ball_out_finite(&o)) return C2D_RANGE;

@@ -53,7 +53,7 @@ static void c2d_w_overlap_report(void *context, size_t disk)
  * radius plus the sum, its box's centre within a margin more). */
 static int c2d_w_overlaps_any(const c2d_world *w, double x, double y, double r, int all)
 {
-    size_t k, l;
+    size_t k;
     if (all) {
         for (k = 0; k < w->count; k++)
             if (w->disk[k].kind != C2D_W_GONE && c2d_w_overlaps(w, x, y, r, &w->disk[k])) return 1;
@@ -70,6 +70,7 @@ static int c2d_w_overlaps_any(const c2d_world *w, double x, double y, double r, 
     }
     {
         const size_t mx = w->mx, my = w->my, cx = c2d_w_cell_1d(x, w->cw, mx), cy = c2d_w_cell_1d(y, w->ch, my);
+        size_t l;
         for (l = 0; l < 3; l++)
             for (k = 0; k < 3; k++) {
                 size_t nx = cx + mx + k - 1, ny = cy + my + l - 1;

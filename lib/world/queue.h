@@ -158,7 +158,6 @@ static void c2d_w_q_pull(c2d_world *w, int all)
 static uint32_t c2d_w_q_top(c2d_world *w)
 {
     while (w->nwin == 0) {
-        uint32_t i;
         if (w->inbuckets == 0) {
             uint64_t day;
             if (w->inovf == 0) return C2D_W_NONE;
@@ -173,7 +172,7 @@ static uint32_t c2d_w_q_top(c2d_world *w)
         w->k0++;
         if (w->inovf > 0 && w->k0 >= w->pull_day) c2d_w_q_pull(w, 0);
         {
-            uint32_t *head = &w->bucket[w->k0 & (w->nbucket - 1)];
+            uint32_t *head = &w->bucket[w->k0 & (w->nbucket - 1)], i;
             while ((i = *head) != C2D_W_NONE) {
                 *head = w->node[i].next;
                 w->inbuckets--;
