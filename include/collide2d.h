@@ -475,13 +475,24 @@ c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed
  * (-std=c99, c11, c++11...: contraction off by default) or for a target
  * without FMA; elsewhere they are plain calls of the library functions.
  * One case no macro shows: -ffp-contract=fast given explicitly with -std=c99
- * on gcc for an FMA target.  Don't combine it with C2D_INLINE. */
+ * on gcc for an FMA target.  Don't combine it with C2D_INLINE.
+ *   Query: C2D_INLINE_AS_WRITTEN is 1 where the front ends are inline, 0
+ * where they are plain calls.  Diagnostic: #define C2D_INLINE_REQUIRED as
+ * well, and a translation unit whose flags would make them plain calls
+ * fails to compile, with #error naming the flags that enable them.
+ *   Flags that enable them: clang with any flags but -ffast-math or
+ * -ffinite-math-only; gcc with -std=c99 (c11, c17, c++11...) or, in its GNU
+ * modes (the default), for a target without FMA (x86-64 baseline: plain
+ * `cc -O2` is inline; -march=native or -march=x86-64-v3 there is not). */
 #if defined(C2D_INLINE)
 #if !defined(__FAST_MATH__) && !(defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) && (defined(__clang__) || (defined(__GNUC__) && (defined(__STRICT_ANSI__) || \
     !(defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)))))
 #define C2D_INLINE_AS_WRITTEN 1
 #else
 #define C2D_INLINE_AS_WRITTEN 0
+#endif
+#if defined(C2D_INLINE_REQUIRED) && !C2D_INLINE_AS_WRITTEN
+#error "C2D_INLINE_REQUIRED: the inline front ends would be plain calls under these flags (fast math, or gcc's GNU mode on an FMA target): compile with -std=c99 (or c11, c++11) and without -ffast-math, or use clang"
 #endif
 
 #endif /* C2D_INLINE */
