@@ -337,9 +337,13 @@ typedef struct c2d_ball_surface { double restitution, friction, friction_boost, 
  *   accuracy     each velocity component and spin x radius within
  *                c2d_collide's bound plus 8 ulp of the PAIR's scale (the
  *                largest |vx|, |vy|, |R w| of both balls before and after;
- *                measured worst 8.3 ulp in all, tests/unit/test_sphere.c, against a
- *                512-bit MPFR referee, pool-like and mixed masses at unit
- *                scale).  The friction part is plain arithmetic: a light
+ *                measured against a 512-bit MPFR referee, all parts in,
+ *                tests/unit/test_sphere.c: worst 8.3 ulp double, 7.1 float
+ *                at unit scale (pool pairs 4.4, 5.0); 5.5 and 6.0 with
+ *                masses, radii, speeds and spins each anywhere in 2^+-300
+ *                (float 2^+-30), sliding and sticking).  Nearer the
+ *                format's ends only the statuses, finiteness and
+ *                conservation are checked (fuzzed).  The friction part is plain arithmetic: a light
  *                ball brushed by a much faster one gets an error of the fast
  *                one's scale.
  *   cost         c2d_collide's plus ~100 floating-point operations (exp
@@ -378,8 +382,10 @@ typedef struct c2d_cushion { c2d_vec2 normal; double height, restitution, fricti
  *   physics      energy never grows; the ball's angular momentum about the
  *                contact point along n^ and z^ is kept.
  *   accuracy     each output within 16 ulp of the ball's scale (largest |vx|,
- *                |vy|, |R w| before and after; plain arithmetic, measured
- *                against the MPFR referee: worst 9.8).
+ *                |vy|, |R w| before and after; plain arithmetic, cos(th)
+ *                from h's distance to 2R so it keeps a few u near the top;
+ *                measured against the MPFR referee: worst 9.3 double, 9.0
+ *                float at unit scale, 9.7 and 7.9 over 2^+-300 / 2^+-30).
  *   cost         ~70 floating-point operations, two square roots. */
 c2d_status c2d_collide_cushion(c2d_ball *ball, c2d_cushion c);
 #endif
