@@ -31,12 +31,11 @@ MCU_PKGS := gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi \
   gcc-riscv64-unknown-elf binutils-riscv64-unknown-elf picolibc-riscv64-unknown-elf \
   qemu-system-arm qemu-system-misc cppcheck
 
-# C2D_NO_WORLD: the event-driven world passes 16-byte vectors by value to the
-# library's own calls, which GCC compiles into memcpy calls on these cores,
-# and the library promises no C library; it is not in the firmware builds
-# until it calls scalar entry points instead.
+# The event-driven world is in every build that has double (m0, m7, rv32):
+# it copies no struct whole and passes none by value (gcc -Os makes such
+# copies memcpy calls on these cores; sizes.sh fails on any).
 MCU_CFLAGS := -std=c99 $(WARN) -Werror -ffp-contract=off -Os -ffreestanding -fno-math-errno \
-  -ffunction-sections -fdata-sections -DC2D_NO_WORLD
+  -ffunction-sections -fdata-sections
 
 # Per target: compiler, core flags, library options, table description,
 # emulator, and the extra checks of `make cross`.
@@ -175,7 +174,9 @@ MCU_TABLE := rm -f $(MCU_B)/rows.md $(MCU_B)/sections.md; \
 	  echo 'The library (lib/, as the single file of `make amalgamate`) built with `$(MCU_CFLAGS)`.'; \
 	  echo 'Bytes. *code*: what linking only that function brings in from the library (--gc-sections);'; \
 	  echo '*+ helpers*: the libgcc routines that adds; *stack*: worst case through the library'"'"'s own'; \
-	  echo 'call graph (-fstack-usage, -fcallgraph-info; helper frames not counted). No recursion, no allocation.'; echo; \
+	  echo 'call graph (-fstack-usage, -fcallgraph-info; helper frames not counted), *+ callbacks*: the world'"'"'s, plus'; \
+	  echo 'the caller'"'"'s on_event, resolvers and broadphase (the only indirect calls). No recursion, no allocation.'; \
+	  echo 'The world needs double: it is in the m0, m7 and rv32 builds.'; echo; \
 	  echo '| target | core, variants | text | data | bss | text with libgcc helpers | worst stack | outside symbols |'; \
 	  echo '|---|---|---:|---:|---:|---:|---:|---|'; \
 	  cat $(MCU_B)/rows.md; echo; cat $(MCU_B)/sections.md; } >$(MCU_B)/SIZES.md
