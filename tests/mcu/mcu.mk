@@ -44,12 +44,14 @@ MCU_m0_ARCH := -mcpu=cortex-m0 -mthumb
 MCU_m0_OPTS :=
 MCU_m0_DESC := Cortex-M0, soft float; double, float, Q16.16
 MCU_m0_QEMU := qemu-system-arm -M microbit
+MCU_m0_RAM := 16K
 
 MCU_m4f_CC := arm-none-eabi-gcc
 MCU_m4f_ARCH := -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16
 MCU_m4f_OPTS := -DC2D_NO_DOUBLE
 MCU_m4f_DESC := Cortex-M4F, single-precision FPU; float, Q16.16 (C2D_NO_DOUBLE)
 MCU_m4f_QEMU := qemu-system-arm -M mps2-an386
+MCU_m4f_RAM := 16K
 MCU_m4f_CHECKS := --forbid '^__aeabi_d' --inline sqrtf=vsqrt.f32
 
 MCU_m7_CC := arm-none-eabi-gcc
@@ -57,6 +59,7 @@ MCU_m7_ARCH := -mcpu=cortex-m7 -mfloat-abi=hard -mfpu=fpv5-d16
 MCU_m7_OPTS :=
 MCU_m7_DESC := Cortex-M7, double-precision FPU; double, float, Q16.16
 MCU_m7_QEMU := qemu-system-arm -M mps2-an500
+MCU_m7_RAM := 64K
 
 MCU_rv32_CC := riscv64-unknown-elf-gcc
 MCU_rv32_ARCH := -march=rv32imac -mabi=ilp32
@@ -69,6 +72,7 @@ MCU_m0q16_ARCH := -mcpu=cortex-m0 -mthumb
 MCU_m0q16_OPTS := -DC2D_NO_DOUBLE -DC2D_NO_FLOAT
 MCU_m0q16_DESC := Cortex-M0, Q16.16 only (C2D_NO_DOUBLE C2D_NO_FLOAT), linked -nostdlib -lgcc
 MCU_m0q16_QEMU := qemu-system-arm -M microbit
+MCU_m0q16_RAM := 16K
 
 # Only the compiler's own headers (stddef.h, stdint.h, float.h): no C
 # library's.  Asked of the compiler when the recipe runs, after deps.
@@ -85,7 +89,10 @@ MCU_TEST_SRC := $(MCU_DIR)/main.c tests/vectors/vectors.c $(wildcard tests/vecto
 MCU_DEPS_OF = $(DEPFLAGS) -MT $@ -MF $(basename $@).$(1).d
 
 MCU_ARM := m0 m4f m7
-MCU_ARM_LINK := -nostdlib -T $(MCU_DIR)/arm.ld -Wl,--gc-sections
+# RAM: 16 KiB (the micro:bit's nRF51) where the harness fits, 64 KiB on the
+# M7 (its MPS2 board has 4 MiB), where the world's hash scenes
+# (tests/cross/hash_mcu.c: 22.5 KiB of world memory) run.
+MCU_ARM_LINK = -nostdlib -T $(MCU_DIR)/arm.ld -Wl,--gc-sections -Wl,--defsym=__c2d_ram_size=$(MCU_$(1)_RAM)
 # picolibc's semihosting crt0 and console; code and data in the virt board's RAM.
 MCU_RV32_LINK := --specs=picolibc.specs --crt0=semihost --oslib=semihost -Wl,--gc-sections \
   -Wl,--defsym=__flash=0x80000000,--defsym=__flash_size=0x100000 \
@@ -133,22 +140,22 @@ $(MCU_B)/rv32/platform_rv32.o: $(MCU_DIR)/platform_rv32.c | mcu-deps
 # harness.elf links lib/, harness_all.elf the amalgamation.
 $(MCU_ARM:%=$(MCU_B)/%/harness.elf): $(MCU_B)/%/harness.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/tests.o \
   $(MCU_B)/%/lib.o $(MCU_DIR)/arm.ld
-	$(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) \
+	$(MCU_$*_CC) $(MCU_$*_ARCH) $(call MCU_ARM_LINK,$*) -o $@ $(filter %.o,$^) \
 	  -Wl,--start-group -lm -lc -lgcc -Wl,--end-group
 
 $(MCU_ARM:%=$(MCU_B)/%/harness_all.elf): $(MCU_B)/%/harness_all.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/tests.o \
   $(MCU_B)/%/collide2d.o $(MCU_DIR)/arm.ld
-	$(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) \
+	$(MCU_$*_CC) $(MCU_$*_ARCH) $(call MCU_ARM_LINK,$*) -o $@ $(filter %.o,$^) \
 	  -Wl,--start-group -lm -lc -lgcc -Wl,--end-group
 
 # Q16.16 alone: libgcc is the only library.
 $(MCU_B)/m0q16/harness.elf: $(MCU_B)/m0q16/startup_arm.o $(MCU_B)/m0q16/tests.o \
   $(MCU_B)/m0q16/lib.o $(MCU_DIR)/arm.ld
-	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
+	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(call MCU_ARM_LINK,m0q16) -o $@ $(filter %.o,$^) -lgcc
 
 $(MCU_B)/m0q16/harness_all.elf: $(MCU_B)/m0q16/startup_arm.o $(MCU_B)/m0q16/tests.o \
   $(MCU_B)/m0q16/collide2d.o $(MCU_DIR)/arm.ld
-	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
+	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(call MCU_ARM_LINK,m0q16) -o $@ $(filter %.o,$^) -lgcc
 
 $(MCU_B)/m0q16/q16_link.elf: $(MCU_B)/m0q16/q16_caller.o $(MCU_B)/m0q16/collide2d.o
 	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) -nostdlib -Wl,--gc-sections -Wl,-e,c2d_q16_entry -o $@ $^ -lgcc
