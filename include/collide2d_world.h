@@ -205,11 +205,22 @@
  *   second in bench/world.c's opening comment.
  *
  * CONFIGURATION
- *   C2D_NO_WORLD (when compiling the library): leave the world out.  The
- *   firmware builds of tests/mcu do: the world hands 16-byte vectors by
- *   value to the library's calls, which GCC's Cortex-M code copies with
- *   memcpy, and the library promises no C library.  C2D_NO_DOUBLE leaves it
- *   out too (it is double precision).
+ *   C2D_NO_WORLD (when compiling the library): leave the world out.
+ *   C2D_NO_DOUBLE leaves it out too (it is double precision).
+ *
+ * FREESTANDING: the world calls no C library function (not even memcpy:
+ *   it copies no struct whole and passes none by value, which gcc -Os
+ *   compiles into memcpy calls on Cortex-M0 and RV32; tests/mcu/sizes.sh
+ *   fails on any), allocates nothing and does not recurse.  Its only
+ *   indirect calls are the caller's: on_event, the resolvers and the
+ *   broadphase's four, which run on the world's stack; the world's own
+ *   depth under c2d_world_advance is about 5 KiB on Cortex-M0 and RV32
+ *   (soft double), 4 KiB on Cortex-M7 (docs/SIZES.md, "+ callbacks"), and
+ *   its code 20 to 36 KiB beyond the rest of the library (about 80 KiB with
+ *   the collisions it calls, on Cortex-M0).  The firmware builds with
+ *   double (tests/mcu: m0, m7, rv32) include it; the world's hash scenes
+ *   (22.5 KiB of world memory) run on m7 and rv32 and give x86-64's bits
+ *   (docs/DETERMINISM.md).
  *
  * THREAD SAFETY: the functions touch only their arguments; one world may
  * be read (c2d_world_get, c2d_world_get_stats) from several threads at once

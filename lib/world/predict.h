@@ -95,7 +95,8 @@ static int c2d_w_unchanged(const c2d_body *a0, const c2d_body *a, const c2d_body
  * elastic impact changes something always ends). */
 static int c2d_w_refused_now(const c2d_body *a, const c2d_body *b)
 {
-    c2d_body ta = *a, tb = *b;
+    c2d_body ta, tb;
+    c2d_w_body_copy(&ta, a), c2d_w_body_copy(&tb, b);
     return C2D_W_COLLIDE(&ta, &tb, 1.0) != C2D_OK || c2d_w_unchanged(a, &ta, b, &tb);
 }
 
@@ -146,11 +147,12 @@ static void c2d_w_static_contact(const c2d_w_static *st, double px, double py, c
 
 static int c2d_w_static_refused(const c2d_w_static *st, const c2d_body *a)
 {
-    c2d_body ta = *a, tb;
+    c2d_body ta, tb;
     c2d_vec2 n;
+    c2d_w_body_copy(&ta, a);
     c2d_w_static_contact(st, a->pos.x, a->pos.y, &tb.pos, &n);
     tb.vel.x = tb.vel.y = 0, tb.mass = C2D_W_INF;
-    return C2D_W_COLLIDE_NORMAL(&ta, &tb, n, 1.0) != C2D_OK || (ta.vel.x == a->vel.x && ta.vel.y == a->vel.y);
+    return C2D_W_COLLIDE_NORMAL(&ta, &tb, &n, 1.0) != C2D_OK || (ta.vel.x == a->vel.x && ta.vel.y == a->vel.y);
 }
 
 /* Disk p (at a, now) entering sensor k: a point meeting a circle, from
@@ -182,11 +184,11 @@ static void c2d_w_predict_sensor(const c2d_world *w, const c2d_w_disk *p, const 
         if (r != C2D_OK || !(p->t + toi >= w->now)) return;
         when = p->t + toi;
     } else {
-        r = C2D_W_TOI_ACCEL(&ref, acc, &b, zero, st->radius, p->timer - p->t, &toi);
+        r = C2D_W_TOI_ACCEL(&ref, &acc, &b, &zero, st->radius, p->timer - p->t, &toi);
         if (r == C2D_OK && p->t + toi >= w->now) {
             when = p->t + toi;
         } else {
-            r = C2D_W_TOI_ACCEL(a, acc, &b, zero, st->radius, p->timer - w->now, &toi);
+            r = C2D_W_TOI_ACCEL(a, &acc, &b, &zero, st->radius, p->timer - w->now, &toi);
             if (r != C2D_OK) return;
             when = w->now + toi;
         }
@@ -226,7 +228,7 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
             else {
                 c2d_vec2 zero;
                 zero.x = zero.y = 0;
-                r = C2D_W_TOI_ACCEL(&ref, acc, &b, zero, p->radius + st->radius, p->timer - p->t, &toi);
+                r = C2D_W_TOI_ACCEL(&ref, &acc, &b, &zero, p->radius + st->radius, p->timer - p->t, &toi);
             }
             if (r != C2D_OK) continue;
             when = p->t + toi;
@@ -308,35 +310,34 @@ static int c2d_w_curved(const c2d_world *w, const c2d_w_disk *p, const c2d_w_dis
 /* q's image shift in pair (p, q), p the lower index, as its prediction
  * chose it: a straight pair from its relative position as
  * c2d_w_try_straight computes it, a curved one from c2d_w_pair_start's. */
-static c2d_vec2 c2d_w_pair_shift(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q)
+static void c2d_w_pair_shift(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, c2d_vec2 *shift)
 {
-    c2d_vec2 shift;
-    shift.x = shift.y = 0;
-    if (!w->periodic) return shift;
+    shift->x = shift->y = 0;
+    if (!w->periodic) return;
     if (c2d_w_curved(w, p, q)) {
         c2d_body a, b;
-        (void)c2d_w_pair_start(w, p, q, &a, &b, &shift); /* only the shift is wanted */
+        (void)c2d_w_pair_start(w, p, q, &a, &b, shift); /* only the shift is wanted */
     } else {
         const double t0 = p->t > q->t ? p->t : q->t, sp = t0 - p->t, sq = t0 - q->t;
-        shift.x = c2d_w_image_shift((q->x + q->vx * sq) - (p->x + p->vx * sp), w->width);
-        shift.y = c2d_w_image_shift((q->y + q->vy * sq) - (p->y + p->vy * sp), w->height);
+        shift->x = c2d_w_image_shift((q->x + q->vx * sq) - (p->x + p->vx * sp), w->width);
+        shift->y = c2d_w_image_shift((q->y + q->vy * sq) - (p->y + p->vy * sp), w->height);
     }
-    return shift;
 }
 
 /* The pair at time t as its impact sees it (q shifted to its image). */
-static void c2d_w_pair_at(const c2d_w_disk *p, const c2d_w_disk *q, double t, c2d_vec2 shift, c2d_body *a, c2d_body *b)
+static void c2d_w_pair_at(const c2d_w_disk *p, const c2d_w_disk *q, double t, const c2d_vec2 *shift, c2d_body *a,
+                          c2d_body *b)
 {
     c2d_w_body_at(p, t, a);
     c2d_w_body_at(q, t, b);
-    b->pos.x += shift.x, b->pos.y += shift.y;
+    b->pos.x += shift->x, b->pos.y += shift->y;
 }
 
 /* A pair due at once (time <= now) that c2d_collide would refuse at now
  * (touching with no approach speed, pushed together by accelerations, or
  * a graze rounded into the past): no event, or the world would predict it
  * again and again. */
-static int c2d_w_pair_refused_now(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, c2d_vec2 shift)
+static int c2d_w_pair_refused_now(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, const c2d_vec2 *shift)
 {
     c2d_body a, b;
     c2d_w_pair_at(p, q, w->now, shift, &a, &b);
@@ -411,8 +412,9 @@ C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, ui
     when = t0 + toi;
     if (when <= self->now) {
         const uint32_t lo = j < self->i ? j : self->i, hi = j < self->i ? self->i : j;
-        if (c2d_w_pair_refused_now(w, &w->disk[lo], &w->disk[hi], c2d_w_pair_shift(w, &w->disk[lo], &w->disk[hi])))
-            return;
+        c2d_vec2 shift;
+        c2d_w_pair_shift(w, &w->disk[lo], &w->disk[hi], &shift);
+        if (c2d_w_pair_refused_now(w, &w->disk[lo], &w->disk[hi], &shift)) return;
         when = self->now;
     }
     c2d_w_consider(best, when, C2D_W_PAIR, j, q->count);
@@ -447,13 +449,13 @@ static void c2d_w_try_pair(const c2d_world *w, const c2d_w_self *self, uint32_t 
     }
     t0 = c2d_w_pair_start(w, p, q, &a, &b, &shift);
     pa.x = p->ax, pa.y = p->ay, qa.x = q->ax, qa.y = q->ay;
-    if (C2D_W_TOI_ACCEL(&a, pa, &b, qa, p->radius + q->radius, (p->timer < q->timer ? p->timer : q->timer) - t0, &toi) !=
+    if (C2D_W_TOI_ACCEL(&a, &pa, &b, &qa, p->radius + q->radius, (p->timer < q->timer ? p->timer : q->timer) - t0, &toi) !=
         C2D_OK)
         return;
     when = t0 + toi;
     if (when <= w->now) {
         /* Refused now, unless pressed together (the pair rest rule). */
-        c2d_w_pair_at(p, q, w->now, shift, &a, &b);
+        c2d_w_pair_at(p, q, w->now, &shift, &a, &b);
         if (c2d_w_refused_now(&a, &b) && !c2d_w_pressed(w, p, q, &a, &b)) return;
         when = w->now;
     }
@@ -635,7 +637,8 @@ static void c2d_w_query_images(const c2d_world *w, const c2d_world_box *box, c2d
     }
     for (l = 0; l < ny; l++)
         for (k = 0; k < nx; k++) {
-            c2d_world_box b = *box;
+            c2d_world_box b;
+            c2d_w_box_copy(&b, box);
             b.lo.x += sx[k], b.hi.x += sx[k], b.lo.y += sy[l], b.hi.y += sy[l];
             w->bp.query(w->bp.user, &b, report, ctx);
         }
