@@ -16,7 +16,12 @@
  *   last event.  A disk may have a constant acceleration (a parabola
  *   between events: a ball decelerating on cloth) and a timer (an event at
  *   which the caller changes its motion); static segments and circles, each
- *   with its own restitution, stand in the box (a table's cushions).
+ *   with its own restitution, stand in the box (a table's cushions), and
+ *   sensors report a centre entering a circle (its pockets).  Contacts are
+ *   frictionless by default, rough disks with spin (c2d_collide_rough) as
+ *   a choice, or resolved by the caller's own function per contact kind
+ *   (a pool ball's 3-D spin), guarded so that no resolver can hang the
+ *   world or put a NaN in it.
  *
  * EXAMPLE
  *   c2d_world_desc d = {0};
@@ -107,9 +112,20 @@
  *     A disk at rest against a wall and pushed into it so has one wall
  *     event, then none; a bouncing one with e < 1 stops after about
  *     log(h / collapse_length) / log(1 / e^2) bounces.
- *   - Disks pressed together by accelerations have no resting contact: a
- *     touching pair with no approach speed is no event (c2d_collide would
- *     refuse it); once their paths close in they meet as an impact.
+ *   - Resting on another disk: touching disks whose accelerations press
+ *     them together (relative normal acceleration closing, press) meet at
+ *     once even with no approach speed, and at an impact that parts them
+ *     slower than a rebound of collapse_length (sep^2 <= 2 press
+ *     collapse_length along the unit normal) they rest on each other:
+ *     their relative normal velocity is taken away (momentum kept) and
+ *     each loses the component of its acceleration towards the other (as
+ *     at a wall; c2d_world_get_acceleration shows it, set it anew when
+ *     the situation changes).  So pressed disks never pass through each
+ *     other, and one bouncing on another with e < 1 stops after about
+ *     log(gap / collapse_length) / log(1 / e^2) impacts.  Reported as an
+ *     impact (its impulse possibly 0).  Not after collapse_count impacts
+ *     of one disk at one instant (rounding left by the projections cannot
+ *     loop); statics have no such rule.
  *
  * MEMORY
  *   c2d_world_bytes(desc) bytes aligned to 8 bytes (any malloc result, or a
@@ -118,7 +134,9 @@
  *   a 64-byte boundary within the buffer, so one cache line holds what a
  *   prediction reads of a neighbour), its heap entry (24) and 2 cells of
  *   the grid (4 each; at most 2 x capacity + 16 cells), and 80 bytes per
- *   static of desc->statics (segments and circles).  The world lives
+ *   static of desc->statics (segments, circles and sensors), with 16 bytes
+ *   per disk more when desc->statics > 0 (its last sensor entry) and 8
+ *   when the model is C2D_WORLD_ROUGH (its spin).  The world lives
  *   entirely in that memory and points into it: do not move or copy it
  *   while in use (make a new world instead).  Nothing else is kept.
  *
@@ -164,19 +182,53 @@ typedef enum c2d_world_event_kind {
     C2D_WORLD_IMPACT = 0,
     C2D_WORLD_WALL = 1,
     C2D_WORLD_TIMER = 2, /* a disk's timer (c2d_world_set_timer) is due */
-    C2D_WORLD_STATIC = 3 /* a disk met a static segment or circle */
+    C2D_WORLD_STATIC = 3, /* a disk met a static segment or circle */
+    C2D_WORLD_SENSOR = 4  /* a disk's centre entered a sensor (c2d_world_add_sensor) */
 } c2d_world_event_kind;
 typedef struct c2d_world_event {
     c2d_world_event_kind kind;
     double time;      /* when */
     size_t a, b;      /* IMPACT: the disks, a < b; WALL: the disk, and the wall
                          0..3 (x = 0, x = width, y = 0, y = height); TIMER: the
-                         disk, and 0; STATIC: the disk, and the static's index */
-    c2d_vec2 impulse; /* IMPACT: on b (a gets its negative); WALL: on the disk
-                         (0 when it comes to rest on the wall at normal speed 0);
-                         STATIC: on the disk;
-                         TIMER: 0 */
+                         disk, and 0; STATIC and SENSOR: the disk, and the
+                         static's index */
+    c2d_vec2 impulse; /* IMPACT: on b (a gets its negative, unless a caller's
+                         resolver says otherwise: then the change of b's
+                         momentum); WALL: on the disk (0 when it comes to rest on
+                         the wall at normal speed 0); STATIC: on the disk;
+                         TIMER and SENSOR: 0 */
 } c2d_world_event;
+
+/* How the world resolves contacts (c2d_world_desc.model). */
+typedef enum c2d_world_model {
+    C2D_WORLD_SMOOTH = 0, /* frictionless: c2d_collide, c2d_collide_normal */
+    C2D_WORLD_ROUGH = 1   /* rough disks with spin: c2d_collide_rough(_normal) */
+} c2d_world_model;
+
+/* A contact about to be resolved, as a caller's resolver sees it. */
+typedef struct c2d_world_contact {
+    c2d_world_event_kind kind; /* IMPACT, WALL or STATIC */
+    double time;               /* the world's time (the contact's) */
+    size_t a, b;               /* as in c2d_world_event */
+    c2d_vec2 normal;           /* from a's centre towards b's (IMPACT), towards the
+                                  wall (unit) or the static's contact point: not unit
+                                  for IMPACT and STATIC */
+    double restitution;        /* the world's coefficient for it, after the collapse
+                                  rule */
+    int collapsed;             /* 1 when the collapse rule made it elastic */
+} c2d_world_contact;
+
+/* A caller's resolution of one contact kind (c2d_world_desc.resolve_*):
+ * given the contact and the bodies at its time (a: disk a; b: disk b for
+ * an IMPACT, else an immovable body: mass INFINITY, velocity 0, at the
+ * contact point), write the new velocities into a->vel (and b->vel) and
+ * return C2D_OK.  Only velocities are taken.  Any other status, a NaN or
+ * Inf velocity, or velocities still approaching along the normal
+ * (relative normal speed < 0) make the world apply its own resolution
+ * (the model's) instead, so a resolver can neither hang the world nor
+ * poison it.  It may read the world (not change it) and keep its own
+ * per-disk state (a ball's 3-D spin) by index. */
+typedef c2d_status (*c2d_world_resolver)(void *user, const c2d_world_contact *contact, c2d_body *a, c2d_body *b);
 
 typedef struct c2d_world_desc {
     size_t capacity;         /* most disks, 1 to 2^31 - 1 */
@@ -192,17 +244,28 @@ typedef struct c2d_world_desc {
     double collapse_length;  /* >= 0, finite: an impact is elastic when the pair has closed
                                 less than this (approach speed x time since either disk's
                                 previous impact) [0: 2^-20 x the smaller radius] */
-    /* Called after each impact and each due timer, during c2d_world_advance
+    /* Called after each event it reports (impacts, walls, statics, sensors,
+     * due timers), during c2d_world_advance
      * [NULL: none].  It may read the world (c2d_world_get gives states at
      * the event's time) and call c2d_world_set_velocity,
-     * c2d_world_set_acceleration and c2d_world_set_timer on any disk (they
-     * act at the event's time; the disks are predicted anew after); there
-     * c2d_world_add, c2d_world_remove and c2d_world_advance return
-     * C2D_INVALID.  A timer set again and again to the event's own time
+     * c2d_world_set_acceleration, c2d_world_set_timer, c2d_world_set_spin
+     * and c2d_world_remove on any disk (they act at the event's time; the
+     * disks are predicted anew after); there c2d_world_add, the statics'
+     * adders and c2d_world_advance return C2D_INVALID.  A timer set again and again to the event's own time
      * never lets the advance finish: that is the caller's loop. */
     void (*on_event)(void *user, const c2d_world_event *event);
     void *user;              /* passed to on_event */
-    size_t statics;          /* most static segments and circles, 0 to 65536 [0: none] */
+    size_t statics;          /* most static segments, circles and sensors, 0 to 65536 [0: none] */
+    c2d_world_model model;   /* C2D_WORLD_SMOOTH or C2D_WORLD_ROUGH [0: smooth] */
+    double friction;         /* ROUGH: disk-disk Coulomb coefficient, >= 0 (INFINITY: no
+                                sliding) [0] */
+    double wall_friction;    /* ROUGH: the walls' and statics', >= 0 [0] */
+    double tangential_restitution; /* ROUGH: beta in [-1, 1] (c2d_surface) [0] */
+    double inertia_factor;   /* ROUGH: a disk's moment of inertia k m r^2, k in (0, 1]
+                                [0: 1/2, a solid disk] */
+    c2d_world_resolver resolve_impact; /* disk-disk [NULL: the model's] */
+    c2d_world_resolver resolve_wall;   /* disk-box wall [NULL: the model's] */
+    c2d_world_resolver resolve_static; /* disk-static [NULL: the model's] */
 } c2d_world_desc;
 
 typedef struct c2d_world_stats {
@@ -349,6 +412,40 @@ c2d_status c2d_world_add_segment(c2d_world *world, c2d_vec2 a, c2d_vec2 b, doubl
  *   cost     as c2d_world_add_segment. */
 c2d_status c2d_world_add_circle(c2d_world *world, c2d_vec2 centre, double radius, double restitution,
                                 size_t *index);
+
+/* Add a sensor: a circle (centre, radius > 0) that reports, and does not
+ * resolve, a disk's centre entering it (a pool table's pocket).  Each
+ * entry (the centre's distance to `centre` falling to `radius` from
+ * outside, at c2d_time_of_impact's or c2d_time_of_impact_accel's time for
+ * a point and the circle) is a C2D_WORLD_SENSOR event (a = the disk,
+ * b = the sensor's index among the statics: sensors share desc->statics
+ * and the index sequence of segments and circles), ordered with the
+ * walls and statics; the disk moves on unchanged (remove it from on_event
+ * to pocket it).  A disk already inside (added there, or not yet out
+ * since its last entry) is not reported until it has left and comes back;
+ * right after an entry, a centre within 2^-26 of the radius beyond the
+ * circle by rounding counts as inside.  Sensors take no part in impacts,
+ * counters other than stats.events, or the virial.
+ *   returns  C2D_OK; C2D_INVALID (NULL world, NaN/Inf, radius <= 0, the
+ *            statics full, inside on_event; nothing changes).
+ *   cost     as c2d_world_add_segment; the world's memory holds 16 more
+ *            bytes per disk when desc->statics > 0 (each disk's last entry). */
+c2d_status c2d_world_add_sensor(c2d_world *world, c2d_vec2 centre, double radius, size_t *index);
+
+/* Rough worlds (desc->model == C2D_WORLD_ROUGH): disk `index`'s spin
+ * (angular velocity about +z, counter-clockwise, rad per time unit;
+ * constant between its impacts).  Every disk starts with spin 0 and
+ * inertia desc->inertia_factor x mass x radius^2.  Impacts are
+ * c2d_collide_rough (disk-disk, surface {restitution, friction,
+ * tangential_restitution}) and c2d_collide_rough_normal against an
+ * immovable point (walls and statics: {their restitution, wall_friction,
+ * tangential_restitution}); the collapse and rest rules act on the
+ * restitution as in a smooth world.  Setting a spin changes no prediction
+ * (paths do not depend on it).
+ *   returns  C2D_OK; C2D_INVALID (NULL, a smooth world, index out of range
+ *            or removed, NaN/Inf spin; nothing changes). */
+c2d_status c2d_world_set_spin(c2d_world *world, size_t index, double spin);
+c2d_status c2d_world_get_spin(const c2d_world *world, size_t index, double *spin);
 
 #endif /* C2D_NO_DOUBLE */
 

@@ -84,12 +84,22 @@ typedef struct c2d_w_disk {
 } c2d_w_disk;
 typedef char c2d_w_disk_is_128_bytes[sizeof(c2d_w_disk) == 128 ? 1 : -1];
 
-/* A static segment (a to b, unit normal n, length len) or circle (centre
- * a, radius), immovable. */
+/* A static segment (a to b, unit normal n, length len), circle (centre
+ * a, radius), both immovable, or sensor (centre a, radius). */
+enum { C2D_W_SEGMENT = 0, C2D_W_CIRCLE = 1, C2D_W_SENSOR = 2 };
 typedef struct c2d_w_static {
     double ax, ay, bx, by, nx, ny, len, radius, restitution;
-    uint32_t circle, spare;
+    uint32_t shape, spare;
 } c2d_w_static;
+
+/* A disk's last sensor entry (kept only in worlds with statics): the
+ * sensor's index + 1 (0: none) and when. */
+typedef struct c2d_w_entered {
+    double time;
+    uint32_t sensor, spare;
+} c2d_w_entered;
+
+
 
 /* A heap entry: a disk's next event, its time and its tie key
  * (kind << 62 | lower index << 31 | higher index). */
@@ -104,6 +114,11 @@ struct c2d_world {
     c2d_w_entry *heap; /* a min-heap on (when, tie) */
     uint32_t *head;  /* first disk of each cell, C2D_W_NONE for none */
     c2d_w_static *stat;
+    c2d_w_entered *entered; /* per disk, when statics are allowed (else NULL) */
+    double *spin;           /* per disk, rough worlds only (else NULL) */
+    c2d_world_resolver resolve_impact, resolve_wall, resolve_static; /* the caller's (NULL: the model's) */
+    c2d_surface surface, wall_surface; /* rough worlds (restitution unused) */
+    double inertia_factor;
     size_t capacity, count, budget, scapacity, nstatic;
     size_t mx, my;   /* cells per side (0 until the first disk) */
     double width, height, restitution, wall_restitution, collapse_speed, collapse_time, collapse_length;
@@ -113,7 +128,7 @@ struct c2d_world {
     unsigned collapse_count;
     int periodic;
     int accel;       /* a disk has had a non-zero acceleration */
-    int busy;        /* inside on_event */
+    int busy;        /* 1 inside on_event, 2 inside a caller's resolver */
     void (*on_event)(void *user, const c2d_world_event *event);
     void *user;
     c2d_world_stats stats;
@@ -145,56 +160,95 @@ static int c2d_w_desc_ok(const c2d_world_desc *d)
     if (!(d->collapse_speed >= 0) || !c2d_w_finite(d->collapse_speed)) return 0;
     if (!(d->collapse_time >= 0) || !c2d_w_finite(d->collapse_time)) return 0;
     if (!(d->collapse_length >= 0) || !c2d_w_finite(d->collapse_length)) return 0;
+    if (d->model != C2D_WORLD_SMOOTH && d->model != C2D_WORLD_ROUGH) return 0;
+    if (!(d->friction >= 0) || !(d->wall_friction >= 0)) return 0; /* INFINITY allowed */
+    if (!(d->tangential_restitution >= -1 && d->tangential_restitution <= 1)) return 0;
+    if (!(d->inertia_factor >= 0 && d->inertia_factor <= 1)) return 0;
     return 1;
 }
 
-/* Offsets of the disks, the heap and the cells in the memory, and the
- * total; 0 if the sizes overflow size_t. */
-static size_t c2d_w_layout(size_t capacity, size_t statics, size_t *disks, size_t *heap, size_t *cells,
-                           size_t *stat)
+/* Offsets of the disks, the heap, the cells, the statics, the sensor
+ * entries and the spins in the memory, and the total; 0 if the sizes
+ * overflow size_t.  A world pays only for what its desc allows: no
+ * statics, no entries; smooth, no spins. */
+typedef struct c2d_w_offsets {
+    size_t disks, heap, cells, stat, entered, spin;
+} c2d_w_offsets;
+
+static size_t c2d_w_layout(const c2d_world_desc *desc, c2d_w_offsets *o)
 {
+    const size_t capacity = desc->capacity, statics = desc->statics;
     const size_t top = (size_t)-1;
     size_t budget = C2D_W_CELLS_PER_DISK * capacity + 16, off = C2D_W_ROUND8(sizeof(struct c2d_world)) + 56, n;
     if (capacity > (top - 16) / C2D_W_CELLS_PER_DISK) return 0;
-    *disks = off; /* the disks start on a 64-byte boundary within the 56 bytes before */
+    o->disks = off; /* the disks start on a 64-byte boundary within the 56 bytes before */
     if (capacity > (top - off) / sizeof(c2d_w_disk)) return 0;
     off += capacity * sizeof(c2d_w_disk);
-    *heap = off;
+    o->heap = off;
     if (capacity > (top - off) / sizeof(c2d_w_entry)) return 0;
     n = capacity * sizeof(c2d_w_entry);
     off += n;
-    *cells = off;
+    o->cells = off;
     if (budget > top / 8 || budget * sizeof(uint32_t) > top - off - 8) return 0;
     off = C2D_W_ROUND8(off + budget * sizeof(uint32_t));
-    *stat = off;
+    o->stat = off;
     if (statics > (top - off) / sizeof(c2d_w_static)) return 0;
-    return off + statics * sizeof(c2d_w_static);
+    off += statics * sizeof(c2d_w_static);
+    o->entered = off;
+    if (statics > 0) {
+        if (capacity > (top - off) / sizeof(c2d_w_entered)) return 0;
+        off += capacity * sizeof(c2d_w_entered);
+    }
+    o->spin = off;
+    if (desc->model == C2D_WORLD_ROUGH) {
+        if (capacity > (top - off) / sizeof(double)) return 0;
+        off += capacity * sizeof(double);
+    }
+    return off;
 }
 
 size_t c2d_world_bytes(const c2d_world_desc *desc)
 {
-    size_t a, b, c, e;
+    c2d_w_offsets o;
     if (!c2d_w_desc_ok(desc)) return 0;
-    return c2d_w_layout(desc->capacity, desc->statics, &a, &b, &c, &e);
+    return c2d_w_layout(desc, &o);
+}
+
+/* The contact model: the caller's resolvers and the rough surfaces. */
+static void c2d_w_init_resolvers(c2d_world *w, const c2d_world_desc *d)
+{
+    w->resolve_impact = d->resolve_impact;
+    w->resolve_wall = d->resolve_wall;
+    w->resolve_static = d->resolve_static;
+    w->surface.restitution = d->restitution;
+    w->surface.friction = d->friction;
+    w->surface.tangential_restitution = d->tangential_restitution;
+    w->wall_surface = w->surface;
+    w->wall_surface.friction = d->wall_friction;
+    w->inertia_factor = d->inertia_factor > 0 ? d->inertia_factor : 0.5;
 }
 
 c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c2d_world_desc *desc)
 {
-    size_t od, oh, oc, os, total;
+    c2d_w_offsets o;
+    size_t total;
     unsigned char *m = (unsigned char *)memory;
     c2d_world *w;
     if (world == NULL || memory == NULL || !c2d_w_desc_ok(desc)) return C2D_INVALID;
     if ((uintptr_t)memory % 8u != 0) return C2D_INVALID;
-    total = c2d_w_layout(desc->capacity, desc->statics, &od, &oh, &oc, &os);
+    total = c2d_w_layout(desc, &o);
     if (total == 0 || bytes < total) return C2D_INVALID;
     w = (c2d_world *)memory;
     {
-        size_t skew = (size_t)(((uintptr_t)m + od) % 64u), back = skew; /* a multiple of 8, up to 56 */
-        w->disk = (c2d_w_disk *)(void *)(m + od - back);
-        w->heap = (c2d_w_entry *)(void *)(m + oh - back);
-        w->head = (uint32_t *)(void *)(m + oc - back);
-        w->stat = (c2d_w_static *)(void *)(m + os - back);
+        size_t skew = (size_t)(((uintptr_t)m + o.disks) % 64u), back = skew; /* a multiple of 8, up to 56 */
+        w->disk = (c2d_w_disk *)(void *)(m + o.disks - back);
+        w->heap = (c2d_w_entry *)(void *)(m + o.heap - back);
+        w->head = (uint32_t *)(void *)(m + o.cells - back);
+        w->stat = (c2d_w_static *)(void *)(m + o.stat - back);
+        w->entered = desc->statics > 0 ? (c2d_w_entered *)(void *)(m + o.entered - back) : NULL;
+        w->spin = desc->model == C2D_WORLD_ROUGH ? (double *)(void *)(m + o.spin - back) : NULL;
     }
+    c2d_w_init_resolvers(w, desc);
     w->capacity = desc->capacity;
     w->scapacity = desc->statics;
     w->nstatic = 0;
@@ -376,13 +430,45 @@ static double c2d_w_meet(double t, double x, double v, double a, double to, doub
     return now < vertex ? now : C2D_W_INF;
 }
 
+/* An impact that leaves both velocities as they were (an approach speed
+ * so small that even the elastic impulse rounds away) changes nothing, so
+ * it is no impact either. */
+static int c2d_w_unchanged(const c2d_body *a0, const c2d_body *a, const c2d_body *b0, const c2d_body *b)
+{
+    return a->vel.x == a0->vel.x && a->vel.y == a0->vel.y && b->vel.x == b0->vel.x && b->vel.y == b0->vel.y;
+}
+
 /* A pair's contact at the very time `now` that c2d_collide would refuse
- * (touching with no approach speed, pushed together by accelerations): no
- * event, or the world would predict it again and again. */
+ * (touching with no approach speed, pushed together by accelerations) or
+ * resolve to the same velocities even at e = 1: no event, or the world
+ * would predict it again and again at one instant (the collapse rule
+ * makes an impact elastic after collapse_count of them, so a pair whose
+ * elastic impact changes something always ends). */
 static int c2d_w_refused_now(const c2d_body *a, const c2d_body *b)
 {
     c2d_body ta = *a, tb = *b;
-    return C2D_W_COLLIDE(&ta, &tb, 1.0) != C2D_OK;
+    return C2D_W_COLLIDE(&ta, &tb, 1.0) != C2D_OK || c2d_w_unchanged(a, &ta, b, &tb);
+}
+
+/* Disk p has had collapse_count impacts at this very instant (the
+ * collapse rule, c2d_w_collapses). */
+static int c2d_w_crowded(const c2d_world *w, const c2d_w_disk *p, double now)
+{
+    return p->last == now && p->same >= w->collapse_count;
+}
+
+/* Touching disks p (body a) and q (b) that c2d_collide refuses now but
+ * whose accelerations press together (relative normal acceleration
+ * closing) meet now all the same, for the pair rest rule (c2d_w_pair):
+ * else they would pass through each other.  Not once either has had
+ * collapse_count impacts at this instant, so rounding left in the rule's
+ * projections cannot loop. */
+static int c2d_w_pressed(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, const c2d_body *a,
+                         const c2d_body *b)
+{
+    const double nx = b->pos.x - a->pos.x, ny = b->pos.y - a->pos.y;
+    if (c2d_w_crowded(w, p, w->now) || c2d_w_crowded(w, q, w->now)) return 0;
+    return (p->ax - q->ax) * nx + (p->ay - q->ay) * ny > 0;
 }
 
 /* The contact point and normal (from the disk towards the static) of a
@@ -392,7 +478,7 @@ static int c2d_w_refused_now(const c2d_body *a, const c2d_body *b)
  * prediction and the impact use the same, so they agree on refusals. */
 static void c2d_w_static_contact(const c2d_w_static *st, double px, double py, c2d_vec2 *point, c2d_vec2 *normal)
 {
-    if (!st->circle) {
+    if (st->shape == C2D_W_SEGMENT) {
         const double tx = (st->bx - st->ax) / st->len, ty = (st->by - st->ay) / st->len;
         const double u = tx * (px - st->ax) + ty * (py - st->ay);
         if (u > 0 && u < st->len) {
@@ -415,7 +501,32 @@ static int c2d_w_static_refused(const c2d_w_static *st, const c2d_body *a)
     c2d_vec2 n;
     c2d_w_static_contact(st, a->pos.x, a->pos.y, &tb.pos, &n);
     tb.vel.x = tb.vel.y = 0, tb.mass = C2D_W_INF;
-    return C2D_W_COLLIDE_NORMAL(&ta, &tb, n, 1.0) != C2D_OK;
+    return C2D_W_COLLIDE_NORMAL(&ta, &tb, n, 1.0) != C2D_OK || (ta.vel.x == a->vel.x && ta.vel.y == a->vel.y);
+}
+
+/* Disk p (at a, now) entering sensor k: a point meeting a circle, from
+ * outside only.  Inside, or just entered and a hair outside by rounding
+ * (within 2^-26 of the radius: (1 + 2^-26)^2 < 1 + 2^-25), is no event:
+ * otherwise the entry would repeat at once. */
+static void c2d_w_predict_sensor(const c2d_world *w, const c2d_w_disk *p, const c2d_body *a, size_t k,
+                                 c2d_w_best *best)
+{
+    const c2d_w_static *st = &w->stat[k];
+    const c2d_w_entered *en = &w->entered[p - w->disk];
+    const double dx = a->pos.x - st->ax, dy = a->pos.y - st->ay, dd = dx * dx + dy * dy, rr = st->radius * st->radius;
+    c2d_body b;
+    double toi;
+    c2d_status r;
+    if (dd < rr || (en->sensor == k + 1 && dd <= rr * (1 + 0x1p-25))) return;
+    b.pos.x = st->ax, b.pos.y = st->ay, b.vel.x = b.vel.y = 0, b.mass = C2D_W_INF;
+    if (p->ax == 0 && p->ay == 0) {
+        r = C2D_W_TOI(a, &b, st->radius, &toi);
+    } else {
+        c2d_vec2 acc, zero;
+        acc.x = p->ax, acc.y = p->ay, zero.x = zero.y = 0;
+        r = C2D_W_TOI_ACCEL(a, acc, &b, zero, st->radius, best->when - w->now, &toi);
+    }
+    if (r == C2D_OK) c2d_w_consider(best, w->now + toi, C2D_W_WALL, (uint32_t)(4 + k), 0);
 }
 
 /* Disk p (at a, now) against every static: a circle (radius sum r + R), a
@@ -431,7 +542,11 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
         const c2d_w_static *st = &w->stat[k];
         const uint32_t partner = (uint32_t)(4 + k);
         int end;
-        for (end = 0; end < (st->circle ? 1 : 2); end++) {
+        if (st->shape == C2D_W_SENSOR) {
+            c2d_w_predict_sensor(w, p, a, k, best);
+            continue;
+        }
+        for (end = 0; end < (st->shape == C2D_W_CIRCLE ? 1 : 2); end++) {
             c2d_body b;
             double toi, when;
             c2d_status r;
@@ -448,7 +563,7 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
             if (when == now && c2d_w_static_refused(st, a)) continue;
             c2d_w_consider(best, when, C2D_W_WALL, partner, 0);
         }
-        if (!st->circle) {
+        if (st->shape == C2D_W_SEGMENT) {
             const double d0 = st->nx * (p->x - st->ax) + st->ny * (p->y - st->ay);
             const double vn = st->nx * p->vx + st->ny * p->vy, an = st->nx * acc.x + st->ny * acc.y;
             const double dnow = st->nx * (a->pos.x - st->ax) + st->ny * (a->pos.y - st->ay);
@@ -572,7 +687,7 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
                             continue;
                     }
                     when = now + toi;
-                    if (when == now && c2d_w_refused_now(&a, &b)) continue;
+                    if (when == now && c2d_w_refused_now(&a, &b) && !c2d_w_pressed(w, p, q, &a, &b)) continue;
                     c2d_w_consider(&best, when, C2D_W_PAIR, j, q->count);
                     continue;
                 }
@@ -599,8 +714,9 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
                         if (best.when - now < c / (2 * dh) * (1 - 0x1p-40)) continue;
                     }
                 }
-                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = p->mass; /* ignored */
+                b.vel.x = q->vx, b.vel.y = q->vy, b.mass = q->mass;
                 if (C2D_W_TOI(&a, &b, p->radius + q->radius, &toi) != C2D_OK) continue;
+                if (toi == 0 && c2d_w_refused_now(&a, &b)) continue;
                 c2d_w_consider(&best, now + toi, C2D_W_PAIR, j, q->count);
             }
         }
@@ -727,6 +843,8 @@ c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, 
     p->kind = C2D_W_IDLE;
     p->same = 0;
     p->slot = i;
+    if (w->entered != NULL) w->entered[i].time = -C2D_W_INF, w->entered[i].sensor = 0, w->entered[i].spare = 0;
+    if (w->spin != NULL) w->spin[i] = 0;
     w->heap[i].when = C2D_W_INF;
     w->heap[i].tie = C2D_W_TIE_KIND(C2D_W_IDLE);
     w->heap[i].disk = i;
@@ -761,10 +879,6 @@ static void c2d_w_emit(c2d_world *w, const c2d_world_event *ev)
  * collapse_time ago, it approaches slower than collapse_speed, or it has
  * closed less than collapse_length since.  vn and the thresholds are
  * scaled by nn, the normal's length (1 for a wall, which scales nothing). */
-static int c2d_w_crowded(const c2d_world *w, const c2d_w_disk *p, double now)
-{
-    return p->last == now && p->same >= w->collapse_count;
-}
 
 static int c2d_w_collapses(const c2d_world *w, int crowded, double since, double vn, double nn, double length)
 {
@@ -782,6 +896,110 @@ static void c2d_w_impact_clock(c2d_w_disk *p, double now)
     p->count++;
 }
 
+/* ------------------------------------------------------------ resolution */
+
+/* Disk i (body b) as a rough disk: its spin, radius and inertia k m r^2. */
+static c2d_disk c2d_w_rough_disk(const c2d_world *w, const c2d_body *b, size_t i)
+{
+    c2d_disk d;
+    const double r = w->disk[i].radius;
+    d.pos = b->pos, d.vel = b->vel, d.spin = w->spin[i], d.mass = b->mass, d.radius = r;
+    d.inertia = w->inertia_factor * b->mass * r * r;
+    return d;
+}
+
+/* The rough model's resolution of contact c (spins written on C2D_OK):
+ * c2d_collide_rough between disks, c2d_collide_rough_normal against an
+ * immovable point for walls and statics. */
+static c2d_status c2d_w_rough(c2d_world *w, const c2d_world_contact *c, c2d_body *a, c2d_body *b)
+{
+    c2d_disk da = c2d_w_rough_disk(w, a, c->a), db;
+    c2d_surface s;
+    c2d_status r;
+    if (c->kind == C2D_WORLD_IMPACT) {
+        db = c2d_w_rough_disk(w, b, c->b);
+        s = w->surface;
+        s.restitution = c->restitution;
+        r = c2d_collide_rough(&da, &db, s);
+    } else {
+        db.pos = b->pos, db.vel.x = db.vel.y = 0, db.spin = 0;
+        db.mass = db.inertia = C2D_W_INF, db.radius = 0;
+        s = w->wall_surface;
+        s.restitution = c->restitution;
+        r = c2d_collide_rough_normal(&da, &db, c->normal, s);
+    }
+    if (r != C2D_OK) return r;
+    a->vel = da.vel, w->spin[c->a] = da.spin;
+    if (c->kind == C2D_WORLD_IMPACT) b->vel = db.vel, w->spin[c->b] = db.spin;
+    return C2D_OK;
+}
+
+/* The caller's resolution of contact c, taken (1) only when it says
+ * C2D_OK with finite velocities no longer approaching along the normal:
+ * so no resolver can hang the world (an approaching pair left so would
+ * meet again at once) or put a NaN in it. */
+static int c2d_w_caller_resolves(c2d_world *w, c2d_world_resolver fn, const c2d_world_contact *c, c2d_body *a,
+                                 c2d_body *b)
+{
+    c2d_body ta = *a, tb = *b;
+    int ok;
+    double bx = 0, by = 0;
+    if (fn == NULL) return 0;
+    w->busy = 2;
+    ok = fn(w->user, c, &ta, &tb) == C2D_OK;
+    w->busy = 0;
+    if (c->kind == C2D_WORLD_IMPACT) bx = tb.vel.x, by = tb.vel.y;
+    if (!ok || !c2d_w_finite(ta.vel.x) || !c2d_w_finite(ta.vel.y) || !c2d_w_finite(bx) || !c2d_w_finite(by))
+        return 0;
+    if ((bx - ta.vel.x) * c->normal.x + (by - ta.vel.y) * c->normal.y < 0) return 0;
+    a->vel = ta.vel;
+    if (c->kind == C2D_WORLD_IMPACT) b->vel = tb.vel;
+    return 1;
+}
+
+/* Contact c resolved: by the caller's resolver, else the model's (rough,
+ * then smooth should the rough call refuse). */
+static c2d_status c2d_w_resolve(c2d_world *w, c2d_world_resolver fn, const c2d_world_contact *c, c2d_body *a,
+                                c2d_body *b)
+{
+    if (c2d_w_caller_resolves(w, fn, c, a, b)) return C2D_OK;
+    if (w->spin != NULL && c2d_w_rough(w, c, a, b) == C2D_OK) return C2D_OK;
+    if (c->kind == C2D_WORLD_IMPACT) return C2D_W_COLLIDE(a, b, c->restitution);
+    return C2D_W_COLLIDE_NORMAL(a, b, c->normal, c->restitution);
+}
+
+/* After an event: predict disk i again, unless on_event removed it. */
+static void c2d_w_repredict(c2d_world *w, uint32_t i)
+{
+    if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, i);
+}
+
+/* The pair rest rule (collide2d_world.h): disks p (body a) and q (b),
+ * touching, pressed together by their accelerations (closing at press /
+ * |n| along the unit normal) and parting at sep / |n| after the impact,
+ * rebound less than collapse_length high ((sep / |n|)^2 / (2 press / |n|)
+ * <= length): they rest on each other.  Their relative normal velocity
+ * is taken away, momentum kept (dv_a = +m_b / (m_a + m_b) sep n / |n|^2,
+ * dv_b = -m_a / (m_a + m_b) sep n / |n|^2), and each loses the component
+ * of its acceleration towards the other (as a disk on a wall loses the
+ * one into the wall): 1 if it applies, the velocities in a, b and the
+ * accelerations in p, q written. */
+static int c2d_w_pair_rests(c2d_w_disk *p, c2d_w_disk *q, c2d_body *a, c2d_body *b, double length)
+{
+    const double nx = b->pos.x - a->pos.x, ny = b->pos.y - a->pos.y, nn2 = nx * nx + ny * ny;
+    const double ap = p->ax * nx + p->ay * ny, aq = q->ax * nx + q->ay * ny, press = ap - aq;
+    const double sep = (b->vel.x - a->vel.x) * nx + (b->vel.y - a->vel.y) * ny;
+    if (!(press > 0) || !(nn2 > 0) || sep * sep > 2 * press * length * C2D_W_SQRT(nn2)) return 0;
+    if (sep > 0) {
+        const double ka = b->mass / (a->mass + b->mass) * (sep / nn2), kb = a->mass / (a->mass + b->mass) * (sep / nn2);
+        a->vel.x += ka * nx, a->vel.y += ka * ny;
+        b->vel.x -= kb * nx, b->vel.y -= kb * ny;
+    }
+    if (ap > 0) p->ax -= ap / nn2 * nx, p->ay -= ap / nn2 * ny;
+    if (aq < 0) q->ax -= aq / nn2 * nx, q->ay -= aq / nn2 * ny;
+    return 1;
+}
+
 /* The impact event of disk `owner`: stale, or resolved with the lower
  * index as c2d_collide's a (so either disk's copy of the event gives the
  * same bits). */
@@ -792,7 +1010,9 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
     const uint32_t i = owner < partner ? owner : partner, j = owner < partner ? partner : owner;
     c2d_w_disk *p = &d[i], *q = &d[j];
     const double now = w->now, dp = now - p->t, dq = now - q->t;
-    double qx, qy, sx = 0, sy = 0, e = w->restitution;
+    double qx, qy, sx = 0, sy = 0, e = w->restitution, length, vqx, vqy;
+    int collapsed = 0, resolved;
+    c2d_world_contact c;
     c2d_body a, b;
     if (d[partner].count != d[owner].pcount) { /* stale */
         c2d_w_predict(w, owner);
@@ -807,6 +1027,8 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
     a.vel.x = c2d_w_vel(p->vx, p->ax, dp), a.vel.y = c2d_w_vel(p->vy, p->ay, dp);
     b.pos.x = qx + sx, b.pos.y = qy + sy, b.mass = q->mass;
     b.vel.x = c2d_w_vel(q->vx, q->ax, dq), b.vel.y = c2d_w_vel(q->vy, q->ay, dq);
+    vqx = b.vel.x, vqy = b.vel.y; /* before the impact (the rest rule changes q's acceleration) */
+    length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * (p->radius < q->radius ? p->radius : q->radius);
     if (e < 1) {
         /* The collapse rule (collide2d_world.h): elastic after collapse_count
          * impacts at this instant, within collapse_time of the last impact,
@@ -815,12 +1037,16 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
         const double since = now - (p->last > q->last ? p->last : q->last);
         const double nx = b.pos.x - a.pos.x, ny = b.pos.y - a.pos.y;
         const double vn = -((b.vel.x - a.vel.x) * nx + (b.vel.y - a.vel.y) * ny), nn = C2D_W_SQRT(nx * nx + ny * ny);
-        const double length = w->collapse_length > 0 ? w->collapse_length
-                                                      : 0x1p-20 * (p->radius < q->radius ? p->radius : q->radius);
-        if (c2d_w_collapses(w, c2d_w_crowded(w, p, now) || c2d_w_crowded(w, q, now), since, vn, nn, length)) e = 1;
+        collapsed = c2d_w_collapses(w, c2d_w_crowded(w, p, now) || c2d_w_crowded(w, q, now), since, vn, nn, length);
+        if (collapsed) e = 1;
     }
-    if (C2D_W_COLLIDE(&a, &b, e) == C2D_OK) {
-        const double vqx = c2d_w_vel(q->vx, q->ax, dq), vqy = c2d_w_vel(q->vy, q->ay, dq);
+    c.kind = C2D_WORLD_IMPACT, c.time = now, c.a = i, c.b = j;
+    c.normal.x = b.pos.x - a.pos.x, c.normal.y = b.pos.y - a.pos.y;
+    c.restitution = e, c.collapsed = collapsed;
+    resolved = c2d_w_resolve(w, w->resolve_impact, &c, &a, &b) == C2D_OK;
+    /* Resting (refused or not): only where accelerations press the pair. */
+    if (w->accel && c2d_w_pair_rests(p, q, &a, &b, length)) resolved = 1;
+    if (resolved) {
         w->stats.virial += ((b.pos.x - a.pos.x) * (b.vel.x - vqx) + (b.pos.y - a.pos.y) * (b.vel.y - vqy)) * q->mass;
         p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
         q->x = qx, q->y = qy, q->vx = b.vel.x, q->vy = b.vel.y, q->t = now;
@@ -833,8 +1059,8 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
             ev.impulse.x = (b.vel.x - vqx) * q->mass, ev.impulse.y = (b.vel.y - vqy) * q->mass;
             c2d_w_emit(w, &ev);
         }
-        c2d_w_predict(w, i);
-        c2d_w_predict(w, j);
+        c2d_w_repredict(w, i);
+        c2d_w_repredict(w, j);
     } else {
         c2d_w_predict(w, owner);
     }
@@ -849,6 +1075,8 @@ static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
     const c2d_w_static *st = &w->stat[k];
     const double now = w->now, dt = now - p->t;
     double e = st->restitution;
+    int collapsed = 0;
+    c2d_world_contact c;
     c2d_body a, b;
     c2d_vec2 n;
     a.pos.x = c2d_w_at(p->x, p->vx, p->ax, dt), a.pos.y = c2d_w_at(p->y, p->vy, p->ay, dt), a.mass = p->mass;
@@ -860,11 +1088,14 @@ static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
         const double nn = C2D_W_SQRT(n.x * n.x + n.y * n.y), vn = a.vel.x * n.x + a.vel.y * n.y;
         const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
         const double since = now - p->last;
-        if (c2d_w_collapses(w, c2d_w_crowded(w, p, now), since, vn, nn, length)) e = 1;
+        collapsed = c2d_w_collapses(w, c2d_w_crowded(w, p, now), since, vn, nn, length);
+        if (collapsed) e = 1;
     }
+    c.kind = C2D_WORLD_STATIC, c.time = now, c.a = i, c.b = k;
+    c.normal = n, c.restitution = e, c.collapsed = collapsed;
     {
         const double vx0 = a.vel.x, vy0 = a.vel.y;
-        if (C2D_W_COLLIDE_NORMAL(&a, &b, n, e) == C2D_OK) {
+        if (c2d_w_resolve(w, w->resolve_static, &c, &a, &b) == C2D_OK) {
             p->x = a.pos.x, p->y = a.pos.y, p->vx = a.vel.x, p->vy = a.vel.y, p->t = now;
             c2d_w_impact_clock(p, now);
             w->stats.wall_collisions++;
@@ -876,7 +1107,44 @@ static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
             }
         }
     }
-    c2d_w_predict(w, i);
+    c2d_w_repredict(w, i);
+}
+
+/* Disk i's centre entered sensor k: remembered (c2d_w_predict_sensor),
+ * told, nothing resolved. */
+static void c2d_w_sensor(c2d_world *w, uint32_t i, size_t k)
+{
+    w->entered[i].time = w->now, w->entered[i].sensor = (uint32_t)(k + 1);
+    if (w->on_event != NULL) {
+        c2d_world_event ev;
+        ev.kind = C2D_WORLD_SENSOR, ev.time = w->now, ev.a = i, ev.b = k;
+        ev.impulse.x = ev.impulse.y = 0;
+        c2d_w_emit(w, &ev);
+    }
+    c2d_w_repredict(w, i);
+}
+
+/* A box wall met by a caller's resolver or the rough model, at the snapped
+ * centre (x, y); 1 if it resolved the contact (the velocity written). */
+static int c2d_w_wall_resolved(c2d_world *w, uint32_t i, double x, double y, double e, int collapsed)
+{
+    c2d_w_disk *p = &w->disk[i];
+    const uint32_t side = p->partner;
+    c2d_world_contact c;
+    c2d_body a, b;
+    a.pos.x = x, a.pos.y = y, a.vel.x = p->vx, a.vel.y = p->vy, a.mass = p->mass;
+    b.pos.x = side == 0 ? 0 : side == 1 ? w->width : x;
+    b.pos.y = side == 2 ? 0 : side == 3 ? w->height : y;
+    b.vel.x = b.vel.y = 0, b.mass = C2D_W_INF;
+    c.kind = C2D_WORLD_WALL, c.time = w->now, c.a = i, c.b = side;
+    c.normal.x = side == 0 ? -1.0 : side == 1 ? 1.0 : 0.0;
+    c.normal.y = side == 2 ? -1.0 : side == 3 ? 1.0 : 0.0;
+    c.restitution = e, c.collapsed = collapsed;
+    if (!c2d_w_caller_resolves(w, w->resolve_wall, &c, &a, &b) &&
+        (w->spin == NULL || c2d_w_rough(w, &c, &a, &b) != C2D_OK))
+        return 0;
+    p->vx = a.vel.x, p->vy = a.vel.y;
+    return 1;
 }
 
 static void c2d_w_wall(c2d_world *w, uint32_t i)
@@ -887,8 +1155,11 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
     const double vx0 = c2d_w_vel(p->vx, p->ax, dt), vy0 = c2d_w_vel(p->vy, p->ay, dt);
     const double length = w->collapse_length > 0 ? w->collapse_length : 0x1p-20 * p->radius;
     double *v, *acc;
+    int collapsed = 0;
     if (p->partner >= 4) {
-        c2d_w_static_hit(w, i, p->partner - 4u);
+        const size_t k = p->partner - 4u;
+        if (w->stat[k].shape == C2D_W_SENSOR) c2d_w_sensor(w, i, k);
+        else c2d_w_static_hit(w, i, k);
         return;
     }
     p->vx = vx0, p->vy = vy0;
@@ -897,7 +1168,8 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
     vn = *v < 0 ? -*v : *v;
     an = p->partner % 2 == 0 ? -*acc : *acc; /* > 0: pressing into the wall */
     if (e < 1) { /* the collapse rule, as for a pair (the wall's "radius" 0) */
-        if (c2d_w_collapses(w, c2d_w_crowded(w, p, now), since, vn, 1.0, length)) e = 1;
+        collapsed = c2d_w_collapses(w, c2d_w_crowded(w, p, now), since, vn, 1.0, length);
+        if (collapsed) e = 1;
     }
     switch (p->partner) {
     case 0: x = p->radius; break;
@@ -908,8 +1180,13 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
     /* The rest rule: pressed into the wall and rebounding less than
      * collapse_length high ((e vn)^2 / (2 an)), the disk stays on it: its
      * normal velocity and acceleration become 0. */
-    if (an > 0 && (e * vn) * (e * vn) <= 2 * an * length) *v = 0, *acc = 0;
-    else if (p->partner % 2 == 0 ? *v < 0 : *v > 0) *v = -e * *v; /* (not one already leaving) */
+    if (c2d_w_wall_resolved(w, i, x, y, e, collapsed)) {
+        if (an > 0 && *v * *v <= 2 * an * length) *v = 0, *acc = 0;
+    } else if (an > 0 && (e * vn) * (e * vn) <= 2 * an * length) {
+        *v = 0, *acc = 0;
+    } else if (p->partner % 2 == 0 ? *v < 0 : *v > 0) {
+        *v = -e * *v; /* (not one already leaving) */
+    }
     p->x = x, p->y = y, p->t = now;
     c2d_w_impact_clock(p, now);
     w->stats.wall_collisions++;
@@ -919,7 +1196,7 @@ static void c2d_w_wall(c2d_world *w, uint32_t i)
         ev.impulse.x = (p->vx - vx0) * p->mass, ev.impulse.y = (p->vy - vy0) * p->mass;
         c2d_w_emit(w, &ev);
     }
-    c2d_w_predict(w, i);
+    c2d_w_repredict(w, i);
 }
 
 /* A disk's timer: cleared, then told (the callback may set it again). */
@@ -932,7 +1209,7 @@ static void c2d_w_timer(c2d_world *w, uint32_t i)
         ev.impulse.x = ev.impulse.y = 0;
         c2d_w_emit(w, &ev);
     }
-    if (w->disk[i].kind != C2D_W_GONE) c2d_w_predict(w, i);
+    c2d_w_repredict(w, i);
 }
 
 static void c2d_w_cross(c2d_world *w, uint32_t i)
@@ -1009,7 +1286,8 @@ c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 veloc
 {
     c2d_w_disk *p;
     double dt;
-    if (world == NULL || index >= world->count || !c2d_w_finite(velocity.x) || !c2d_w_finite(velocity.y))
+    if (world == NULL || world->busy > 1 || index >= world->count || !c2d_w_finite(velocity.x) ||
+        !c2d_w_finite(velocity.y))
         return C2D_INVALID;
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
@@ -1025,7 +1303,8 @@ c2d_status c2d_world_set_acceleration(c2d_world *world, size_t index, c2d_vec2 a
 {
     c2d_w_disk *p;
     double dt, vx, vy;
-    if (world == NULL || index >= world->count || !c2d_w_finite(acceleration.x) || !c2d_w_finite(acceleration.y))
+    if (world == NULL || world->busy > 1 || index >= world->count || !c2d_w_finite(acceleration.x) ||
+        !c2d_w_finite(acceleration.y))
         return C2D_INVALID;
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
@@ -1065,7 +1344,7 @@ c2d_status c2d_world_add_segment(c2d_world *world, c2d_vec2 a, c2d_vec2 b, doubl
     if (!(st.len > 0) || !c2d_w_finite(st.len)) return C2D_INVALID;
     st.ax = a.x, st.ay = a.y, st.bx = b.x, st.by = b.y;
     st.nx = -dy / st.len, st.ny = dx / st.len;
-    st.radius = 0, st.restitution = restitution, st.circle = 0, st.spare = 0;
+    st.radius = 0, st.restitution = restitution, st.shape = C2D_W_SEGMENT, st.spare = 0;
     return c2d_w_add_static(world, &st, index);
 }
 
@@ -1078,8 +1357,37 @@ c2d_status c2d_world_add_circle(c2d_world *world, c2d_vec2 centre, double radius
     if (!(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
     st.ax = st.bx = centre.x, st.ay = st.by = centre.y;
     st.nx = st.ny = st.len = 0;
-    st.radius = radius, st.restitution = restitution, st.circle = 1, st.spare = 0;
+    st.radius = radius, st.restitution = restitution, st.shape = C2D_W_CIRCLE, st.spare = 0;
     return c2d_w_add_static(world, &st, index);
+}
+
+c2d_status c2d_world_add_sensor(c2d_world *world, c2d_vec2 centre, double radius, size_t *index)
+{
+    c2d_w_static st;
+    if (world == NULL || world->busy || world->nstatic >= world->scapacity) return C2D_INVALID;
+    if (!c2d_w_finite(centre.x) || !c2d_w_finite(centre.y) || !c2d_w_finite(radius) || !(radius > 0))
+        return C2D_INVALID;
+    st.ax = st.bx = centre.x, st.ay = st.by = centre.y;
+    st.nx = st.ny = st.len = 0;
+    st.radius = radius, st.restitution = 0, st.shape = C2D_W_SENSOR, st.spare = 0;
+    return c2d_w_add_static(world, &st, index);
+}
+
+c2d_status c2d_world_set_spin(c2d_world *world, size_t index, double spin)
+{
+    if (world == NULL || world->busy > 1 || world->spin == NULL || index >= world->count || !c2d_w_finite(spin))
+        return C2D_INVALID;
+    if (world->disk[index].kind == C2D_W_GONE) return C2D_INVALID;
+    world->spin[index] = spin;
+    return C2D_OK;
+}
+
+c2d_status c2d_world_get_spin(const c2d_world *world, size_t index, double *spin)
+{
+    if (world == NULL || spin == NULL || world->spin == NULL || index >= world->count) return C2D_INVALID;
+    if (world->disk[index].kind == C2D_W_GONE) return C2D_INVALID;
+    *spin = world->spin[index];
+    return C2D_OK;
 }
 
 c2d_status c2d_world_get_acceleration(const c2d_world *world, size_t index, c2d_vec2 *acceleration)
@@ -1095,7 +1403,7 @@ c2d_status c2d_world_get_acceleration(const c2d_world *world, size_t index, c2d_
 c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t)
 {
     c2d_w_disk *p;
-    if (world == NULL || index >= world->count || t != t || !(t >= world->now)) return C2D_INVALID;
+    if (world == NULL || world->busy > 1 || index >= world->count || t != t || !(t >= world->now)) return C2D_INVALID;
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     p->timer = t < C2D_W_INF ? t : C2D_W_INF;
@@ -1106,7 +1414,7 @@ c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t)
 c2d_status c2d_world_remove(c2d_world *world, size_t index)
 {
     c2d_w_disk *p;
-    if (world == NULL || world->busy || index >= world->count) return C2D_INVALID;
+    if (world == NULL || world->busy > 1 || index >= world->count) return C2D_INVALID;
     p = &world->disk[index];
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     c2d_w_cell_remove(world, (uint32_t)index);

@@ -288,7 +288,18 @@ class WorldDesc(ctypes.Structure):
                 ("wall_restitution", ctypes.c_double), ("collapse_speed", ctypes.c_double),
                 ("collapse_count", ctypes.c_uint), ("collapse_time", ctypes.c_double),
                 ("collapse_length", ctypes.c_double), ("on_event", EVENT_CALLBACK),
-                ("user", ctypes.c_void_p), ("statics", ctypes.c_size_t)]
+                ("user", ctypes.c_void_p), ("statics", ctypes.c_size_t), ("model", ctypes.c_int),
+                ("friction", ctypes.c_double), ("wall_friction", ctypes.c_double),
+                ("tangential_restitution", ctypes.c_double), ("inertia_factor", ctypes.c_double),
+                ("resolve_impact", ctypes.c_void_p), ("resolve_wall", ctypes.c_void_p),
+                ("resolve_static", ctypes.c_void_p)]
+
+
+class WorldContact(ctypes.Structure):
+    """What a resolver is given (no resolver is set from Python yet)."""
+    _fields_ = [("kind", ctypes.c_int), ("time", ctypes.c_double), ("a", ctypes.c_size_t),
+                ("b", ctypes.c_size_t), ("normal", DOUBLE["Vec2"]), ("restitution", ctypes.c_double),
+                ("collapsed", ctypes.c_int)]
 
 
 class WorldStats(ctypes.Structure):
@@ -296,7 +307,7 @@ class WorldStats(ctypes.Structure):
                 ("events", ctypes.c_ulonglong), ("time", ctypes.c_double), ("virial", ctypes.c_double)]
 
 
-for _cls in (WorldEvent, WorldDesc, WorldStats):
+for _cls in (WorldEvent, WorldDesc, WorldContact, WorldStats):
     _cls.__module__ = "collide2d"
 
 

@@ -46,6 +46,7 @@ class EventKind(enum.IntEnum):
     WALL = 1
     TIMER = 2   # a disk's timer is due (the C world's; not set from Python yet)
     STATIC = 3  # a disk met a static segment or circle (likewise)
+    SENSOR = 4  # a disk's centre entered a sensor (likewise)
 
 
 class WorldError(ValueError):

@@ -48,6 +48,14 @@ int main(void)
     FIELD(c2d_world_desc, collapse_speed); FIELD(c2d_world_desc, collapse_count);
     FIELD(c2d_world_desc, collapse_time); FIELD(c2d_world_desc, collapse_length);
     FIELD(c2d_world_desc, on_event); FIELD(c2d_world_desc, user); FIELD(c2d_world_desc, statics);
+    FIELD(c2d_world_desc, model); FIELD(c2d_world_desc, friction); FIELD(c2d_world_desc, wall_friction);
+    FIELD(c2d_world_desc, tangential_restitution); FIELD(c2d_world_desc, inertia_factor);
+    FIELD(c2d_world_desc, resolve_impact); FIELD(c2d_world_desc, resolve_wall); FIELD(c2d_world_desc, resolve_static);
+    TYPE(c2d_world_model);
+    STRUCT(c2d_world_contact);
+    FIELD(c2d_world_contact, kind); FIELD(c2d_world_contact, time); FIELD(c2d_world_contact, a);
+    FIELD(c2d_world_contact, b); FIELD(c2d_world_contact, normal); FIELD(c2d_world_contact, restitution);
+    FIELD(c2d_world_contact, collapsed);
     STRUCT(c2d_world_stats);
     FIELD(c2d_world_stats, collisions); FIELD(c2d_world_stats, wall_collisions); FIELD(c2d_world_stats, events);
     FIELD(c2d_world_stats, time); FIELD(c2d_world_stats, virial);

@@ -25,7 +25,7 @@ MIRRORED = {  # C struct -> its ctypes class
     "c2d_vec2f": collide2d.Vec2f, "c2d_bodyf": collide2d.Bodyf, "c2d_diskf": collide2d.Diskf,
     "c2d_surfacef": collide2d.Surfacef, "c2d_pairsf": _native.FLOAT["Pairs"],
     "c2d_world_event": _native.WorldEvent, "c2d_world_desc": _native.WorldDesc,
-    "c2d_world_stats": _native.WorldStats,
+    "c2d_world_stats": _native.WorldStats, "c2d_world_contact": _native.WorldContact,
 }
 # The Q16.16 API has no binding (no c2d_*x function is wrapped): its structs
 # are laid out by the program but have no ctypes twin to compare.
@@ -34,6 +34,7 @@ TYPES = {  # C type -> the ctypes type the binding passes it as
     "c2d_status": ctypes.c_int,  # the scalar calls' restype, the batch's status array (numpy.intc)
     "int": ctypes.c_int, "size_t": ctypes.c_size_t, "long": ctypes.c_long,  # c2d_version's restype
     "c2d_boundary": ctypes.c_int, "c2d_world_event_kind": ctypes.c_int,  # enums: WorldDesc, WorldEvent
+    "c2d_world_model": ctypes.c_int,
 }
 NOT_MIRRORED_TYPES = {"c2d_fixed"}
 
@@ -67,7 +68,7 @@ def layout(tmp_path_factory):
 def test_the_program_covers_every_struct_of_the_header(layout):
     structs, fields, _ = layout
     in_header = set(re.findall(r"typedef struct (\w+) \{", HEADER))
-    assert len(in_header) == 15
+    assert len(in_header) == 16
     assert set(structs) == in_header == set(MIRRORED) | NOT_MIRRORED
     for name in in_header:  # every member, as the header declares them
         body = re.search(r"typedef struct %s \{(.*?)\} %s;" % (name, name), HEADER, re.S).group(1)

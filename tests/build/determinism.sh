@@ -1,8 +1,9 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # determinism.sh OUTDIR [COUNT [AMALGAMATION]] - the library's output bits over a fixed case
-# set (tests/build/hash_vectors.c: COUNT cases of the variants and 20,000 of
-# the models) must hash the same under gcc and clang at -O0, -O2 and -O3,
+# set (tests/build/hash_vectors.c: COUNT cases of the variants, the world's
+# scenes and 20,000 cases of the models) must hash the same under gcc and
+# clang at -O0, -O2 and -O3,
 # all with -ffp-contract=off.  The harness is always compiled
 # the same way (gcc -O2 -ffp-contract=off) so only the library varies.
 # Then, for information only, one build without -ffp-contract=off (gcc -O3
@@ -28,10 +29,11 @@ if ! harness; then
     c2d_summary
     exit 1
 fi
-# The variants' hash and the models' (hash_vectors prints both), "V/M":
-# a build must agree on both.
+# The variants' hash, the world's and the models' (hash_vectors prints
+# them in that order), "V/W/M": a build must agree on all three.
 hashes() {
     sed -n -e 's/.* [0-9]* cases, hash \([0-9a-f]*\)$/\1/p' \
+        -e 's/.*: world hash \([0-9a-f]*\)$/\1/p' \
         -e 's/.* [0-9]* model cases, models hash \([0-9a-f]*\)$/\1/p' "$1" | paste -sd/ -
 }
 hash_of() { # name cc flags...

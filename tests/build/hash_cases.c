@@ -596,3 +596,246 @@ uint64_t c2d_hv_models_combined(const c2d_hv_models_hash *h)
         if (h->present[m]) fnv(&all, &h->model[m], sizeof h->model[m]);
     return all;
 }
+
+/* ------------------------------------------------------------ the world
+ *
+ * Scenes of the event-driven world, each driven through uneven slices of
+ * c2d_world_advance (zero-length and tiny ones among them) from its own
+ * splitmix64 stream; the event callback hashes every event as it comes
+ * (kind as one byte, time, a and b as 8 little-endian bytes, the impulse),
+ * every call's status is hashed, and at the end every disk's state and
+ * acceleration and the statistics.  The memory is static: a world of 100
+ * disks needs about 17 KiB, so the host (and any target that builds the
+ * world) runs it; the firmware builds leave the world out and hash none. */
+#if !defined(C2D_NO_DOUBLE) && !defined(C2D_NO_WORLD)
+#include "collide2d_world.h"
+
+enum { HV_WORLD_CAPACITY = 100, HV_WORLD_STATICS = 4 };
+
+typedef struct hv_world_run {
+    c2d_world *world;
+    int control; /* the callback changes the motion at timers */
+} hv_world_run;
+
+static c2d_hv_world_hash *world_out;
+static uint64_t world_memory[2816]; /* 22.5 KiB, 8-aligned: c2d_world_bytes is checked against it */
+
+static void mix_world(const void *p, size_t n)
+{
+    if (sink != NULL) sink(p, n);
+    fnv(&world_out->hash, p, n);
+}
+
+static void mix_world_status(c2d_status s)
+{
+    unsigned char c = (unsigned char)s;
+    mix_world(&c, 1);
+}
+
+static void mix_world_count(uint64_t k)
+{
+    unsigned char b[8];
+    int i;
+    for (i = 0; i < 8; i++) b[i] = (unsigned char)(k >> (8 * i));
+    mix_world(b, sizeof b);
+}
+
+/* At a timer (control scenes): a new acceleration from the disk's index
+ * and the time's parity, a kick for every third disk, a new timer for the
+ * even ones; every status hashed. */
+static void world_control(c2d_world *w, const c2d_world_event *e)
+{
+    c2d_vec2 acc, kick;
+    const double phase = (double)(e->a % 5) - 2;
+    acc.x = 0.15 * phase, acc.y = e->a % 2 ? -0.3 : 0.2;
+    mix_world_status(c2d_world_set_acceleration(w, e->a, acc));
+    if (e->a % 3 == 0) {
+        kick.x = -0.5 * phase, kick.y = 0.75;
+        mix_world_status(c2d_world_set_velocity(w, e->a, kick));
+    }
+    if (e->a % 2 == 0) mix_world_status(c2d_world_set_timer(w, e->a, e->time + 0.8125 + 0.0625 * (double)(e->a % 7)));
+    /* Refused inside the callback, and so hashed as refused. */
+    mix_world_status(c2d_world_advance(w, e->time + 1));
+    mix_world_status(c2d_world_remove(w, e->a));
+}
+
+static void world_event(void *user, const c2d_world_event *e)
+{
+    hv_world_run *run = (hv_world_run *)user;
+    const unsigned char kind = (unsigned char)e->kind;
+    mix_world(&kind, 1);
+    mix_world(&e->time, sizeof e->time);
+    mix_world_count(e->a);
+    mix_world_count(e->b);
+    mix_world(&e->impulse, sizeof e->impulse);
+    world_out->events++;
+    if (run->control && e->kind == C2D_WORLD_TIMER) world_control(run->world, e);
+}
+
+static c2d_world *world_make(c2d_world_desc *d, hv_world_run *run)
+{
+    c2d_world *w = NULL;
+    const size_t bytes = c2d_world_bytes(d);
+    d->on_event = world_event, d->user = run;
+    mix_world_count(bytes);
+    if (bytes == 0 || bytes > sizeof world_memory) return NULL;
+    mix_world_status(c2d_world_init(&w, world_memory, sizeof world_memory, d));
+    run->world = w;
+    return w;
+}
+
+/* side x rows disks on a lattice over [0, width) x [0, height), radii in
+ * [rmin, rmax), masses in [0.5, 2), speeds up to vmax per component. */
+static void world_fill(c2d_world *w, unsigned side, unsigned rows, double width, double height, double rmin,
+                       double rmax, double vmax)
+{
+    unsigned i;
+    for (i = 0; i < side * rows; i++) {
+        c2d_body b;
+        double r;
+        b.pos.x = ((double)(i % side) + 0.5) * width / (double)side;
+        b.pos.y = ((double)(i / side) + 0.5) * height / (double)rows;
+        b.vel.x = uniform(-vmax, vmax);
+        b.vel.y = uniform(-vmax, vmax);
+        b.mass = uniform(0.5, 2);
+        r = uniform(rmin, rmax);
+        mix_world_status(c2d_world_add(w, &b, r, NULL));
+    }
+}
+
+/* Uneven slices to `end`: mostly 0.05 to 0.6, one in eight tiny, one in
+ * sixteen of length zero (the same time again); every `kick_every`-th
+ * slice (0: never) kicks a disk and, once, removes one. */
+static void world_slices(c2d_world *w, double end, unsigned kick_every)
+{
+    double t = 0;
+    unsigned k = 0;
+    while (t < end) {
+        const uint64_t r = next();
+        double step = uniform(0.05, 0.6);
+        if (r % 8 == 0) step = 1e-9 * step;
+        if (r % 16 == 1) step = 0;
+        t = t + step > end ? end : t + step;
+        mix_world_status(c2d_world_advance(w, t));
+        if (kick_every != 0 && ++k % kick_every == 0) {
+            const size_t n = c2d_world_count(w);
+            c2d_vec2 v;
+            v.x = uniform(-2, 2);
+            v.y = uniform(-2, 2);
+            mix_world_status(c2d_world_set_velocity(w, (size_t)(r >> 32) % n, v));
+            if (k == 3 * kick_every) mix_world_status(c2d_world_remove(w, (size_t)(r >> 40) % n));
+        }
+    }
+}
+
+static void world_finish(const c2d_world *w)
+{
+    const size_t n = c2d_world_count(w);
+    c2d_world_stats s;
+    size_t i;
+    mix_world_count(n);
+    for (i = 0; i < n; i++) {
+        c2d_body b;
+        c2d_vec2 acc;
+        const c2d_status got = c2d_world_get(w, i, &b);
+        mix_world_status(got);
+        if (got == C2D_OK) mix_world(&b.pos, sizeof b.pos), mix_world(&b.vel, sizeof b.vel), mix_world(&b.mass, sizeof b.mass);
+        if (c2d_world_get_acceleration(w, i, &acc) == C2D_OK) mix_world(&acc, sizeof acc);
+    }
+    c2d_world_get_stats(w, &s);
+    mix_world_count(s.collisions);
+    mix_world_count(s.wall_collisions);
+    mix_world_count(s.events);
+    mix_world(&s.time, sizeof s.time);
+    mix_world(&s.virial, sizeof s.virial);
+}
+
+static c2d_world_desc world_desc(size_t capacity, double width, double height, c2d_boundary boundary, double e,
+                                 double ew)
+{
+    c2d_world_desc d;
+    unsigned char *p = (unsigned char *)&d;
+    size_t i;
+    for (i = 0; i < sizeof d; i++) p[i] = 0; /* every field's default, padding included */
+    d.capacity = capacity, d.width = width, d.height = height, d.boundary = boundary;
+    d.restitution = e, d.wall_restitution = ew;
+    return d;
+}
+
+/* Walls with e < 1: a dense gas cooling into clusters, resolved by the
+ * collapse rule; by default, then with its time and speed rules. */
+static void world_collapse(int rules)
+{
+    hv_world_run run = {NULL, 0};
+    c2d_world_desc d = world_desc(64, 9, 9, C2D_WALLS, 0.3, 0.5);
+    c2d_world *w;
+    d.collapse_time = rules ? 1e-3 : 0;
+    d.collapse_speed = rules ? 1e-2 : 0;
+    if ((w = world_make(&d, &run)) == NULL) return;
+    world_fill(w, 8, 8, 9, 9, 0.35, 0.55, 2);
+    world_slices(w, 25, 0);
+    world_finish(w);
+}
+
+/* A periodic elastic gas of mixed radii and masses, kicked now and then,
+ * one disk removed. */
+static void world_periodic(void)
+{
+    hv_world_run run = {NULL, 0};
+    c2d_world_desc d = world_desc(HV_WORLD_CAPACITY, 14, 12, C2D_PERIODIC, 1, 0);
+    c2d_world *w;
+    if ((w = world_make(&d, &run)) == NULL) return;
+    world_fill(w, 10, 10, 14, 12, 0.25, 0.5, 1.5);
+    world_slices(w, 30, 9);
+    world_finish(w);
+}
+
+/* Accelerations and timers (the callback changes them), walls, two
+ * segments and two circles to the right of the disks, which the
+ * accelerations drive into them. */
+static void world_statics(void)
+{
+    hv_world_run run = {NULL, 1};
+    c2d_world_desc d = world_desc(36, 16, 12, C2D_WALLS, 0.9, 0.8);
+    c2d_world *w;
+    c2d_vec2 p, q;
+    unsigned i;
+    d.statics = HV_WORLD_STATICS;
+    if ((w = world_make(&d, &run)) == NULL) return;
+    world_fill(w, 6, 6, 10, 12, 0.25, 0.4, 1);
+    p.x = 11, p.y = 2, q.x = 15, q.y = 5;
+    mix_world_status(c2d_world_add_segment(w, p, q, 0.7, NULL));
+    p.x = 12, p.y = 10.5, q.x = 15.5, q.y = 8;
+    mix_world_status(c2d_world_add_segment(w, p, q, 1, NULL));
+    p.x = 13.5, p.y = 6.5;
+    mix_world_status(c2d_world_add_circle(w, p, 0.6, 0.5, NULL));
+    p.x = 11.5, p.y = 7.25;
+    mix_world_status(c2d_world_add_circle(w, p, 0.3, 1, NULL));
+    for (i = 0; i < 36; i++) {
+        c2d_vec2 acc;
+        acc.x = uniform(0, 0.6);
+        acc.y = uniform(-0.4, 0.2);
+        mix_world_status(c2d_world_set_acceleration(w, i, acc));
+        mix_world_status(c2d_world_set_timer(w, i, 0.375 * (double)i + 0.25));
+    }
+    world_slices(w, 30, 13);
+    world_finish(w);
+}
+
+void c2d_hv_run_world(c2d_hv_world_hash *h, void (*bytes)(const void *p, size_t n))
+{
+    rng.s = 0xBB67AE8584CAA73Bull; /* the world's own stream */
+    world_out = h, sink = bytes;
+    h->hash = 0xCBF29CE484222325ull, h->events = 0, h->present = 1;
+    world_collapse(0);
+    world_collapse(1);
+    world_periodic();
+    world_statics();
+}
+#else
+void c2d_hv_run_world(c2d_hv_world_hash *h, void (*bytes)(const void *p, size_t n))
+{
+    (void)bytes;
+    h->hash = 0xCBF29CE484222325ull, h->events = 0, h->present = 0;
+}
+#endif

@@ -52,6 +52,24 @@ extern const char *const c2d_hv_model_name[C2D_HV_MODELS];
 /* Runs `count` model cases (sink as for c2d_hv_run). */
 void c2d_hv_run_models(unsigned long count, c2d_hv_models_hash *h, void (*sink)(const void *p, size_t n));
 
+/* The event-driven world (collide2d_world.h), hashed apart from the above
+ * over scenes of its own (hash_cases.c: walls with e < 1 and the collapse
+ * rule, a periodic elastic gas, accelerations and timers whose callback
+ * changes the motion among static segments and circles, kicks and a
+ * removal between uneven slices): every event (kind, time, indices,
+ * impulse), every status, and the final states and statistics.  Not
+ * present (present 0) when the world is compiled out (C2D_NO_WORLD, as the
+ * firmware builds are, or C2D_NO_DOUBLE).  The expected value is in
+ * docs/DETERMINISM.md's table ("world"): it moves whenever the world's
+ * arithmetic or event order changes, by design. */
+typedef struct c2d_hv_world_hash {
+    uint64_t hash;          /* "world" */
+    unsigned long events;   /* the events hashed, for the printout */
+    int present;
+} c2d_hv_world_hash;
+
+void c2d_hv_run_world(c2d_hv_world_hash *h, void (*sink)(const void *p, size_t n));
+
 /* One hash over the variants compiled in (FNV-1a of their hashes). */
 uint64_t c2d_hv_combined(const c2d_hv_hash *h);
 

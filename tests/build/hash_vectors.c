@@ -12,6 +12,9 @@
  * variants together); then, over the models' own 20,000 cases, their
  * inputs' hash ("model-inputs"), one hash per model and variant
  * ("rough-double" ...) and "hash_vectors: N model cases, models hash H".
+ * The world's hash ("world hash H" and its number of events) comes between
+ * the two, when the world is compiled in: the last three lines stay the
+ * models' (accel-double, accel-float, models hash).
  * DUMP receives the raw bytes hashed, to locate differences (cmp -l).  Bad arguments: a message and exit status 2. */
 #include "collide2d.h"
 #include "hash_cases.h"
@@ -34,6 +37,7 @@ int main(int argc, char **argv)
     unsigned long count = C2D_HV_DEFAULT_COUNT;
     c2d_hv_hash h;
     c2d_hv_models_hash m;
+    c2d_hv_world_hash wh;
     char hex[17];
     int v;
     if (argc > 1) {
@@ -62,6 +66,12 @@ int main(int argc, char **argv)
     }
     c2d_hv_hex(c2d_hv_combined(&h), hex);
     printf("hash_vectors: %lu cases, hash %s\n", count, hex);
+    c2d_hv_run_world(&wh, dump != NULL ? to_dump : NULL);
+    if (wh.present) {
+        c2d_hv_hex(wh.hash, hex);
+        printf("hash_vectors: world hash %s\n", hex);
+        printf("hash_vectors: world scenes, %lu events\n", wh.events);
+    }
     c2d_hv_run_models(C2D_HV_MODELS_DEFAULT_COUNT, &m, dump != NULL ? to_dump : NULL);
     c2d_hv_hex(m.inputs, hex);
     printf("hash_vectors: model-inputs hash %s\n", hex);

@@ -9,7 +9,8 @@
 #   two marker lines) from this run, when every target agrees.
 #   Each COMMAND prints lines "...: VARIANT hash H" (VARIANT: inputs, double,
 #   float, Q16.16, and for the models model-inputs, rough-double,
-#   rough-float, accel-double, accel-float), as hash_vectors and hash_mcu do.
+#   rough-float, accel-double, accel-float, and the world's, "world"), as
+#   hash_vectors and hash_mcu do.
 # Prints one line per target, then "cross: N passed, N failed".
 set -u
 [ $# -ge 6 ] || { echo "usage: cross.sh check|write OUTDIR DOC NAME DESCRIPTION COMMAND ..." >&2; exit 2; }
@@ -24,6 +25,9 @@ end='<!-- hash table: end -->'
 variants="inputs double float Q16.16"
 # The models' hashes, over their own case stream (hash_cases.h).
 models="model-inputs rough-double rough-float accel-double accel-float"
+# The world's, over its own scenes, where it is compiled in (not in the
+# firmware builds: C2D_NO_WORLD).
+world="world"
 
 # Start every run; each writes OUTDIR/NAME.txt and OUTDIR/NAME.rc.
 names=""
@@ -42,7 +46,7 @@ hash_of() { # NAME VARIANT: the hash a run printed, or nothing
     sed -n "s/^.*: $2 hash \([0-9a-f]\{16\}\)\$/\1/p" "$out/$1.txt" | tail -n 1
 }
 hashed() { # NAME: the variants and models a run hashed (inputs excluded)
-    for v in double float Q16.16 rough-double rough-float accel-double accel-float; do
+    for v in double float Q16.16 rough-double rough-float accel-double accel-float world; do
         [ -n "$(hash_of "$1" "$v")" ] && printf '%s ' "$v"
     done
 }
@@ -70,7 +74,7 @@ for name in $names; do
     done
     if [ "$name" = "$ref" ]; then
         c2d_passed
-        echo "cross: $name ($(cat "$out/$name.desc")): $(for v in $variants $models; do
+        echo "cross: $name ($(cat "$out/$name.desc")): $(for v in $variants $models $world; do
             printf '%s %s  ' "$v" "$(hash_of "$name" "$v")"; done)"
     elif [ -z "$differ" ]; then
         c2d_passed
@@ -89,9 +93,9 @@ if [ "$mode" = write ]; then
         table=$out/table.md
         {
             echo "$begin"
-            echo "| variant | hash of the 100,000 cases (models: of their 20,000) |"
+            echo "| variant | hash of the 100,000 cases (models: of their 20,000; world: of its scenes) |"
             echo "|---|---|"
-            for v in $variants $models; do echo "| $v | \`$(hash_of "$ref" "$v")\` |"; done
+            for v in $variants $models $world; do echo "| $v | \`$(hash_of "$ref" "$v")\` |"; done
             echo
             echo "| target | built and run | variants hashed | result |"
             echo "|---|---|---|---|"

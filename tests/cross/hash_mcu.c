@@ -3,8 +3,8 @@
  * hashes of tests/build/hash_cases.c (the host's, bit for bit), printed
  * through the semihosting console as the host's hash_vectors prints them,
  * "<target>: <variant> hash H", for the variants compiled in (C2D_NO_* as
- * the target's library), then the models' hashes ("model-inputs",
- * "rough-double" ...) for those compiled in.  tests/cross/cross.sh compares them with x86-64.
+ * the target's library), the world's if compiled in, then the models'
+ * hashes ("model-inputs", "rough-double" ...) for those compiled in.  tests/cross/cross.sh compares them with x86-64.
  * The last line is "<target>: 1 passed, 0 failed" once the run completed. */
 #include "collide2d.h"
 #include "harness.h"
@@ -36,6 +36,7 @@ int main(void)
 {
     static c2d_hv_hash h;
     static c2d_hv_models_hash m;
+    static c2d_hv_world_hash wh;
     c2d_tally tally = {1, 0};
     int v;
     c2d_hv_run(C2D_HV_DEFAULT_COUNT, &h, NULL);
@@ -43,6 +44,8 @@ int main(void)
     for (v = 0; v < C2D_HV_VARIANTS; v++)
         if (h.present[v]) put_hash(c2d_hv_name[v], -1, h.variant[v]);
     put_hash(" cases,", (long)C2D_HV_DEFAULT_COUNT, c2d_hv_combined(&h));
+    c2d_hv_run_world(&wh, NULL); /* none in the firmware builds (C2D_NO_WORLD) */
+    if (wh.present) put_hash("world", -1, wh.hash);
     c2d_hv_run_models(C2D_HV_MODELS_DEFAULT_COUNT, &m, NULL);
     put_hash("model-inputs", -1, m.inputs);
     for (v = 0; v < C2D_HV_MODELS; v++)

@@ -579,7 +579,7 @@ static void stop_at_timer(void *user, const c2d_world_event *e)
     {
         c2d_body b = {{15, 3}, {0, 0}, 1};
         s->refused = c2d_world_advance(s->w, e->time + 1) == C2D_INVALID && c2d_world_add(s->w, &b, 0.5, NULL) == C2D_INVALID &&
-                     c2d_world_remove(s->w, e->a) == C2D_INVALID;
+                     c2d_world_add_sensor(s->w, b.pos, 0.5, NULL) == C2D_INVALID;
     }
 }
 
