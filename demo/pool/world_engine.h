@@ -15,10 +15,6 @@
 
 namespace demo {
 
-// Whether make_world_engine runs this model on this table: the frictionless
-// scenes in a closed box (elastic, gas, cradle).
-bool world_engine_runs(const Table &table, const Model &model);
-
 std::unique_ptr<Engine> make_world_engine(const std::vector<Ball> &balls, const Table &table, const Model &model);
 
 }  // namespace demo
