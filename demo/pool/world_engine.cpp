@@ -130,7 +130,12 @@ private:
 
     // events
     bool resolving(const c2d_world_event &e) const;
-    bool accelerating_as_tracked(int i) const;
+    bool repeating(size_t a, size_t b, double t);
+    static constexpr long kMostRepeats = 8;
+    size_t repeat_a_ = kNoDisk, repeat_b_ = kNoDisk;
+    double repeat_t_ = -1;
+    long repeats_ = 0;
+    void take_resting_acceleration(int i);
     void impact(const c2d_world_event &e);
     void fixed(const c2d_world_event &e);
     void timer(const c2d_world_event &e);
@@ -358,6 +363,7 @@ c2d_status WorldEngine::resolve_static(void *user, const c2d_world_contact *c, c
 // it touches, the other one's new state included), else rough.
 c2d_status WorldEngine::resolve_pair(const c2d_world_contact &c, c2d_body &a, c2d_body &b) {
     const int ia = ball_of_[c.a], ib = ball_of_[c.b];
+    if (repeating(c.a, c.b, c.time)) return C2D_INVALID;
     const Ball sa = with_spin(ia, c.time, a.pos.x - offset_, a.pos.y - offset_, a.vel.x, a.vel.y);
     const Ball sb = with_spin(ib, c.time, b.pos.x - offset_, b.pos.y - offset_, b.vel.x, b.vel.y);
     const double d = std::hypot(c.normal.x, c.normal.y), nx = c.normal.x / d, ny = c.normal.y / d;
@@ -575,15 +581,31 @@ void WorldEngine::waypoint(int i) {
     log_->waypoints.push_back(Waypoint{i, k.t0 - frame_start_, k.start.x, k.start.y, k.start.vx, k.start.vy, k.ax, k.ay});
 }
 
-// Whether the world moves ball i with its track's acceleration: its rest
-// rule for pressed pairs takes the component towards the other away, which
-// the pool model does not (it ends slides and moves pressed balls as one,
-// move_together), so a ball it changed takes its track's again.
-bool WorldEngine::accelerating_as_tracked(int i) const {
-    const Track &k = track_[static_cast<size_t>(i)];
+// The world's rest rule for a pair pressed together by their accelerations
+// takes each one's component towards the other away (they rest on each
+// other); imposing the track's again would press them back at once, an
+// endless stream of impacts at one instant, so the track takes the world's
+// (the checker's waypoint with it).
+void WorldEngine::take_resting_acceleration(int i) {
+    const size_t k = static_cast<size_t>(i);
     c2d_vec2 a;
-    return c2d_world_get_acceleration(world_, world_index_[static_cast<size_t>(i)], &a) == C2D_OK && a.x == k.ax &&
-           a.y == k.ay;
+    if (c2d_world_get_acceleration(world_, world_index_[k], &a) != C2D_OK || (a.x == track_[k].ax && a.y == track_[k].ay))
+        return;
+    Ball now = state_of(world_index_[k], last_event_);
+    now.motion = track_[k].start.motion;
+    track_[k].start = now, track_[k].t0 = last_event_;
+    track_[k].ax = a.x, track_[k].ay = a.y;
+    waypoint(i);
+}
+
+// Whether the pair meets again at the same instant more than kMostRepeats
+// times: a slow contact the pool model and the world's rest rule pass back
+// and forth (the model presses them together again), which the world's
+// own resolution then ends.
+bool WorldEngine::repeating(size_t a, size_t b, double t) {
+    if (a == repeat_a_ && b == repeat_b_ && t == repeat_t_) ++repeats_;
+    else repeat_a_ = a, repeat_b_ = b, repeat_t_ = t, repeats_ = 0;
+    return repeats_ > kMostRepeats;
 }
 
 // Whether event e is the contact a resolver has just seen.
@@ -605,14 +627,20 @@ void WorldEngine::impact(const c2d_world_event &e) {
     const int ia = ball_of_[e.a], ib = ball_of_[e.b];
     Ball a = state_of(e.a, e.time), b = state_of(e.b, e.time);
     const bool mine = resolving(e);
+    if (repeats_ > kMostRepeats) {  // the world's own rules end it: no changes of ours
+        ++stats_->ball_ball_collisions;
+        return;
+    }
     if (mine && kept(a, resolved_.after_a) && kept(b, resolved_.after_b)) {  // the resolver's spins
         a = with_position(resolved_.after_a, a), b = with_position(resolved_.after_b, b);
     } else {  // the world's own resolution: no spin changed
         a.motion = motion_of(a), b.motion = motion_of(b);
     }
     // a ball the contact left as it was keeps its track
-    if (!mine || !same_motion(a, resolved_.before_a) || !accelerating_as_tracked(ia)) restart(ia, a, e.time, false);
-    if (!mine || !same_motion(b, resolved_.before_b) || !accelerating_as_tracked(ib)) restart(ib, b, e.time, false);
+    if (!mine || !same_motion(a, resolved_.before_a)) restart(ia, a, e.time, false);
+    if (!mine || !same_motion(b, resolved_.before_b)) restart(ib, b, e.time, false);
+    take_resting_acceleration(ia);
+    take_resting_acceleration(ib);
     if (mine && resolved_.absorbed && closing_by_acceleration(ia, ib, e.time) > 0) move_together(ia, ib, e.time);
     ++stats_->ball_ball_collisions;
     if (record_paths_) log_->contacts.push_back(pair_key(ia, ib));
