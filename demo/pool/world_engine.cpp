@@ -188,8 +188,8 @@ private:
 WorldEngine::WorldEngine(const std::vector<Ball> &balls, const Table &table, const Model &model,
                          WorldBroadphase broadphase)
     : Engine(balls), model_(model), table_(table), walls_(is_closed_box(table)),
-      offset_(is_closed_box(table) ? 0.0 : kMargin), use_tree_(broadphase == WorldBroadphase::Tree) {
-    faces_ = table.cushions;
+      offset_(is_closed_box(table) ? 0.0 : kMargin), faces_(table.cushions),
+      use_tree_(broadphase == WorldBroadphase::Tree) {
     for (const Pocket &p : table.pockets)
         for (const Jaw &j : p.jaws) faces_.push_back(j.facing);
     track_.resize(balls_.size());
@@ -687,9 +687,9 @@ void WorldEngine::take_resting_acceleration(int i) {
     c2d_vec2 a;
     if (c2d_world_get_acceleration(world_, world_index_[k], &a) != C2D_OK || (a.x == track_[k].ax && a.y == track_[k].ay))
         return;
-    Ball now = state_of(world_index_[k], last_event_);
-    now.motion = track_[k].start.motion;
-    track_[k].start = now, track_[k].t0 = last_event_;
+    Ball rested = state_of(world_index_[k], last_event_);
+    rested.motion = track_[k].start.motion;
+    track_[k].start = rested, track_[k].t0 = last_event_;
     track_[k].ax = a.x, track_[k].ay = a.y;
     waypoint(i);
 }
