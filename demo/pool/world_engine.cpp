@@ -148,7 +148,7 @@ private:
     void pocket(const c2d_world_event &e);
     Ball after_event(int i, double t) const;
     void record(double t, EventKind kind, int ball, int other, int feature, double impulse);
-    void waypoint(int ball);
+    void waypoint(int i);
 
     const Model model_;
     const Table table_;
@@ -463,7 +463,7 @@ void WorldEngine::limits_of(int i, double t, const Ball &b, int partner, const B
     const double reach = kBallDiameter * (1 + 1e-9);
     for (int k : ball_of_) {
         if (k == i || !balls_[static_cast<size_t>(k)].active) continue;
-        const Ball o = k == partner ? *partner_state : ball_at(k, t);
+        const Ball o = partner_state != nullptr && k == partner ? *partner_state : ball_at(k, t);
         const double dx = o.x - b.x, dy = o.y - b.y, d = std::hypot(dx, dy);
         // a ball moving off lets b follow at its speed; one coming at b
         // is held back when it is absorbed itself, not b pushed away
