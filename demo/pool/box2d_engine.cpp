@@ -164,7 +164,7 @@ void Box2dEngine::contact_event(b2Contact *contact, int a, int b) {
     };
     if (a < 0 || b < 0) {
         record(a >= 0 ? a : b, -1);
-    } else {  // one record for each ball, as the exact engine
+    } else {  // one record for each ball, as the world engine
         const bool a_first = balls_[static_cast<size_t>(a)].number <= balls_[static_cast<size_t>(b)].number;
         record(a_first ? a : b, a_first ? b : a);
         record(a_first ? b : a, a_first ? a : b);

@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-// broadphase.h - where the exact engine finds its candidates: boxes (in
-// Box2D units, exact_engine.cpp) with a tag, and the query "every box that
-// overlaps this one".  Two answers to it:
+// broadphase.h - candidate pairs from Box2D's b2DynamicTree: boxes (in
+// Box2D units) with a tag, and the query "every box that overlaps this
+// one".  The pool scenes' world engine plugs the dynamic tree into the
+// world's caller-supplied broadphase (world_engine.cpp: Box2D finds the
+// candidates, the library resolves).  Two answers to the query:
 //   dynamic tree  Box2D's b2DynamicTree: any sizes, any spread; the pool
 //                 scenes' broadphase;
 //   cell grid     a uniform grid of square cells over a fixed region, each
@@ -15,8 +17,7 @@
 //                 levels of nodes scattered in memory and re-inserts a moved
 //                 box from the root.
 // Both report exactly the boxes that overlap the query (touching counts, as
-// b2TestOverlap), each once, so the engine finds the same events with
-// either; only the order of the tags differs.
+// b2TestOverlap), each once; only the order of the tags differs.
 #ifndef C2D_DEMO_BROADPHASE_H
 #define C2D_DEMO_BROADPHASE_H
 

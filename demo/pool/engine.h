@@ -2,8 +2,8 @@
 // engine.h - what the simulation asks of an engine: move the balls on by a
 // frame, resolving the impacts on the way, and report what it resolved, so
 // the checker can tell a resolved contact from a tunnelled pair.  Two
-// engines: the exact one (exact_engine.h) and Box2D's own solver
-// (box2d_engine.h).
+// engines: the library's event-driven world (world_engine.h) and Box2D's
+// own solver (box2d_engine.h).
 #ifndef C2D_DEMO_ENGINE_H
 #define C2D_DEMO_ENGINE_H
 
@@ -58,7 +58,7 @@ inline uint64_t pair_key(int i, int j) {
 
 struct FrameLog {
     std::vector<uint64_t> contacts;    // pair_key of the pairs resolved this frame
-    std::vector<Waypoint> waypoints;   // exact engine only: Box2D moves straight per step
+    std::vector<Waypoint> waypoints;   // the world engine only: Box2D moves straight per step
     std::vector<Event> events;         // in time order
 };
 

@@ -7,7 +7,6 @@
 #include <thread>
 
 #include "pool/box2d_engine.h"
-#include "pool/exact_engine.h"
 #include "pool/world_engine.h"
 
 namespace demo {
@@ -16,10 +15,12 @@ namespace {
 
 std::unique_ptr<Engine> make_engine(const SimConfig &config, const std::vector<Ball> &balls, const Table &table) {
     if (config.response == Response::Box2d) return make_box2d_engine(balls, table, config.model);
-    if (world_engine_runs(table, config.model)) return make_world_engine(balls, table, config.model);
-    // the gas's many even balls: a uniform grid finds candidates faster than
-    // Box2D's tree (broadphase.h); the pool scenes keep the tree
-    return make_exact_engine(balls, table, config.model, config.scene == Scene::Gas);
+    // the pool scenes' candidates from Box2D's tree; the gas's and the
+    // cradle's from the world's cells (100,000 disks: the cells are faster)
+    const bool pool = config.scene != Scene::Gas && config.scene != Scene::Cradle;
+    return make_world_engine(balls, table, config.model,
+                             pool && config.broadphase == WorldBroadphase::Tree ? WorldBroadphase::Tree
+                                                                                : WorldBroadphase::Cells);
 }
 
 // The cue ball's index, or -1.

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-// slow_contact.h - what the exact engine does with contacts too slow for an
+// slow_contact.h - what the world engine does with contacts too slow for an
 // impulse (Model::absorb_below): velocities limited so as to approach
 // nothing a ball touches, and slides ended at once.  Pure functions of a
 // ball's state; the engine finds the contacts.
