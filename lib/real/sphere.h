@@ -205,12 +205,56 @@ static c2d_real c2d_unit_normal(c2d_real *nx, c2d_real *ny, c2d_real x, c2d_real
  * ~3u (|dvx| + |dvy|)) only when that is within 6u of the result, else
  * from d = dh + dl exactly with exact products (c2d_dot2,
  * real/arith/exact.h), to ~1 ulp. */
+/* The exponent of the largest |component| (0 when all are zero). */
+static int c2d_sphere_scale_of(c2d_real a, c2d_real b, c2d_real c, c2d_real d)
+{
+    c2d_real m = c2d_abs(a) > c2d_abs(b) ? c2d_abs(a) : c2d_abs(b);
+    m = c2d_abs(c) > m ? c2d_abs(c) : m;
+    m = c2d_abs(d) > m ? c2d_abs(d) : m;
+    return m == 0 ? 0 : c2d_ilogb(m);
+}
+
+static void c2d_sphere_scale_vec(c2d_real_vec *out, const c2d_real_vec *v, int k)
+{
+    out->x = c2d_scale2(v->x, k);
+    out->y = c2d_scale2(v->y, k);
+}
+
+/* The exact products assume no overflow (Veltkamp's split overflows
+ * beyond 2^996, a product beyond the range), and the inputs here come from
+ * anywhere in it: the normal and the velocities are scaled by powers of
+ * two to largest components in [1, 2) first, the result back.  Exact (the
+ * same bits) wherever the unscaled evaluation neither overflows nor
+ * underflows; elsewhere only components below 2^EMIN of the largest lose
+ * bits, far inside the ~u^2 of the terms the double-double allows. */
 static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len, c2d_real nx,
                                  c2d_real ny, const c2d_real_vec *va, const c2d_real_vec *vb)
 {
     c2d_real dvx = vb->x - va->x, dvy = vb->y - va->y, gn = dvx * nx + dvy * ny;
+    c2d_real_vec h, l, a, b;
+    int kn, kv;
     if (2 * c2d_abs(gn) >= c2d_abs(dvx) + c2d_abs(dvy)) return gn;
-    return c2d_dot2(dh, dl, va, vb) / len;
+    kn = c2d_sphere_scale_of(dh->x, dh->y, 0, 0);
+    kv = c2d_sphere_scale_of(va->x, va->y, vb->x, vb->y);
+    c2d_sphere_scale_vec(&h, dh, -kn);
+    c2d_sphere_scale_vec(&l, dl, -kn);
+    c2d_sphere_scale_vec(&a, va, -kv);
+    c2d_sphere_scale_vec(&b, vb, -kv);
+    return c2d_scale2(c2d_dot2(&h, &l, &a, &b) / c2d_scale2(len, -kn), kv);
+}
+
+/* |(x, y)|: plainly, or scaled by a power of two where the squares would
+ * overflow or underflow (the same bits wherever they do not). */
+static c2d_real c2d_sphere_length(c2d_real x, c2d_real y)
+{
+    c2d_real s = C2D_R_SQRT(x * x + y * y);
+    int k;
+    if ((s <= C2D_R_MAX && s >= c2d_pow2(C2D_R_EMIN / 2)) || !c2d_finite4(x, y, 0, 0) || (x == 0 && y == 0))
+        return s;
+    k = c2d_sphere_scale_of(x, y, 0, 0);
+    x = c2d_scale2(x, -k);
+    y = c2d_scale2(y, -k);
+    return c2d_scale2(C2D_R_SQRT(x * x + y * y), k);
 }
 
 static void c2d_ball_body(c2d_real_body *body, const c2d_real_ball *d)
@@ -278,7 +322,7 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     gn = c2d_normal_speed(&dh, &dl, len, nx, ny, &a->vel, &b->vel);
     gt = (dvy * nx - dvx * ny) - (a->radius * a->spin[2] + b->radius * b->spin[2]);
     gz = -(a->radius * (a->spin[0] * ny - a->spin[1] * nx) + b->radius * (b->spin[0] * ny - b->spin[1] * nx));
-    g = C2D_R_SQRT(gt * gt + gz * gz);
+    g = c2d_sphere_length(gt, gz);
     jn = gn < 0 ? -(1 + s->restitution) * gn / inv_mn : 0;
     if (!c2d_finite4(g, jn, inv_mt, 0)) return C2D_RANGE;
     if (g == 0 || jn == 0) {
@@ -369,7 +413,7 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     pn = (1 + c->restitution) * d->mass * (cs * vn);
     s1 = vt + d->radius * (cs * d->spin[2] - sn * wn);
     s2 = -sn * vn - d->radius * wt;
-    sl = C2D_R_SQRT(s1 * s1 + s2 * s2);
+    sl = c2d_sphere_length(s1, s2);
     if (!c2d_finite4(pn, sl, 0, 0)) return C2D_RANGE;
     if (sl == 0) {
         f = 0;

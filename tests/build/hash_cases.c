@@ -386,7 +386,17 @@ typedef struct hv_model_scene {
     double normal_given; /* 0 or 1: c2d_collide_rough or _normal */
 } hv_model_scene;
 
-const char *const c2d_hv_model_name[C2D_HV_MODELS] = {"rough-double", "rough-float", "accel-double", "accel-float"};
+const char *const c2d_hv_model_name[C2D_HV_MODELS] = {"rough-double",  "rough-float",  "sphere-double",
+                                                       "sphere-float", "accel-double", "accel-float"};
+
+/* A sphere scene: two balls near contact (pool-like, or every field
+ * anywhere in the range), a ball-ball surface, and a cushion for ball a. */
+typedef struct hv_ball { double pos[2], vel[2], spin[3], mass, radius, inertia; } hv_ball;
+typedef struct hv_sphere_scene {
+    hv_ball a, b;
+    double e, mu, boost, decay;          /* ball-ball surface */
+    double normal[2], height, ce, cmu;   /* cushion: its height as given */
+} hv_sphere_scene;
 
 static c2d_hv_models_hash *models_out;
 
@@ -497,7 +507,83 @@ static void make_accel(hv_model_scene *s)
     s->horizon = next() % 2 ? infinity() : uniform(0, 8);
 }
 
+static void sphere_ball_plain(hv_ball *d, double x, double y)
+{
+    int k;
+    d->pos[0] = x, d->pos[1] = y;
+    d->vel[0] = uniform(-5, 5), d->vel[1] = uniform(-5, 5);
+    for (k = 0; k < 3; k++) d->spin[k] = uniform(-100, 100);
+    d->radius = next() % 16 == 0 ? 0.0 : uniform(0.02, 1);
+    d->mass = next() % 12 == 0 ? infinity() : uniform(0.1, 10);
+    d->inertia = next() % 8 == 0 ? infinity() : d->mass * uniform(0.001, 1);
+}
+
+static void sphere_ball_wide(hv_ball *d)
+{
+    int k;
+    d->pos[0] = extreme(), d->pos[1] = extreme(), d->vel[0] = extreme(), d->vel[1] = extreme();
+    for (k = 0; k < 3; k++) d->spin[k] = extreme();
+    d->mass = absolute_sometimes(extreme());
+    d->radius = absolute_sometimes(extreme()), d->inertia = absolute_sometimes(extreme());
+}
+
+static void make_sphere(hv_sphere_scene *s)
+{
+    if (next() % 4 != 0) {
+        const double x = uniform(-2, 2);
+        const double y = uniform(-2, 2);
+        const double dx = uniform(-2, 2);
+        const double dy = uniform(-2, 2);
+        sphere_ball_plain(&s->a, x, y);
+        sphere_ball_plain(&s->b, x + dx, y + dy);
+        s->e = restitution(), s->mu = friction();
+        s->boost = next() % 2 ? 0.0 : uniform(0, 0.2);
+        s->decay = uniform(0, 3);
+        s->normal[0] = uniform(-1, 1), s->normal[1] = uniform(-1, 1);
+        s->height = s->a.radius * uniform(1, 2); /* one rounding: within [R, 2R] */
+        s->ce = restitution(), s->cmu = friction();
+    } else {
+        sphere_ball_wide(&s->a);
+        sphere_ball_wide(&s->b);
+        s->e = next() % 4 == 0 ? extreme() : restitution();
+        s->mu = next() % 4 == 0 ? extreme() : friction();
+        s->boost = absolute_sometimes(extreme()), s->decay = absolute_sometimes(extreme());
+        s->normal[0] = extreme(), s->normal[1] = extreme();
+        s->height = next() % 2 ? extreme() : s->a.radius;
+        s->ce = next() % 4 == 0 ? extreme() : restitution();
+        s->cmu = next() % 4 == 0 ? extreme() : friction();
+    }
+}
+
 #ifndef C2D_NO_DOUBLE
+static void ball_to_double(const hv_ball *h, c2d_ball *d)
+{
+    int k;
+    d->pos.x = h->pos[0], d->pos.y = h->pos[1], d->vel.x = h->vel[0], d->vel.y = h->vel[1];
+    for (k = 0; k < 3; k++) d->spin[k] = h->spin[k];
+    d->mass = h->mass, d->radius = h->radius, d->inertia = h->inertia;
+}
+
+static void mix_ball(int model, const c2d_ball *b)
+{
+    mix_model(model, &b->vel, sizeof b->vel), mix_model(model, b->spin, sizeof b->spin);
+}
+
+static void run_sphere_double(const hv_sphere_scene *s)
+{
+    c2d_ball a, b;
+    c2d_ball_surface f;
+    c2d_cushion c;
+    ball_to_double(&s->a, &a), ball_to_double(&s->b, &b);
+    f.restitution = s->e, f.friction = s->mu, f.friction_boost = s->boost, f.friction_decay = s->decay;
+    mix_model_status(C2D_HV_SPHERE_DOUBLE, c2d_collide_balls(&a, &b, f));
+    mix_ball(C2D_HV_SPHERE_DOUBLE, &a), mix_ball(C2D_HV_SPHERE_DOUBLE, &b);
+    c.normal.x = s->normal[0], c.normal.y = s->normal[1];
+    c.height = s->height, c.restitution = s->ce, c.friction = s->cmu;
+    mix_model_status(C2D_HV_SPHERE_DOUBLE, c2d_collide_cushion(&a, c));
+    mix_ball(C2D_HV_SPHERE_DOUBLE, &a);
+}
+
 static void disk_to_double(const hv_disk *h, c2d_disk *d)
 {
     d->pos.x = h->pos[0], d->pos.y = h->pos[1], d->vel.x = h->vel[0], d->vel.y = h->vel[1];
@@ -527,6 +613,36 @@ static void run_models_double(const hv_model_scene *s)
 #endif
 
 #ifndef C2D_NO_FLOAT
+static void ball_to_float(const hv_ball *h, c2d_ballf *d)
+{
+    int k;
+    d->pos.x = to_float(h->pos[0]), d->pos.y = to_float(h->pos[1]);
+    d->vel.x = to_float(h->vel[0]), d->vel.y = to_float(h->vel[1]);
+    for (k = 0; k < 3; k++) d->spin[k] = to_float(h->spin[k]);
+    d->mass = to_float(h->mass), d->radius = to_float(h->radius), d->inertia = to_float(h->inertia);
+}
+
+static void mix_ballf(int model, const c2d_ballf *b)
+{
+    mix_model(model, &b->vel, sizeof b->vel), mix_model(model, b->spin, sizeof b->spin);
+}
+
+static void run_sphere_float(const hv_sphere_scene *s)
+{
+    c2d_ballf a, b;
+    c2d_ball_surfacef f;
+    c2d_cushionf c;
+    ball_to_float(&s->a, &a), ball_to_float(&s->b, &b);
+    f.restitution = to_float(s->e), f.friction = to_float(s->mu);
+    f.friction_boost = to_float(s->boost), f.friction_decay = to_float(s->decay);
+    mix_model_status(C2D_HV_SPHERE_FLOAT, c2d_collide_ballsf(&a, &b, f));
+    mix_ballf(C2D_HV_SPHERE_FLOAT, &a), mix_ballf(C2D_HV_SPHERE_FLOAT, &b);
+    c.normal.x = to_float(s->normal[0]), c.normal.y = to_float(s->normal[1]);
+    c.height = to_float(s->height), c.restitution = to_float(s->ce), c.friction = to_float(s->cmu);
+    mix_model_status(C2D_HV_SPHERE_FLOAT, c2d_collide_cushionf(&a, c));
+    mix_ballf(C2D_HV_SPHERE_FLOAT, &a);
+}
+
 static void disk_to_float(const hv_disk *h, c2d_diskf *d)
 {
     d->pos.x = to_float(h->pos[0]), d->pos.y = to_float(h->pos[1]);
@@ -563,6 +679,7 @@ static void run_models_float(const hv_model_scene *s)
 void c2d_hv_run_models(unsigned long count, c2d_hv_models_hash *h, void (*bytes)(const void *p, size_t n))
 {
     static hv_model_scene s; /* static: off a microcontroller's small stack */
+    static hv_sphere_scene sp;
     unsigned long done;
     int m;
     rng.s = 0x6A09E667F3BCC909ull; /* not the variants' seed: its own stream */
@@ -570,10 +687,10 @@ void c2d_hv_run_models(unsigned long count, c2d_hv_models_hash *h, void (*bytes)
     h->inputs = 0xCBF29CE484222325ull;
     for (m = 0; m < C2D_HV_MODELS; m++) h->model[m] = 0xCBF29CE484222325ull, h->present[m] = 0;
 #ifndef C2D_NO_DOUBLE
-    h->present[C2D_HV_ROUGH_DOUBLE] = h->present[C2D_HV_ACCEL_DOUBLE] = 1;
+    h->present[C2D_HV_ROUGH_DOUBLE] = h->present[C2D_HV_SPHERE_DOUBLE] = h->present[C2D_HV_ACCEL_DOUBLE] = 1;
 #endif
 #ifndef C2D_NO_FLOAT
-    h->present[C2D_HV_ROUGH_FLOAT] = h->present[C2D_HV_ACCEL_FLOAT] = 1;
+    h->present[C2D_HV_ROUGH_FLOAT] = h->present[C2D_HV_SPHERE_FLOAT] = h->present[C2D_HV_ACCEL_FLOAT] = 1;
 #endif
     for (done = 0; done < count; done++) {
         make_rough(&s);
@@ -584,6 +701,16 @@ void c2d_hv_run_models(unsigned long count, c2d_hv_models_hash *h, void (*bytes)
 #endif
 #ifndef C2D_NO_FLOAT
         run_models_float(&s);
+#endif
+    }
+    rng.s = 0xBB67AE8584CAA73Bull; /* the sphere cases' own stream */
+    for (done = 0; done < count; done++) {
+        make_sphere(&sp);
+#ifndef C2D_NO_DOUBLE
+        run_sphere_double(&sp);
+#endif
+#ifndef C2D_NO_FLOAT
+        run_sphere_float(&sp);
 #endif
     }
 }

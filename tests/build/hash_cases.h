@@ -33,13 +33,24 @@ extern const char *const c2d_hv_name[C2D_HV_VARIANTS];
  * hashed (to locate a difference between two targets with cmp -l). */
 void c2d_hv_run(unsigned long count, c2d_hv_hash *h, void (*sink)(const void *p, size_t n));
 
-/* The models (c2d_collide_rough and _normal, c2d_time_of_impact_accel), in
- * double and float, hashed apart from the variants above over their own
- * case stream, so the variants' recorded hashes do not move when models
- * are added: "rough-double", "rough-float", "accel-double", "accel-float". */
+/* The models (c2d_collide_rough and _normal, c2d_collide_balls and
+ * c2d_collide_cushion, c2d_time_of_impact_accel), in double and float,
+ * hashed apart from the variants above over their own case stream, so the
+ * variants' recorded hashes do not move when models are added:
+ * "rough-double", "rough-float", "sphere-double", "sphere-float",
+ * "accel-double", "accel-float" (the sphere cases on a stream of their own
+ * after the others', so model-inputs and the others' hashes stay). */
 #define C2D_HV_MODELS_DEFAULT_COUNT 20000ul
 
-enum { C2D_HV_ROUGH_DOUBLE, C2D_HV_ROUGH_FLOAT, C2D_HV_ACCEL_DOUBLE, C2D_HV_ACCEL_FLOAT, C2D_HV_MODELS };
+enum {
+    C2D_HV_ROUGH_DOUBLE,
+    C2D_HV_ROUGH_FLOAT,
+    C2D_HV_SPHERE_DOUBLE,
+    C2D_HV_SPHERE_FLOAT,
+    C2D_HV_ACCEL_DOUBLE,
+    C2D_HV_ACCEL_FLOAT,
+    C2D_HV_MODELS
+};
 
 typedef struct c2d_hv_models_hash {
     uint64_t inputs;                /* the generated model cases themselves */

@@ -9,7 +9,7 @@
 #   two marker lines) from this run, when every target agrees.
 #   Each COMMAND prints lines "...: VARIANT hash H" (VARIANT: inputs, double,
 #   float, Q16.16, and for the models model-inputs, rough-double,
-#   rough-float, accel-double, accel-float, and the world's, "world"), as
+#   rough-float, sphere-double, sphere-float, accel-double, accel-float, and the world's, "world"), as
 #   hash_vectors and hash_mcu do.
 # Prints one line per target, then "cross: N passed, N failed".
 set -u
@@ -24,7 +24,7 @@ begin='<!-- hash table: begin (written by `make determinism-table`, tests/cross/
 end='<!-- hash table: end -->'
 variants="inputs double float Q16.16"
 # The models' hashes, over their own case stream (hash_cases.h).
-models="model-inputs rough-double rough-float accel-double accel-float"
+models="model-inputs rough-double rough-float sphere-double sphere-float accel-double accel-float"
 # The world's, over its own scenes, where it is compiled in (not without
 # double); the firmware's 4-byte pointers make c2d_world_bytes smaller, so
 # they print only "world-portable" (the same without it).
@@ -47,7 +47,7 @@ hash_of() { # NAME VARIANT: the hash a run printed, or nothing
     sed -n "s/^.*: $2 hash \([0-9a-f]\{16\}\)\$/\1/p" "$out/$1.txt" | tail -n 1
 }
 hashed() { # NAME: the variants and models a run hashed (inputs excluded)
-    for v in double float Q16.16 rough-double rough-float accel-double accel-float world world-portable; do
+    for v in double float Q16.16 rough-double rough-float sphere-double sphere-float accel-double accel-float world world-portable; do
         [ -n "$(hash_of "$1" "$v")" ] && printf '%s ' "$v"
     done
 }

@@ -12,7 +12,10 @@
 /* The cushion's: at most ten roundings, each of a term within twice the
  * ball's scale, on the way to an output, plus the unit normal's (the header's bound) */
 #define CUSHION_BOUND_ULP 16.0
-#define SPHERE_ANY_BITS_OK 38421 /* the seeded stream's OK calls (test_any_bits_...) */
+/* The seeded stream's OK calls (test_any_bits_...): 38,421 before the exact
+ * normal speed and the slip length were scaled (speeds beyond 2^996 made
+ * them NaN or Inf: a SEPARATING or RANGE for an impact). */
+#define SPHERE_ANY_BITS_OK 78776
 #define SPHERE_ENERGY_CHECKED 18748 /* the seeded stream's finite pairs (test_energy_never_grows...) */
 
 static void print_ball(const char *name, const ref_ball *d)
@@ -549,6 +552,37 @@ static void test_any_bits_never_write_nan_and_leave_refused_balls_untouched(void
     assert_cases_checked(ok, SPHERE_ANY_BITS_OK);
 }
 
+/* Speeds near the top of the range: the exact normal speed's products and
+ * the slip's length must not overflow on the way (they did: Veltkamp's
+ * split beyond 2^996 made the normal speed NaN, a SEPARATING without FMA,
+ * and the slip's square overflowed, a RANGE with it).  A ball at 2^1006
+ * along x into a rail whose normal leans 2^-788 towards x: its normal
+ * speed is 2^1006 2^-788 + 2^96 (about 2^218, as vx nx + vy ny).  Without
+ * friction and at e = 0 it keeps vx and ends with v.n^ = 0:
+ * vy' = -vx nx / ny; with friction, every output stays finite. */
+static void test_a_ball_near_the_top_of_the_range_meets_a_rail_in_every_build(void **state)
+{
+    const c2d_ball start = {{0x1.6f003c4b4734ep+856, 0x1.dece98e40163bp+68},
+                            {0x1.51d3f79dec067p+1006, 0x1.2f24d016e6d44p+96},
+                            {0x1.2c650346af089p-307, -0x1.dde243da959d3p+657, 0x1.6919f995c84c4p+680},
+                            0x1.da592478f4d26p-689,
+                            0x1.fab4c2feda98bp-575,
+                            0x1.f850082934f8ep+437};
+    c2d_cushion c = {{0x1.53763a36dc6a8p-722, 0x1.5a40e980f9912p+66}, 0x1.fab4c2feda98bp-575, 0, 0};
+    c2d_ball a = start;
+    const double want_vy = -(start.vel.x * c.normal.x) / c.normal.y;
+    (void)state;
+    assert_status(c2d_collide_cushion(&a, c), C2D_OK);
+    assert_true(a.vel.x == start.vel.x);
+    assert_close(a.vel.y, want_vy, 1e-12 * fabs(want_vy));
+    assert_true(memcmp(a.spin, start.spin, sizeof a.spin) == 0);
+    a = start;
+    c.friction = 0x1.775c8d4be5ca3p-1;
+    assert_status(c2d_collide_cushion(&a, c), C2D_OK);
+    assert_true(isfinite(a.vel.x) && isfinite(a.vel.y) && isfinite(a.spin[0]) && isfinite(a.spin[1]) &&
+                isfinite(a.spin[2]));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -567,6 +601,7 @@ int main(void)
         cmocka_unit_test(test_bad_fields_are_invalid_in_priority_and_untouched),
         cmocka_unit_test(test_a_rolling_ball_into_a_rail_loses_topspin_as_derived),
         cmocka_unit_test(test_any_bits_never_write_nan_and_leave_refused_balls_untouched),
+        cmocka_unit_test(test_a_ball_near_the_top_of_the_range_meets_a_rail_in_every_build),
     };
     return c2d_run_tests("sphere", tests);
 }
