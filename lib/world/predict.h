@@ -364,6 +364,7 @@ static int c2d_w_pair_refused_now(const c2d_world *w, const c2d_w_disk *p, const
 typedef struct c2d_w_self {
     double x, y, vx, vy, t, radius, now;
     double width, height, hw, hh; /* the box, and half of it (periodic) */
+    double nhw, nhh;              /* minus the halves (the same bits as -hw, -hh), loaded not negated per candidate */
     int periodic;
     uint32_t i;
 } c2d_w_self;
@@ -373,9 +374,9 @@ typedef struct c2d_w_self {
 C2D_W_HOT void c2d_w_nearest(const c2d_w_self *s, double *dx, double *dy)
 {
     if (*dx > s->hw) *dx -= s->width;
-    else if (*dx < -s->hw) *dx += s->width;
+    else if (*dx < s->nhw) *dx += s->width;
     if (*dy > s->hh) *dy -= s->height;
-    else if (*dy < -s->hh) *dy += s->height;
+    else if (*dy < s->nhh) *dy += s->height;
 }
 
 /* A straight pair (no acceleration on either): its relative state in the
@@ -407,9 +408,10 @@ C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, ui
     double dvx = q->vx - self->vx, dvy = q->vy - self->vy, dot, mag, toi, when;
     c2d_body a, b;
     if (self->periodic) c2d_w_nearest(self, &dx, &dy);
-    if (dvx == 0 && dvy == 0) return;
     dot = dx * dvx + dy * dvy;
     mag = C2D_W_FABS(dx * dvx) + C2D_W_FABS(dy * dvy);
+    /* No relative motion gives mag = 0 (dx, dy finite), so it is tested
+     * only below the range, off the path most candidates take. */
     if (mag >= 0x1p-900 && mag <= 0x1p900) {
         double dd, err, c;
         if (dot > mag * 0x1p-40) return;
@@ -420,6 +422,8 @@ C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, ui
             if (dh * dh < vv * c * (1 - 0x1p-40)) return;
             if (c > (dd + rs * rs) * 0x1p-10 && best->when - t0 < c / (2 * dh) * (1 - 0x1p-40)) return;
         }
+    } else if (dvx == 0 && dvy == 0) {
+        return;
     }
     if (j < self->i) dx = -dx, dy = -dy, dvx = -dvx, dvy = -dvy;
     a.pos.x = a.pos.y = a.vel.x = a.vel.y = 0, a.mass = 1;
@@ -442,6 +446,7 @@ static void c2d_w_self_of(const c2d_world *w, uint32_t i, c2d_w_self *self)
     self->x = p->x, self->y = p->y, self->vx = p->vx, self->vy = p->vy, self->t = p->t, self->radius = p->radius;
     self->now = w->now, self->i = i;
     self->width = w->width, self->height = w->height, self->hw = 0.5 * w->width, self->hh = 0.5 * w->height;
+    self->nhw = -self->hw, self->nhh = -self->hh;
     self->periodic = w->periodic;
 }
 
