@@ -36,7 +36,7 @@ endif
 # fixed.c) over shared template headers (lib/real/).
 LIB_SRC := $(wildcard lib/*.c)
 LIB_HDR := include/collide2d.h
-LIB_TEMPLATES := $(wildcard lib/*.h lib/real/*.h lib/real/*/*.h)
+LIB_TEMPLATES := $(wildcard lib/*.h lib/real/*.h lib/real/*/*.h lib/world/*.h)
 LIB_OBJ := $(patsubst lib/%.c,$(B)/obj/%.o,$(LIB_SRC))
 LIB_PIC := $(patsubst lib/%.c,$(B)/obj/%.pic.o,$(LIB_SRC))
 STATIC := $(B)/libcollide2d.a
@@ -168,7 +168,7 @@ TEST_SRCS := $(wildcard tests/unit/test_*.c tests/vectors/test_*.c)
 TEST_BINS := $(patsubst %.c,$(B)/tests/%,$(notdir $(TEST_SRCS)))
 HARNESS_SRC := $(wildcard tests/harness/*.c)
 VECTORS_SRC := tests/vectors/vectors.c $(wildcard tests/vectors/check_*.c)
-TEST_SUPPORT := referee/referee.c referee/cases.c referee/ref_rough.c referee/cases_rough.c referee/ref_toi_accel.c referee/cases_toi_accel.c $(VECTORS_SRC) $(HARNESS_SRC)
+TEST_SUPPORT := referee/referee.c referee/cases.c referee/ref_rough.c referee/cases_rough.c referee/ref_sphere.c referee/cases_sphere.c referee/ref_toi_accel.c referee/cases_toi_accel.c $(VECTORS_SRC) $(HARNESS_SRC)
 TEST_INC := -Ireferee -Itests/harness -Itests/unit -Itests/vectors
 
 check-deps-test:

@@ -101,16 +101,49 @@ test-bench: check-deps-test-bench
 # ------------------------------------------------------------------ world
 # Collisions per CPU second of the event-driven world (bench/world.c, its
 # usage and the figures measured in its opening comment): make bench-world
-# runs N = 1,024, 10,000 and 100,489 at eta 0.5 and 0.2.
+# runs N = 1,024, 10,000 and 100,489 at eta 0.5 and 0.2 and writes the
+# table bench/RESULTS-world.md (bench/world_table.sh).
 .PHONY: bench-world
 $(BENCH_DIR)/world: bench/world.c $(STATIC)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Ibench -Ireferee -o $@ $< $(STATIC) -lm
 
 bench-world: $(BENCH_DIR)/world
-	@for eta in 0.5 0.2; do for n in 1024 10000 100489; do $(BENCH_DIR)/world $$n $$eta || exit 1; done; done
+	@sh bench/world_table.sh $(BENCH_DIR)/world bench/RESULTS-world.md
+
+# Instructions per collision (callgrind, the timed part's own dump) at
+# N = 1,024, eta 0.5 and 0.2: make bench-world-ir (needs valgrind).
+.PHONY: bench-world-ir
+bench-world-ir: $(BENCH_DIR)/world
+	@for eta in 0.5 0.2; do \
+	  rm -f $(BENCH_DIR)/world.cg.*; \
+	  line=$$(valgrind --tool=callgrind --callgrind-out-file=$(BENCH_DIR)/world.cg.%p $(BENCH_DIR)/world 1024 $$eta 20 5 2>/dev/null) || exit 1; \
+	  n=$$(echo "$$line" | sed -n 's/.*: \([0-9]*\) collisions.*/\1/p'); \
+	  ir=$$(sed -n 's/^summary: //p' $(BENCH_DIR)/world.cg.*.1); \
+	  echo "world: N = 1024 eta = $$eta: $$ir instructions over $$n collisions: $$((ir / n)) per collision"; \
+	done
 
 TEST_TARGETS += test-bench
+
+# ------------------------------------------------------------------ sphere
+# Pool balls as spheres (bench/sphere.c): accuracy of the library and of a
+# plain transcription against the MPFR referee, and instructions per call
+# of each under callgrind (printed; the figures are quoted in the README).
+.PHONY: bench-sphere
+BENCH_SPHERE_N := 100000
+$(BENCH_DIR)/sphere: bench/sphere.c referee/cases_sphere.c referee/ref_sphere.c $(STATIC)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Wno-conversion -Ireferee -o $@ bench/sphere.c referee/cases_sphere.c referee/ref_sphere.c $(STATIC) -lmpfr -lgmp -lm
+
+bench-sphere: $(BENCH_DIR)/sphere
+	$(BENCH_DIR)/sphere accuracy $(BENCH_SPHERE_N)
+	@for w in lib:c2d_collide_balls plain:sphere_plain; do f=$${w#*:}; w=$${w%%:*}; \
+	  valgrind --tool=callgrind --callgrind-out-file=$(BENCH_DIR)/sphere.$$w.cg --toggle-collect=$$f \
+	    $(BENCH_DIR)/sphere $$w $(BENCH_SPHERE_N) >/dev/null 2>&1 || exit 1; \
+	  ir=$$(sed -n 's/^summary: //p' $(BENCH_DIR)/sphere.$$w.cg); \
+	  echo "$$w: $$ir instructions over $(BENCH_SPHERE_N) calls: $$((ir / $(BENCH_SPHERE_N))) per call"; \
+	done
+
 
 # ---------------------------------------------------------- energy bias
 # Is the energy error of e = 1 impacts a bias?  10^8 random impacts (about a

@@ -12,18 +12,38 @@
  * part as its own dump (callgrind.out.PID.1, between CALLGRIND_ZERO_STATS
  * and the dump "world"); its total over the collisions printed.
  *
- * Measured (gcc 12 -O2, x86-64, the 2 cores shared, load ~2.5, so +-30 %):
- *   N        eta 0.5           eta 0.2           (M collisions per CPU s)
- *   1,024    0.89 - 1.18       0.66 - 0.79
- *   10,000   0.58 - 0.98       0.31 - 0.67
- *   100,489  0.30 - 0.39       0.18 - 0.20
- *   callgrind, N = 1,024: 3,480 instructions per collision at eta 0.5
- *   (1.6 events per collision), 4,730 at eta 0.2 (2.9).
- *   After accelerations, timers and statics (none used here), the same
- *   run: 3,922 instructions per collision against 3,746 for the build
- *   before them on the same machine (+4.7%: the per-neighbour test for an
- *   accelerated world, the timer and statics checks, the curved-motion
- *   position formula of the predicted disk itself).
+ * Measured (gcc 12 -O2, x86-64, the 2 cores shared, load ~2.5 to 3.7, so
+ * +-15 %; medians of three runs alternating with the world before the
+ * canonical rule and the calendar, commit 27d6d19, in brackets):
+ *   N        eta 0.5              eta 0.2           (M collisions per CPU s)
+ *   1,024    1.00  (0.92)         0.73  (0.62)
+ *   10,000   0.64  (0.63)         0.44  (0.43)
+ *   100,489  0.29  (0.31)         0.22  (0.20)
+ *   After merging main (sensors, resolvers, rest rule), against main
+ *   5bac685 in brackets, load 3.3 to 4.4: 1,024: 1.12 (1.00), 0.70 (0.60);
+ *   10,000: 0.76 (0.62), 0.46 (0.43); 100,489: 0.29 (0.31), 0.22 (0.20).
+ *   callgrind (make bench-world-ir), N = 1,024: 4,165 instructions per
+ *   collision at eta 0.5 (3,922 before), 5,043 at eta 0.2 (5,317 before);
+ *   after merging main's sensors, resolvers and rest rule (5bac685: 4,071
+ *   and 5,482): 4,212 and 5,087.
+ * The steps, instructions per collision at eta 0.5, N = 1,024:
+ *   3,922  before (cells, a 4-ary heap, the image from the cell offset)
+ *   5,609  the canonical frame (both disks at the later state time, lower
+ *          index first, the nearest image there), the periodic rebase, the
+ *          candidate test a call per candidate
+ *   4,776  the straight candidate test inlined in the relative frame
+ *          (q minus p, a at the origin: symmetric, so no branch on the
+ *          order but a negation)
+ *   4,532  the calendar queue instead of the 4-ary heap (the heap was 720
+ *          per collision, the calendar about 450; at N = 100,489 it has 43 %
+ *          fewer L1 misses, cachegrind, but the same CPU time)
+ *   4,417  a crossing keeps the disk's best other event and scans the 3
+ *          new cells only (eta 0.2: 5,421 then; crossings are 1.9 per
+ *          collision there, 0.4 at eta 0.5)
+ *   4,165  the scan over the non-empty cells only, its helpers inlined
+ *   tried and dropped: a square-root lower bound on the time of impact
+ *   (3 % fewer calls, +1 % instructions); positions not extrapolated when a
+ *   disk's age is 0 (no change).
  * At N = 100,489 two thirds of the time were cache misses on the
  * neighbours' states and the cells' heads (perf), before the prefetch. */
 #define _POSIX_C_SOURCE 199309L

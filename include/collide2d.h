@@ -11,8 +11,10 @@
  *   moving disks.  Double, float and Q16.16 fixed-point variants, plus batch
  *   entry points over structure-of-arrays data.  For scenes that need them
  *   (a pool table, granular matter): friction and spin at contact
- *   (c2d_collide_rough, Walton's rough disks) and the time of impact under
- *   constant acceleration (c2d_time_of_impact_accel); a scene pays only for
+ *   (c2d_collide_rough, Walton's rough disks), pool balls as spheres with
+ *   three-component spin and cushions above the centre (c2d_collide_balls,
+ *   c2d_collide_cushion) and the time of impact under constant
+ *   acceleration (c2d_time_of_impact_accel); a scene pays only for
  *   the model it calls.  Axis-aligned impacts are correctly rounded (an
  *   equal-mass swap and a wall's sign flip are exact).
  *
@@ -276,6 +278,104 @@ c2d_status c2d_collide_rough(c2d_disk *a, c2d_disk *b, c2d_surface s);
  * b.mass = b.inertia = INFINITY, b.radius = 0, normal = the wall's normal
  * pointing away from a. */
 c2d_status c2d_collide_rough_normal(c2d_disk *a, c2d_disk *b, c2d_vec2 normal, c2d_surface s);
+
+/* Pool balls as spheres on a table (lib/real/sphere.h has the derivation):
+ * x, y the table's plane, z up; the centres stay on the table.  Friction
+ * acts on the full 3-D slip at the contact (top and back spin too), and a
+ * cushion touches the ball above its centre.  Each impact is the impulse of
+ * free balls (Han 2005; Alciatore, technical proof A.14) after which the
+ * cloth takes the vertical velocity away (a reaction through the centre).
+ *   pos, vel  the centre's position and velocity in the table's plane
+ *   spin      angular velocity (wx, wy, wz), rad per time unit, right-handed
+ *             about +x, +y, +z (z up: wz > 0 counter-clockwise seen from above)
+ *   mass      > 0; INFINITY = immovable (not for a cushion)
+ *   radius    >= 0 and finite (> 0 for a cushion)
+ *   inertia   about the centre, > 0: 2/5 m R^2 for a solid ball; INFINITY =
+ *             its spin never changes */
+typedef struct c2d_ball { c2d_vec2 pos, vel; double spin[3]; double mass, radius, inertia; } c2d_ball;
+
+/* Ball-ball surface: restitution e in [0, 1]; friction
+ *   mu(v) = friction + friction_boost exp(-friction_decay v),
+ * v the sliding speed at the contact before the impact (|slip| in the
+ * tangential plane).  friction >= 0 (INFINITY: never slides); boost and
+ * decay >= 0 and finite; boost 0 = constant mu.  Alciatore's fit for
+ * phenolic balls (technical proof A.14, SI units): 9.951e-3, 0.108, 1.088. */
+typedef struct c2d_ball_surface { double restitution, friction, friction_boost, friction_decay; } c2d_ball_surface;
+
+/* Resolve an impact of two balls touching at their equators (normal n^ =
+ * b.pos - a.pos, horizontal).  Normal impulse exactly c2d_collide's (an
+ * impact only if the normal slip speed is < 0).  Friction: against the
+ * slip g = vb - va - (Ra wa + Rb wb) x n^ of b's contact point past a's,
+ * in its horizontal (t^ = (-n^y, n^x)) and vertical parts, of size
+ * min(mu(|g|) Jn, mt |g|), 1/mt = 1/ma + 1/mb + Ra^2/Ia + Rb^2/Ib: sliding
+ * all through the impact, or until the slip stops.  The horizontal part
+ * changes velocities and wz; the vertical part only wx, wy (the table takes
+ * the vertical velocity).
+ *   returns      C2D_OK; C2D_SEPARATING, C2D_DEGENERATE and C2D_RANGE for the
+ *                normal part exactly as c2d_collide; C2D_INVALID also for a
+ *                NaN/Inf spin or radius, radius < 0, inertia <= 0 or NaN, a
+ *                surface field outside its range; C2D_RANGE also when a
+ *                slip speed, normal impulse, R/I, R^2/I or an output is
+ *                beyond DBL_MAX (the friction part is plain arithmetic), or
+ *                would be NaN from such an overflow.  Same
+ *                priority; a == b is C2D_DEGENERATE; nothing is written
+ *                unless C2D_OK.
+ *   identities   friction = friction_boost = 0: c2d_collide's velocities bit
+ *                for bit, spins untouched.  wx = wy = 0 (both balls) with
+ *                constant mu: c2d_collide_rough with beta = 0, to this
+ *                function's accuracy (tested).
+ *   physics      linear momentum conserved between finite masses; each
+ *                ball's angular momentum about the contact point along n^
+ *                and along z^; kinetic energy with rotation (I |w|^2 / 2)
+ *                never grows, kept at e = 1 without friction.
+ *   accuracy     each velocity component and spin x radius within
+ *                c2d_collide's bound plus 8 ulp of the PAIR's scale (the
+ *                largest |vx|, |vy|, |R w| of both balls before and after;
+ *                measured worst 8.3 ulp in all, tests/unit/test_sphere.c, against a
+ *                512-bit MPFR referee, pool-like and mixed masses at unit
+ *                scale).  The friction part is plain arithmetic: a light
+ *                ball brushed by a much faster one gets an error of the fast
+ *                one's scale.
+ *   cost         c2d_collide's plus ~100 floating-point operations (exp
+ *                adds ~40 when friction_boost != 0), exact products for a
+ *                glancing normal speed only: 716 instructions per pool pair
+ *                against 248 for a plain transcription (make bench-sphere). */
+c2d_status c2d_collide_balls(c2d_ball *a, c2d_ball *b, c2d_ball_surface s);
+
+/* A cushion (rail): normal = any finite non-zero horizontal vector from the
+ * ball towards the rail; height = the nose's contact height above the cloth,
+ * R <= height <= 2R (0.635 D on a standard pool table, Mathavan et al.
+ * 2010; h = R is a wall at the centre's height); restitution in [0, 1];
+ * friction >= 0 (INFINITY: never slides) between ball and rail. */
+typedef struct c2d_cushion { c2d_vec2 normal; double height, restitution, friction; } c2d_cushion;
+
+/* Resolve a ball's impact on a still cushion.  The contact is at R nu,
+ * nu = cos th n^ + sin th z^, sin th = (height - R) / R.  Normal impulse
+ * Pn = (1 + e) m cos th (v.n^) along -nu (an impact only if v.n^ > 0);
+ * friction against the contact point's slip in the plane perpendicular to
+ * nu, of size min(mu Pn, |slip| / (1/m + R^2/I)); then the table takes the
+ * vertical velocity.  Han 2005's closed form with the friction along the
+ * slip (Coulomb's law); the cloth's friction during the impact is neglected
+ * (as Han; Mathavan et al. 2010 integrate it).
+ *   returns      C2D_OK; C2D_INVALID for NULL, a bad ball (as above; also an
+ *                infinite mass or radius 0), a NaN/Inf normal, height outside
+ *                [R, 2R], restitution or friction outside its range;
+ *                C2D_DEGENERATE for a zero normal; C2D_SEPARATING when
+ *                v.n^ <= 0 (or height = 2R); C2D_RANGE when the normal
+ *                impulse, the slip, R/I or an output is beyond DBL_MAX (or
+ *                NaN from such an overflow).  Priority
+ *                INVALID > DEGENERATE > SEPARATING > RANGE > OK; nothing is
+ *                written unless C2D_OK.
+ *   identities   height = R and wx = wy = 0: c2d_collide_rough_normal against
+ *                a wall (b immovable, radius 0, beta = 0), to this
+ *                function's accuracy (tested).
+ *   physics      energy never grows; the ball's angular momentum about the
+ *                contact point along n^ and z^ is kept.
+ *   accuracy     each output within 16 ulp of the ball's scale (largest |vx|,
+ *                |vy|, |R w| before and after; plain arithmetic, measured
+ *                against the MPFR referee: worst 9.8).
+ *   cost         ~70 floating-point operations, two square roots. */
+c2d_status c2d_collide_cushion(c2d_ball *ball, c2d_cushion c);
 #endif
 
 /* ------------------------------------------------------------------- float */
@@ -304,6 +404,12 @@ typedef struct c2d_diskf { c2d_vec2f pos, vel; float spin, mass, radius, inertia
 typedef struct c2d_surfacef { float restitution, friction, tangential_restitution; } c2d_surfacef;
 c2d_status c2d_collide_roughf(c2d_diskf *a, c2d_diskf *b, c2d_surfacef s);
 c2d_status c2d_collide_rough_normalf(c2d_diskf *a, c2d_diskf *b, c2d_vec2f normal, c2d_surfacef s);
+
+typedef struct c2d_ballf { c2d_vec2f pos, vel; float spin[3]; float mass, radius, inertia; } c2d_ballf;
+typedef struct c2d_ball_surfacef { float restitution, friction, friction_boost, friction_decay; } c2d_ball_surfacef;
+typedef struct c2d_cushionf { c2d_vec2f normal; float height, restitution, friction; } c2d_cushionf;
+c2d_status c2d_collide_ballsf(c2d_ballf *a, c2d_ballf *b, c2d_ball_surfacef s);
+c2d_status c2d_collide_cushionf(c2d_ballf *ball, c2d_cushionf c);
 #endif
 
 /* ------------------------------------------------------------ Q16.16 fixed */

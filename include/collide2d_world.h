@@ -10,7 +10,9 @@
  *   by c2d_time_of_impact, resolved by c2d_collide: frictionless, one
  *   coefficient of restitution), a disk meeting a wall (the velocity's
  *   normal component negated and multiplied by the wall restitution), or a
- *   disk's centre crossing into another cell of the world's own broadphase.
+ *   disk's centre crossing into another cell of the world's own broadphase
+ *   (or leaving its box in a broadphase the caller supplies, see
+ *   c2d_world_broadphase).
  *   Nothing is integrated with a time step: between events every disk's
  *   motion is exact, and the state at any time is computed from the disk's
  *   last event.  A disk may have a constant acceleration (a parabola
@@ -46,8 +48,13 @@
  *     (distance == sum of radii) but not overlap.  Touching disks that
  *     approach collide at once (time of impact 0): Newton's cradle works.
  *   - Periodic boundaries: the pair's relative position is the nearest
- *     image, and the box must be at least 3 cells of the broadphase a side,
- *     so width, height >= 3 x the largest diameter (x (1 + 2^-24)).
+ *     image (at the later of the two disks' state times: Determinism below),
+ *     and width, height >= 3 x the largest diameter (x (1 + 2^-24)).  A
+ *     disk's stored state is moved on (rebased: its position and velocity
+ *     there become its reference, in [0, width) x [0, height)) at its
+ *     impacts and whenever its centre has gone 1/24 of the box's smaller
+ *     side from its reference, an event of its own (kind of a crossing):
+ *     then the nearest image then is the image of any contact.
  *   - Every function returns C2D_INVALID for a NULL pointer, NaN or Inf in
  *     any input, a mass or radius <= 0, a disk outside the box or overlapping
  *     another, a time before the world's time, too small or misaligned a
@@ -59,16 +66,35 @@
  *     ulp; a gas at e = 1 keeps its energy to ~1e-15 relative over 10^5
  *     impacts); times are c2d_time_of_impact's from positions rounded once
  *     per extrapolation, so disks may overlap by rounding (a few ulp of
- *     their coordinates; an overlapping, approaching pair meets at once).  Times are absolute doubles: a world run to time T resolves
- *     events ulp(T) apart.
+ *     their coordinates; an overlapping, approaching pair meets at once).
+ *     Times are absolute doubles: a world run to time T resolves events
+ *     ulp(T) apart.
  *   - Indices are given in order of addition from 0.
  *   - Determinism: the same calls give the same bits (events, states,
  *     statistics) on every target that evaluates double as double without
  *     FMA contraction (see collide2d.h).  Frame independence: advancing in
  *     one call or in many uneven ones gives the same bits; c2d_world_get
- *     extrapolates without storing anything.
+ *     extrapolates without storing anything.  A pair's time of impact
+ *     depends only on the two disks' stored states, not on when or by
+ *     which disk it is predicted: both are extrapolated to t0, the later
+ *     of their two state times (each x + v s, s its age at t0; with
+ *     accelerations the formula of c2d_world_set_acceleration), the
+ *     relative position and velocity (higher index minus lower) taken at
+ *     the nearest image by a fixed rule (each component shifted by the
+ *     side when beyond half of it), and the time is t0 plus
+ *     c2d_time_of_impact of that relative state (c2d_time_of_impact_accel
+ *     of the two disks at t0, lower index first, for curved paths),
+ *     exactly; a time rounded before the world's is the world's.  Walls
+ *     and statics are met at times computed from the disk's own reference
+ *     state.  So the broadphase (the built-in cells or the caller's) and
+ *     its events (crossings, boxes left) change no bit of any impact or
+ *     state: tests/unit/test_world.c runs the same scenes with both.  The
+ *     world's statistics count events of every kind, so stats.events
+ *     depends on the broadphase (collisions, wall_collisions and virial do
+ *     not).
  *   - Simultaneous events are processed in the order: time, then kind
- *     (disk-disk impact, then wall, then cell crossing, then timer), then the lower
+ *     (disk-disk impact, then wall or static, then a crossing: a cell
+ *     crossed, a rebase or a box left, then timer), then the lower
  *     disk index, then the higher (for a wall or a crossing: x before y,
  *     low side before high side).  A pair is always resolved with the lower
  *     index as c2d_collide's a.  An impact at time t changes the disks'
@@ -93,7 +119,7 @@
  *     10^4 to 3 x 10^4 impacts; without a rule it stalls in clusters.
  *
  * ACCELERATION (c2d_world_set_acceleration, c2d_world_set_timer)
- *   - A wall or a cell side is met at the root of a quadratic, computed
+ *   - A wall, a cell side or a box side is met at the root of a quadratic, computed
  *     without cancellation (q = -(B + sign(B) sqrt(D)) / 2; roots q / A and
  *     C / q) from the disk's reference state, so the same state gives the
  *     same time whenever it is predicted.  Near a tangency the rounding of
@@ -101,7 +127,8 @@
  *     coordinates may be taken as a touch (no event: the centre is then
  *     within those ulp beyond radius of the wall) or the reverse (an event
  *     with normal speed ~0).  A cell side so missed or taken is harmless:
- *     cells are 2^-24 of a diameter wider than needed.
+ *     cells are 2^-24 of a diameter wider than needed, a caller's boxes
+ *     2^-20 of their half-size.
  *   - Resting on a wall: at a wall event with the acceleration's normal
  *     component a_n pressing into the wall and the rebound (e vn after
  *     the wall restitution and the collapse rule) rising less than
@@ -129,27 +156,53 @@
  *
  * MEMORY
  *   c2d_world_bytes(desc) bytes aligned to 8 bytes (any malloc result, or a
- *   static array of double/uint64_t); on 64-bit targets 368 bytes plus 160
- *   per disk of capacity: the disk's state (128 bytes; the array starts on
- *   a 64-byte boundary within the buffer, so one cache line holds what a
- *   prediction reads of a neighbour), its heap entry (24) and 2 cells of
- *   the grid (4 each; at most 2 x capacity + 16 cells), and 80 bytes per
- *   static of desc->statics (segments, circles and sensors), with 16 bytes
- *   per disk more when desc->statics > 0 (its last sensor entry) and 8
- *   when the model is C2D_WORLD_ROUGH (its spin).  The world lives
- *   entirely in that memory and points into it: do not move or copy it
- *   while in use (make a new world instead).  Nothing else is kept.
+ *   static array of double/uint64_t); on 64-bit targets 648 bytes plus, per
+ *   disk of capacity, 200 (the disk's state, 128 bytes: the array starts
+ *   on a 64-byte boundary within the buffer, so one cache line holds what a
+ *   prediction reads of a neighbour; its place in the event queue, 40, and
+ *   in the window, 24; 2 cells of the grid, 4 each, at most
+ *   2 x capacity + 16 cells) and 4 per day of the calendar (a power of 2 at
+ *   or above the capacity, at least 16: 4 to 8 per disk): 204 to 208 bytes
+ *   per disk (N = 1,024: 209,544 bytes; 100,489: 20.6 MB).  With a caller's
+ *   broadphase no grid but each disk's box centre (16): 584 bytes plus 212
+ *   to 216 per disk.  Statics: 80 bytes each of desc->statics (segments,
+ *   circles and sensors), with 16 bytes per disk more when desc->statics > 0
+ *   (its last sensor entry) and 8 when the model is C2D_WORLD_ROUGH (its
+ *   spin).  The world
+ *   lives entirely in that memory and points into it: do not move or copy
+ *   it while in use (make a new world instead).  Nothing else is kept.
  *
  * BROADPHASE AND QUEUE
- *   A uniform grid of cells at least one largest diameter wide (at most
- *   2 x capacity + 16 of them); each disk's next event is sought among the
- *   disks of the 3 x 3 cells around its own, and leaving its cell is an
- *   event.  One pending event per disk, in a 4-ary heap; an event whose
- *   partner has had an impact since it was predicted is stale (per-disk
- *   impact counters) and leads to a new prediction instead.
- *   Cost per event: O(log N) for the heap and O(disks in 9 cells) for the
- *   predictions; adding a disk larger than all before rebuilds the grid
- *   (O(N)).
+ *   Built in: a uniform grid of cells at least one largest diameter wide (at
+ *   most 2 x capacity + 16 of them); a disk's next event is sought among
+ *   the disks of the 3 x 3 cells around its own, and leaving its cell is an
+ *   event (its state unchanged, so its best other event stands and only the
+ *   3 cells that come into its neighbourhood are searched).  A caller's
+ *   (desc->broadphase, see c2d_world_broadphase): each disk has a box,
+ *   its centre's range +- margin grown by its radius; its next event is
+ *   sought among the disks the caller reports for its box (in a periodic
+ *   box also for its images across the sides it comes near), and leaving
+ *   the range is an event at which the box is moved (one query, and the
+ *   caller's move).  Either way a candidate is tested in plain double,
+ *   every test certain despite rounding (receding, a miss, no contact
+ *   before the best event so far), before c2d_time_of_impact.
+ *   One pending event per disk, in a calendar queue: a binary heap (the
+ *   window) on the current day's events, unsorted lists for the other days
+ *   of the round (a power of 2 of them), an overflow beyond, pulled into
+ *   the round every half round; a day is measured every round to hold
+ *   about 2 events.  Events come out in exactly the order of the tie rule
+ *   whatever the queue's shape.  An event whose partner has had an impact
+ *   since it was predicted is stale (per-disk counters) and leads to a new
+ *   prediction instead.
+ *   Cost per event: O(1) for the queue (O(log) of a day's events), plus the
+ *   predictions of its disks: O(disks in 9 cells) built in, the caller's
+ *   query otherwise; adding a disk larger than all before rebuilds the grid
+ *   (O(N)); every round the calendar may be re-filed (O(N), amortised O(1)).
+ *   Measured (bench/world.c, periodic gas, e = 1, gcc -O2, x86-64):
+ *   N = 1,024 at eta 0.5: 4,212 instructions per collision (callgrind; the
+ *   world with a 4-ary heap and the image from the cells, before the
+ *   canonical rule: 4,071), at eta 0.2 5,087 (5,482); collisions per CPU
+ *   second in bench/world.c's opening comment.
  *
  * CONFIGURATION
  *   C2D_NO_WORLD (when compiling the library): leave the world out.  The
@@ -198,6 +251,48 @@ typedef struct c2d_world_event {
                          the wall at normal speed 0); STATIC: on the disk;
                          TIMER and SENSOR: 0 */
 } c2d_world_event;
+
+/* An axis-aligned box [lo.x, hi.x] x [lo.y, hi.y]: what a caller's
+ * broadphase knows of a disk. */
+typedef struct c2d_world_box {
+    c2d_vec2 lo, hi;
+} c2d_world_box;
+
+/* A broadphase the caller supplies instead of the built-in cells
+ * (c2d_world_desc.broadphase; see BROADPHASE AND QUEUE above).  The world
+ * gives each disk a box, its shell: the disk's centre when the box was
+ * set, +- (radius + margin) along each axis, a little more for rounding;
+ * the disk keeps its centre within margin of the box's centre, and the
+ * moment it would leave, the world moves its box (an event of its own).
+ * The world calls
+ *   insert(user, disk, box)  when a disk is added (disk = its index);
+ *   move(user, disk, box)    when a disk's box moves (b2DynamicTree's MoveProxy);
+ *   remove(user, disk)       when a disk is removed;
+ *   query(user, box, report, context)  to find the disks that can meet a
+ *                            disk: it must call report(context, disk) for
+ *                            every disk whose box overlaps `box` (touching
+ *                            counts).  More is harmless (a disk reported
+ *                            twice, one whose box does not overlap, the
+ *                            querying disk itself), fewer is a missed impact.
+ * The callbacks must not call the world.  In a periodic box the boxes are
+ * in [0, width) x [0, height) coordinates (the centre wrapped), a box may
+ * stick out of the box by its half-size, and the world queries the images
+ * of a box across every side it comes within the largest half-size of (a
+ * box near the other side may stick out towards it; up to 9 queries).  The events and states are
+ * the same bits whatever broadphase finds the candidates (a pair's time of
+ * impact depends only on the two disks' states: CONVENTIONS, Determinism). */
+/* What a broadphase's query calls for each disk it finds. */
+typedef void (*c2d_world_report)(void *context, size_t disk);
+
+typedef struct c2d_world_broadphase {
+    void (*insert)(void *user, size_t disk, const c2d_world_box *box);
+    void (*move)(void *user, size_t disk, const c2d_world_box *box);
+    void (*remove)(void *user, size_t disk);
+    void (*query)(void *user, const c2d_world_box *box, c2d_world_report report, void *context);
+    void *user;    /* passed to the four */
+    double margin; /* >= 0, finite: how far a centre moves before its box is moved
+                      [0: half the disk's radius] */
+} c2d_world_broadphase;
 
 /* How the world resolves contacts (c2d_world_desc.model). */
 typedef enum c2d_world_model {
@@ -266,6 +361,9 @@ typedef struct c2d_world_desc {
     c2d_world_resolver resolve_impact; /* disk-disk [NULL: the model's] */
     c2d_world_resolver resolve_wall;   /* disk-box wall [NULL: the model's] */
     c2d_world_resolver resolve_static; /* disk-static [NULL: the model's] */
+    /* The caller's broadphase, copied at c2d_world_init (the four functions
+     * all given) [NULL: the built-in cells]. */
+    const c2d_world_broadphase *broadphase;
 } c2d_world_desc;
 
 typedef struct c2d_world_stats {
@@ -295,7 +393,8 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
  *            world full, or periodic and the diameter over a third of the
  *            box).
  *   cost     O(disks in 9 cells); O(N) when the disk is the largest yet
- *            (the grid is rebuilt). */
+ *            (the grid is rebuilt); with a caller's broadphase one query of
+ *            the disk's extent and its insert. */
 c2d_status c2d_world_add(c2d_world *world, const c2d_body *disk, double radius, size_t *index);
 
 /* Process every event with time <= t, in order, and set the world's time
@@ -325,13 +424,13 @@ size_t c2d_world_count(const c2d_world *world);
  * predicted anew, and its partners' predictions become stale.
  *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed,
  *            NaN/Inf velocity; nothing changes).
- *   cost     one prediction (the disks of 9 cells) and a heap update. */
+ *   cost     one prediction (the disks of 9 cells) and a queue update. */
 c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 velocity);
 
 /* Take disk `index` out of the world at its time.  Its index is not reused
  * (nor its capacity); c2d_world_get and the other calls refuse it after.
  *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or already removed).
- *   cost     O(disks in its cell) and a heap update. */
+ *   cost     O(disks in its cell) (the caller's remove) and a queue update. */
 c2d_status c2d_world_remove(c2d_world *world, size_t index);
 
 /* Give disk `index` a constant acceleration from the world's time on
@@ -340,15 +439,17 @@ c2d_status c2d_world_remove(c2d_world *world, size_t index);
  * x(t) = x0 + (v0 + 0.5 acc (t - t0)) (t - t0), v(t) = v0 + acc (t - t0),
  * evaluated in double exactly so (c2d_world_get and the events use it).
  * Impacts between accelerated disks are predicted by
- * c2d_time_of_impact_accel with the disk's own next event so far as the
- * horizon; walls and cell crossings by the roots of the quadratic (see
+ * c2d_time_of_impact_accel with the earlier of the two disks' timers as the
+ * horizon (where either motion may change; a timer set or due makes the
+ * disk's partners' predictions stale); walls and cell crossings by the
+ * roots of the quadratic (see
  * ACCELERATION above for the rules at rest and their accuracy).  A
  * decelerating ball does not stop by itself: the acceleration would turn
  * it back; set a timer at the stop (|v| / |acc|) and there set velocity
  * and acceleration to 0 (see c2d_world_set_timer).
  *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed,
  *            NaN/Inf in acceleration; nothing changes).
- *   cost     one prediction and a heap update; a world that has ever had a
+ *   cost     one prediction and a queue update; a world that has ever had a
  *            non-zero acceleration reads its neighbours' accelerations in
  *            every prediction (a second cache line per neighbour) and pays
  *            c2d_time_of_impact_accel (a few hundred ns) for every pair
@@ -368,11 +469,13 @@ c2d_status c2d_world_get_acceleration(const c2d_world *world, size_t index, c2d_
  * slide -> roll -> stop.  Advancing to exactly t and calling the setters
  * after c2d_world_advance returns gives the same bits as calling them
  * from the callback.  A timer changes nothing by itself and is not an
- * impact (no counter but stats.events).  Simultaneous events: impacts,
- * walls, cell crossings, then timers (lower disk first).
+ * impact (no counter but stats.events), but it is the horizon of the
+ * disk's curved predictions: setting it, and its coming due, make its
+ * partners' predictions stale.  Simultaneous events: impacts, walls,
+ * crossings, then timers (lower disk first).
  *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed, NaN,
  *            t before the world's time; nothing changes).
- *   cost     one prediction and a heap update. */
+ *   cost     one prediction and a queue update. */
 c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t);
 
 /* Add a static (immovable) segment from a to b (a pool table's cushion),

@@ -40,6 +40,16 @@ c2d_status c2d_collide_rough_normal(c2d_disk *a, c2d_disk *b, c2d_vec2 normal, c
     return c2d_real_collide_rough(a, b, &normal, &s);
 }
 
+c2d_status c2d_collide_balls(c2d_ball *a, c2d_ball *b, c2d_ball_surface s)
+{
+    return c2d_real_collide_balls(a, b, &s);
+}
+
+c2d_status c2d_collide_cushion(c2d_ball *ball, c2d_cushion c)
+{
+    return c2d_real_collide_cushion(ball, &c);
+}
+
 c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a, const c2d_body *b, c2d_vec2 acc_b,
                                     double radius_sum, double horizon, double *t)
 {

@@ -43,6 +43,16 @@ c2d_status c2d_collide_rough_normalf(c2d_diskf *a, c2d_diskf *b, c2d_vec2f norma
     return c2d_real_collide_rough(a, b, &normal, &s);
 }
 
+c2d_status c2d_collide_ballsf(c2d_ballf *a, c2d_ballf *b, c2d_ball_surfacef s)
+{
+    return c2d_real_collide_balls(a, b, &s);
+}
+
+c2d_status c2d_collide_cushionf(c2d_ballf *ball, c2d_cushionf c)
+{
+    return c2d_real_collide_cushion(ball, &c);
+}
+
 c2d_status c2d_time_of_impact_accelf(const c2d_bodyf *a, c2d_vec2f acc_a, const c2d_bodyf *b, c2d_vec2f acc_b,
                                     float radius_sum, float horizon, float *t)
 {

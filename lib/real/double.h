@@ -13,6 +13,9 @@
 #define C2D_R_PAIRS c2d_pairs
 #define C2D_R_DISK c2d_disk
 #define C2D_R_SURFACE c2d_surface
+#define C2D_R_BALL c2d_ball
+#define C2D_R_BALL_SURFACE c2d_ball_surface
+#define C2D_R_CUSHION c2d_cushion
 #define C2D_R_MANT 52
 #define C2D_R_EBIAS 1023
 #define C2D_R_EMAX 1023
@@ -43,6 +46,9 @@
 #define C2D_R_QUICK_LO C2D_ACCEPT_LO
 
 #define C2D_R_TOI_WINDOW 100   /* time of impact unscaled within [2^-100, 2^100] (real/toi.h) */
+
+#define C2D_R_EXP_NEG_MAX 708    /* exp(-x) flushed to 0 beyond (real/sphere.h): below 2^(EMIN + 2) */
+#define C2D_R_EXP_NEG_DEGREE 13 /* its Taylor degree: truncation below u/4 */
 
 #include "instance.h"
 

@@ -13,6 +13,9 @@
 #define C2D_R_PAIRS c2d_pairsf
 #define C2D_R_DISK c2d_diskf
 #define C2D_R_SURFACE c2d_surfacef
+#define C2D_R_BALL c2d_ballf
+#define C2D_R_BALL_SURFACE c2d_ball_surfacef
+#define C2D_R_CUSHION c2d_cushionf
 #define C2D_R_MANT 23
 #define C2D_R_EBIAS 127
 #define C2D_R_EMAX 127
@@ -42,6 +45,9 @@
 #define C2D_R_QUICK_LO C2D_ACCEPT_LOF
 
 #define C2D_R_TOI_WINDOW 12   /* time of impact unscaled within [2^-12, 2^12] (real/toi.h) */
+
+#define C2D_R_EXP_NEG_MAX 86    /* exp(-x) flushed to 0 beyond (real/sphere.h): below 2^(EMIN + 2) */
+#define C2D_R_EXP_NEG_DEGREE 7 /* its Taylor degree: truncation below u/4 */
 
 #include "instance.h"
 

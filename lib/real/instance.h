@@ -8,7 +8,8 @@
  *             exact signs, correctly rounded quotients, double length
  *   collide/  the frictionless collision: fast path, general path, tiers,
  *             axis-aligned impacts, the batch kernel
- *   toi.h     the time of impact;  rough.h  rough disks
+ *   toi.h     the time of impact;  rough.h  rough disks;  sphere.h  pool
+ *             balls (3-D spin, cushions above the centre)
  *   toia/     the time of impact under constant acceleration (README.md)
  *
  * No include guard of its own: each format includes it once. */
@@ -25,6 +26,7 @@
 #include "toi.h"
 #include "arith/dd.h"
 #include "rough.h"
+#include "sphere.h"
 #include "toia/num.h"
 #include "toia/problem.h"
 #include "toia/eval.h"

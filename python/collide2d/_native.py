@@ -292,7 +292,8 @@ class WorldDesc(ctypes.Structure):
                 ("friction", ctypes.c_double), ("wall_friction", ctypes.c_double),
                 ("tangential_restitution", ctypes.c_double), ("inertia_factor", ctypes.c_double),
                 ("resolve_impact", ctypes.c_void_p), ("resolve_wall", ctypes.c_void_p),
-                ("resolve_static", ctypes.c_void_p)]
+                ("resolve_static", ctypes.c_void_p),
+                ("broadphase", ctypes.c_void_p)]  # const c2d_world_broadphase *: NULL, the built-in cells
 
 
 class WorldContact(ctypes.Structure):

@@ -51,6 +51,21 @@ int main(void)
     FIELD(c2d_world_desc, model); FIELD(c2d_world_desc, friction); FIELD(c2d_world_desc, wall_friction);
     FIELD(c2d_world_desc, tangential_restitution); FIELD(c2d_world_desc, inertia_factor);
     FIELD(c2d_world_desc, resolve_impact); FIELD(c2d_world_desc, resolve_wall); FIELD(c2d_world_desc, resolve_static);
+    FIELD(c2d_world_desc, broadphase);
+    STRUCT(c2d_ball);
+    FIELD(c2d_ball, pos); FIELD(c2d_ball, vel); FIELD(c2d_ball, spin); FIELD(c2d_ball, mass);
+    FIELD(c2d_ball, radius); FIELD(c2d_ball, inertia);
+    STRUCT(c2d_ball_surface);
+    FIELD(c2d_ball_surface, restitution); FIELD(c2d_ball_surface, friction);
+    FIELD(c2d_ball_surface, friction_boost); FIELD(c2d_ball_surface, friction_decay);
+    STRUCT(c2d_cushion);
+    FIELD(c2d_cushion, normal); FIELD(c2d_cushion, height); FIELD(c2d_cushion, restitution);
+    FIELD(c2d_cushion, friction);
+    STRUCT(c2d_world_box);
+    FIELD(c2d_world_box, lo); FIELD(c2d_world_box, hi);
+    STRUCT(c2d_world_broadphase);
+    FIELD(c2d_world_broadphase, insert); FIELD(c2d_world_broadphase, move); FIELD(c2d_world_broadphase, remove);
+    FIELD(c2d_world_broadphase, query); FIELD(c2d_world_broadphase, user); FIELD(c2d_world_broadphase, margin);
     TYPE(c2d_world_model);
     STRUCT(c2d_world_contact);
     FIELD(c2d_world_contact, kind); FIELD(c2d_world_contact, time); FIELD(c2d_world_contact, a);
@@ -61,6 +76,15 @@ int main(void)
     FIELD(c2d_world_stats, time); FIELD(c2d_world_stats, virial);
 #endif
 #ifndef C2D_NO_FLOAT
+    STRUCT(c2d_ballf);
+    FIELD(c2d_ballf, pos); FIELD(c2d_ballf, vel); FIELD(c2d_ballf, spin); FIELD(c2d_ballf, mass);
+    FIELD(c2d_ballf, radius); FIELD(c2d_ballf, inertia);
+    STRUCT(c2d_ball_surfacef);
+    FIELD(c2d_ball_surfacef, restitution); FIELD(c2d_ball_surfacef, friction);
+    FIELD(c2d_ball_surfacef, friction_boost); FIELD(c2d_ball_surfacef, friction_decay);
+    STRUCT(c2d_cushionf);
+    FIELD(c2d_cushionf, normal); FIELD(c2d_cushionf, height); FIELD(c2d_cushionf, restitution);
+    FIELD(c2d_cushionf, friction);
     STRUCT(c2d_vec2f);
     FIELD(c2d_vec2f, x); FIELD(c2d_vec2f, y);
     STRUCT(c2d_bodyf);

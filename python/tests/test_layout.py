@@ -30,6 +30,11 @@ MIRRORED = {  # C struct -> its ctypes class
 # The Q16.16 API has no binding (no c2d_*x function is wrapped): its structs
 # are laid out by the program but have no ctypes twin to compare.
 NOT_MIRRORED = {"c2d_vec2x", "c2d_bodyx"}
+# Nor has a caller's broadphase (collide2d.World uses the built-in one; its
+# WorldDesc.broadphase stays NULL).
+NOT_MIRRORED |= {"c2d_world_box", "c2d_world_broadphase"}
+# The sphere contacts have no binding yet (issue 21).
+NOT_MIRRORED |= {"c2d_ball", "c2d_ball_surface", "c2d_cushion", "c2d_ballf", "c2d_ball_surfacef", "c2d_cushionf"}
 TYPES = {  # C type -> the ctypes type the binding passes it as
     "c2d_status": ctypes.c_int,  # the scalar calls' restype, the batch's status array (numpy.intc)
     "int": ctypes.c_int, "size_t": ctypes.c_size_t, "long": ctypes.c_long,  # c2d_version's restype
@@ -68,13 +73,13 @@ def layout(tmp_path_factory):
 def test_the_program_covers_every_struct_of_the_header(layout):
     structs, fields, _ = layout
     in_header = set(re.findall(r"typedef struct (\w+) \{", HEADER))
-    assert len(in_header) == 16
+    assert len(in_header) == 24
     assert set(structs) == in_header == set(MIRRORED) | NOT_MIRRORED
     for name in in_header:  # every member, as the header declares them
         body = re.search(r"typedef struct %s \{(.*?)\} %s;" % (name, name), HEADER, re.S).group(1)
         body = re.sub(r"/\*.*?\*/", "", body, flags=re.S)
         body = re.sub(r"\(\s*\*\s*(\w+)\s*\)\s*\([^)]*\)", r"\1", body)  # a function pointer: its name
-        members = re.findall(r"(\w+)\s*[,;]", body)
+        members = re.findall(r"(\w+)\s*(?:\[\w*\])?\s*[,;]", body)  # an array: its name
         assert [m for m, _, _ in fields[name]] == members, name
 
 

@@ -8,18 +8,10 @@
 
 #include "check.h"
 #include "collide2d_world.h"
+#include "world_fixture.h"
 
 #define PI 3.14159265358979323846
 
-static uint64_t rng_state;
-static double uniform(void) /* splitmix64 -> [-1, 1) */
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * 0x1p-52 - 1.0;
-}
 
 static c2d_world_desc box_desc(size_t capacity, double width, double height, c2d_boundary boundary, double e,
                                double ew)
@@ -31,16 +23,6 @@ static c2d_world_desc box_desc(size_t capacity, double width, double height, c2d
     return d;
 }
 
-static c2d_world *new_world(const c2d_world_desc *d, void **mem)
-{
-    size_t bytes = c2d_world_bytes(d);
-    c2d_world *w = NULL;
-    assert_true(bytes > 0);
-    *mem = malloc(bytes);
-    assert_non_null(*mem);
-    assert_status(c2d_world_init(&w, *mem, bytes, d), C2D_OK);
-    return w;
-}
 
 /* A gas: side x side disks on a lattice filling the box, random velocities
  * (zero total momentum), radii and masses varied when `mixed`. */
@@ -1184,6 +1166,205 @@ static void test_every_refusal_is_invalid_and_changes_nothing(void **state)
     free(copy);
 }
 
+/* ------------------------------------------------------------ broadphase */
+
+/* A caller's broadphase by brute force: every box kept, a query reports
+ * every disk whose box overlaps (touching counts). */
+#define NAIVE_MAX 256
+typedef struct naive_bp {
+    c2d_world_box box[NAIVE_MAX];
+    int present[NAIVE_MAX];
+    size_t top;
+    unsigned long long inserts, moves, removes, queries;
+} naive_bp;
+
+static void naive_insert(void *user, size_t disk, const c2d_world_box *box)
+{
+    naive_bp *b = user;
+    assert_true(disk < NAIVE_MAX && !b->present[disk]);
+    assert_true(box->lo.x <= box->hi.x && box->lo.y <= box->hi.y);
+    b->box[disk] = *box, b->present[disk] = 1, b->inserts++;
+    if (disk >= b->top) b->top = disk + 1;
+}
+
+static void naive_move(void *user, size_t disk, const c2d_world_box *box)
+{
+    naive_bp *b = user;
+    assert_true(disk < b->top && b->present[disk]);
+    b->box[disk] = *box, b->moves++;
+}
+
+static void naive_remove(void *user, size_t disk)
+{
+    naive_bp *b = user;
+    assert_true(disk < b->top && b->present[disk]);
+    b->present[disk] = 0, b->removes++;
+}
+
+static void naive_query(void *user, const c2d_world_box *box, c2d_world_report report, void *context)
+{
+    naive_bp *b = user;
+    size_t k;
+    b->queries++;
+    for (k = 0; k < b->top; k++)
+        if (b->present[k] && b->box[k].lo.x <= box->hi.x && box->lo.x <= b->box[k].hi.x && b->box[k].lo.y <= box->hi.y &&
+            box->lo.y <= b->box[k].hi.y)
+            report(context, k);
+}
+
+/* Every event of a run, as bits, and what the scene's callback does. */
+typedef struct scene_log {
+    c2d_world *w;
+    size_t n, cap;
+    c2d_world_event *ev;
+    int timers; /* the scene sets accelerations and timers at timers */
+} scene_log;
+
+static void log_scene_event(void *user, const c2d_world_event *e)
+{
+    scene_log *l = user;
+    if (l->n < l->cap) l->ev[l->n] = *e;
+    l->n++;
+    if (l->timers && e->kind == C2D_WORLD_TIMER) {
+        c2d_vec2 acc;
+        acc.x = 0.3 * (double)(e->a % 3) - 0.3, acc.y = -0.2;
+        assert_status(c2d_world_set_acceleration(l->w, e->a, acc), C2D_OK);
+        if (e->a % 2 == 0) assert_status(c2d_world_set_timer(l->w, e->a, e->time + 1.5), C2D_OK);
+    }
+}
+
+enum { SCENE_WALLS, SCENE_PERIODIC, SCENE_ACCEL, SCENE_STATICS, SCENES }; /* statics: segments, circles, sensors */
+
+/* Scene s run to t = 30 with the built-in broadphase (nb NULL) or nb
+ * (margin m): its events, final states and statistics. */
+static void run_scene(int s, naive_bp *nb, double m, scene_log *log, c2d_body *out, c2d_world_stats *st)
+{
+    c2d_world_desc d = box_desc(144, 16, 16, s == SCENE_PERIODIC ? C2D_PERIODIC : C2D_WALLS, s == SCENE_PERIODIC ? 1 : 0.85,
+                                0.9);
+    c2d_world_broadphase bp;
+    void *mem;
+    c2d_world *w;
+    size_t i;
+    memset(&bp, 0, sizeof bp);
+    if (nb != NULL) {
+        memset(nb, 0, sizeof *nb);
+        bp.insert = naive_insert, bp.move = naive_move, bp.remove = naive_remove, bp.query = naive_query;
+        bp.user = nb, bp.margin = m;
+        d.broadphase = &bp;
+    }
+    log->n = 0, log->cap = 200000, log->timers = s == SCENE_ACCEL;
+    log->ev = malloc(log->cap * sizeof *log->ev);
+    assert_non_null(log->ev);
+    d.on_event = log_scene_event, d.user = log;
+    d.statics = s == SCENE_STATICS ? 5 : 0;
+    w = new_world(&d, &mem);
+    log->w = w;
+    if (s == SCENE_STATICS) {
+        c2d_vec2 a = {-1, 5.05}, b = {17, 11.05}, c = {8.05, 3.05};
+        assert_status(c2d_world_add_segment(w, a, b, 0.8, NULL), C2D_OK);
+        assert_status(c2d_world_add_circle(w, c, 0.2, 1, NULL), C2D_OK);
+        assert_status(c2d_world_add_circle(w, b, 0.5, 0.5, NULL), C2D_OK);
+        { /* sensors: entries reported, nothing resolved */
+            c2d_vec2 s0 = {4.1, 12.3}, s1 = {12.7, 4.4};
+            assert_status(c2d_world_add_sensor(w, s0, 0.9, NULL), C2D_OK);
+            assert_status(c2d_world_add_sensor(w, s1, 1.3, NULL), C2D_OK);
+        }
+        rng_state = 11;
+        for (i = 0; i < 144; i++) { /* a lattice, the disks in the statics' way left out */
+            c2d_body k;
+            k.pos.x = ((double)(i % 12) + 0.5) * 16 / 12, k.pos.y = ((double)(i / 12) + 0.5) * 16 / 12;
+            k.vel.x = uniform(), k.vel.y = uniform(), k.mass = 1 + 0.5 * uniform();
+            if (fabs((k.pos.y - 5.05) - (k.pos.x + 1) / 3) < 1.3 || hypot(k.pos.x - 8.05, k.pos.y - 3.05) < 0.7) continue;
+            assert_status(c2d_world_add(w, &k, 0.4, NULL), C2D_OK);
+        }
+    } else {
+        fill_gas(w, &d, 12, 0.45, 1, 7 + (uint64_t)s);
+    }
+    if (s == SCENE_ACCEL)
+        for (i = 0; i < 144; i++) {
+            c2d_vec2 acc;
+            acc.x = 0.1 * uniform(), acc.y = 0.1 * uniform() - 0.05;
+            assert_status(c2d_world_set_acceleration(w, i, acc), C2D_OK);
+            assert_status(c2d_world_set_timer(w, i, 0.37 * (double)i), C2D_OK);
+        }
+    assert_status(c2d_world_advance(w, 12), C2D_OK);
+    assert_status(c2d_world_remove(w, 5), C2D_OK); /* the broadphase told of a removal */
+    assert_status(c2d_world_advance(w, 30), C2D_OK);
+    memset(out, 0, 144 * sizeof *out);
+    for (i = 0; i < c2d_world_count(w); i++)
+        if (i != 5) assert_status(c2d_world_get(w, i, &out[i]), C2D_OK);
+    c2d_world_get_stats(w, st);
+    if (nb != NULL) assert_true(nb->removes == 1 && nb->inserts == c2d_world_count(w));
+    free(mem);
+}
+
+static int same_event(const c2d_world_event *a, const c2d_world_event *b)
+{
+    return a->kind == b->kind && memcmp(&a->time, &b->time, sizeof a->time) == 0 && a->a == b->a && a->b == b->b &&
+           memcmp(&a->impulse, &b->impulse, sizeof a->impulse) == 0;
+}
+
+static void test_a_callers_broadphase_gives_the_same_bits_as_the_built_in_one(void **state)
+{
+    static naive_bp nb;
+    const double margins[3] = {0, 0.05, 1.5};
+    int s, m, runs = 0;
+    (void)state;
+    for (s = 0; s < SCENES; s++) {
+        scene_log ref, got;
+        c2d_body want[144], have[144];
+        c2d_world_stats sw, sh;
+        run_scene(s, NULL, 0, &ref, want, &sw);
+        assert_true(ref.n <= ref.cap && sw.collisions > 300);
+        for (m = 0; m < 3; m++) {
+            size_t k;
+            run_scene(s, &nb, margins[m], &got, have, &sh);
+            assert_int_equal(got.n, ref.n);
+            for (k = 0; k < ref.n; k++) assert_true(same_event(&ref.ev[k], &got.ev[k]));
+            assert_memory_equal(want, have, sizeof want);
+            assert_true(sw.collisions == sh.collisions && sw.wall_collisions == sh.wall_collisions);
+            assert_memory_equal(&sw.virial, &sh.virial, sizeof sw.virial);
+            assert_true(nb.moves > 0 && nb.queries > 0);
+            if (m == 0) {
+                size_t sensed = 0;
+                for (k = 0; k < ref.n; k++) sensed += ref.ev[k].kind == C2D_WORLD_SENSOR;
+                if (s == SCENE_STATICS) assert_true(sensed > 20);
+                printf("test_world: scene %d: %zu events (%llu impacts, %zu sensor entries), the same bits with the "
+                       "brute-force broadphase (%llu box moves, %llu queries)\n",
+                       s, ref.n, sw.collisions, sensed, nb.moves, nb.queries);
+            }
+            free(got.ev);
+            runs++;
+        }
+        free(ref.ev);
+    }
+    assert_int_equal(runs, SCENES * 3);
+}
+
+static void test_a_broadphase_without_its_functions_is_refused(void **state)
+{
+    c2d_world_desc d = box_desc(4, 10, 10, C2D_WALLS, 1, 1);
+    c2d_world_broadphase bp;
+    static double mem[1024];
+    c2d_world *w = NULL;
+    int k;
+    (void)state;
+    for (k = 0; k < 6; k++) {
+        memset(&bp, 0, sizeof bp);
+        bp.insert = naive_insert, bp.move = naive_move, bp.remove = naive_remove, bp.query = naive_query;
+        if (k == 0) bp.insert = NULL;
+        if (k == 1) bp.move = NULL;
+        if (k == 2) bp.remove = NULL;
+        if (k == 3) bp.query = NULL;
+        if (k == 4) bp.margin = -1;
+        if (k == 5) bp.margin = NAN;
+        d.broadphase = &bp;
+        assert_int_equal(c2d_world_bytes(&d), 0);
+        assert_status(c2d_world_init(&w, mem, sizeof mem, &d), C2D_INVALID);
+        assert_null(w);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1212,6 +1393,8 @@ int main(void)
         cmocka_unit_test(test_a_disk_bounces_off_a_segment_end_and_off_a_circle),
         cmocka_unit_test(test_elastic_statics_keep_a_gas_energy_and_nothing_passes_through),
         cmocka_unit_test(test_static_refusals_change_nothing),
+        cmocka_unit_test(test_a_callers_broadphase_gives_the_same_bits_as_the_built_in_one),
+        cmocka_unit_test(test_a_broadphase_without_its_functions_is_refused),
     };
     const int total = (int)(sizeof tests / sizeof tests[0]);
     int failed = cmocka_run_group_tests_name("world", tests, NULL, NULL);

@@ -9,16 +9,8 @@
 
 #include "check.h"
 #include "collide2d_world.h"
+#include "world_fixture.h"
 
-static uint64_t rng_state;
-static double uniform(void) /* splitmix64 -> [-1, 1) */
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * 0x1p-52 - 1.0;
-}
 
 static c2d_world_desc walled(size_t capacity, double width, double height, size_t statics)
 {
@@ -29,16 +21,6 @@ static c2d_world_desc walled(size_t capacity, double width, double height, size_
     return d;
 }
 
-static c2d_world *make(const c2d_world_desc *d, void **mem)
-{
-    size_t bytes = c2d_world_bytes(d);
-    c2d_world *w = NULL;
-    assert_true(bytes > 0);
-    *mem = malloc(bytes);
-    assert_non_null(*mem);
-    assert_status(c2d_world_init(&w, *mem, bytes, d), C2D_OK);
-    return w;
-}
 
 static void add(c2d_world *w, double x, double y, double vx, double vy, double mass, double radius)
 {
@@ -94,7 +76,7 @@ static void test_a_sensor_reports_each_entry_of_a_centre_and_changes_no_motion(v
     (void)state_;
     memset(&j, 0, sizeof j);
     d.on_event = keep, d.user = &j;
-    w = make(&d, &mem);
+    w = new_world(&d, &mem);
     j.w = w;
     assert_status(c2d_world_add_sensor(w, centre, 1, &k), C2D_OK);
     assert_int_equal(k, 0);
@@ -125,7 +107,7 @@ static void test_a_disk_starting_inside_a_sensor_is_reported_only_once_it_comes_
     (void)state_;
     memset(&j, 0, sizeof j);
     d.on_event = keep, d.user = &j;
-    w = make(&d, &mem);
+    w = new_world(&d, &mem);
     j.w = w;
     assert_status(c2d_world_add_sensor(w, centre, 1, NULL), C2D_OK);
     add(w, 2, 2, 1, 0, 1, 0.5); /* inside, leaving at t = 1, wall at t = 7.5, back at 3 when t = 14 */
@@ -149,7 +131,7 @@ static void test_an_accelerated_disk_entering_a_sensor_is_reported_when_its_para
     (void)state_;
     memset(&j, 0, sizeof j);
     d.on_event = keep, d.user = &j;
-    w = make(&d, &mem);
+    w = new_world(&d, &mem);
     j.w = w;
     assert_status(c2d_world_add_sensor(w, centre, 1, NULL), C2D_OK);
     add(w, 1, 2, 3, 0, 1, 0.5);
@@ -175,7 +157,7 @@ static void test_a_disk_removed_at_its_sensor_event_is_gone_and_the_others_move_
     memset(&j, 0, sizeof j);
     j.remove_at_sensor = 1;
     d.on_event = keep, d.user = &j;
-    w = make(&d, &mem);
+    w = new_world(&d, &mem);
     j.w = w;
     assert_status(c2d_world_add_sensor(w, centre, 0.5, NULL), C2D_OK);
     add(w, 3, 2, -1, 0, 1, 0.5);
@@ -199,8 +181,8 @@ static void test_sensor_refusals_change_nothing(void **state_)
     c2d_vec2 c = {5, 2}, bad = {NAN, 2};
     double spin = 7;
     (void)state_;
-    w = make(&d, &mem);
-    w2 = make(&smooth, &mem2);
+    w = new_world(&d, &mem);
+    w2 = new_world(&smooth, &mem2);
     add(w, 1, 1, 1, 0, 1, 0.5);
     copy = malloc(bytes);
     memcpy(copy, mem, bytes);
@@ -271,7 +253,7 @@ static void test_a_callers_impact_resolver_decides_the_velocities(void **state_)
     memset(&j, 0, sizeof j);
     j.mode = STICK;
     d.resolve_impact = judge_resolve, d.user = &j;
-    w = make(&d, &mem);
+    w = new_world(&d, &mem);
     j.w = w;
     add(w, 2, 2, 3, 0, 1, 0.5);
     add(w, 7, 2, -1, 0, 3, 0.5); /* they meet at t = 1, at x = 5 and 6 */
@@ -301,7 +283,7 @@ static void test_a_bad_resolver_is_overruled_by_the_models_own_impact(void **sta
         memset(&j, 0, sizeof j);
         j.mode = mode;
         d.resolve_impact = judge_resolve, d.user = &j;
-        w = make(&d, &mem);
+        w = new_world(&d, &mem);
         j.w = w;
         add(w, 2, 2, 2, 0, 1, 0.5);
         add(w, 6, 2, -1, 0, 1, 0.5); /* meet at t = 1 */
@@ -327,7 +309,7 @@ static void test_a_callers_wall_resolver_gives_the_rebound(void **state_)
     memset(&j, 0, sizeof j);
     j.mode = HALF_BOUNCE;
     d.resolve_wall = judge_resolve, d.user = &j;
-    w = make(&d, &mem);
+    w = new_world(&d, &mem);
     j.w = w;
     add(w, 5, 2, 0, 3, 1, 0.5); /* the top wall (y = 3.5) at t = 0.5 */
     assert_status(c2d_world_advance(w, 1), C2D_OK);
@@ -350,7 +332,7 @@ static void test_a_callers_static_resolver_sees_the_contact_normal(void **state_
     memset(&j, 0, sizeof j);
     j.mode = HALF_BOUNCE;
     d.resolve_static = judge_resolve, d.user = &j;
-    w = make(&d, &mem);
+    w = new_world(&d, &mem);
     j.w = w;
     assert_status(c2d_world_add_circle(w, centre, 1, 1, NULL), C2D_OK);
     add(w, 5, 2, 0, 2, 1, 0.5); /* meets the post (radius sum 1.5) at y = 6.5, t = 2.25 */
@@ -395,7 +377,7 @@ static void test_a_perfectly_rough_elastic_gas_keeps_its_energy_with_rotation(vo
     d.capacity = side * side, d.width = d.height = 12, d.boundary = C2D_PERIODIC;
     d.restitution = 1, d.model = C2D_WORLD_ROUGH, d.friction = INFINITY, d.tangential_restitution = 1;
     d.inertia_factor = k;
-    w = make(&d, &mem);
+    w = new_world(&d, &mem);
     rng_state = 11;
     for (i = 0; i < side * side; i++) {
         add(w, (double)(i % side) + 0.5, (double)(i / side) + 0.5, uniform(), uniform(), 1, 0.3);
@@ -437,7 +419,7 @@ static void test_a_rough_wall_turns_slip_into_spin_by_coulombs_law(void **state_
     double spin;
     (void)state_;
     d.model = C2D_WORLD_ROUGH, d.wall_friction = 0.1;
-    w = make(&d, &mem);
+    w = new_world(&d, &mem);
     add(w, 5, 2, 1, -2, 1, 0.5); /* the floor at t = 0.75 */
     assert_status(c2d_world_advance(w, 0.75), C2D_OK);
     b = state(w, 0);
@@ -458,7 +440,7 @@ static c2d_world *pressed_pair(void **mem, double e, double dx, double mass_b)
     c2d_world *w;
     c2d_vec2 right = {1, 0}, left = {-1, 0};
     d.restitution = e;
-    w = make(&d, mem);
+    w = new_world(&d, mem);
     add(w, 4.5, 2, 0, 0, 1, 0.5);
     add(w, 5.5 + dx, 2, 0, 0, mass_b, 0.5);
     assert_status(c2d_world_set_acceleration(w, 0, right), C2D_OK);

@@ -103,6 +103,7 @@
 
 #include "check.h"
 #include "collide2d_world.h"
+#include "world_fixture.h"
 
 #define PI 3.14159265358979323846
 
@@ -125,15 +126,6 @@
 enum { SIDE = 32, N = SIDE * SIDE, BLOCKS = 16, EQUILIBRATION = 100 };
 static const double student_t_15_999 = 4.073; /* two-sided 99.9 %, 15 degrees of freedom */
 
-static uint64_t rng_state;
-static double uniform(void) /* splitmix64 -> [-1, 1) */
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * 0x1p-52 - 1.0;
-}
 
 /* ------------------------------------------------------------ the reference */
 

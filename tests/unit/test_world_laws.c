@@ -12,16 +12,8 @@
 
 #include "check.h"
 #include "collide2d_world.h"
+#include "world_fixture.h"
 
-static uint64_t rng_state;
-static double uniform(void) /* splitmix64 -> [-1, 1) */
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * 0x1p-52 - 1.0;
-}
 
 static c2d_world_desc box_desc(size_t capacity, double width, double height, c2d_boundary boundary, double e, double ew)
 {
@@ -32,16 +24,6 @@ static c2d_world_desc box_desc(size_t capacity, double width, double height, c2d
     return d;
 }
 
-static c2d_world *new_world(const c2d_world_desc *d, void **mem)
-{
-    size_t bytes = c2d_world_bytes(d);
-    c2d_world *w = NULL;
-    assert_true(bytes > 0);
-    *mem = malloc(bytes);
-    assert_non_null(*mem);
-    assert_status(c2d_world_init(&w, *mem, bytes, d), C2D_OK);
-    return w;
-}
 
 /* side x side disks on a lattice filling [0, width) x [0, height), radii
  * in [0.6, 1) x radius and masses in [0.1, 1.9) unless `equal`, velocities
