@@ -206,6 +206,8 @@ void print_model(const Simulation &sim) {
                 m.cloth.slide, m.cloth.roll, m.cloth.spin, m.cloth.spin_deceleration(), m.ball.restitution,
                 m.ball.friction, m.ball.tangential_restitution, m.cushion.restitution, m.cushion.friction,
                 m.cushion.tangential_restitution, m.absorb_below, sim.table().length, sim.table().width);
+    std::printf(",\"contact_model\":\"%s\",\"cushion_height\":%.17g,\"squirt_end_mass\":%.17g",
+                demo::contact_model_name(m.contact), m.cushion_height, demo::kCueEndMass);
     if (c.scene == Scene::Break) {
         for (const auto &p : {std::make_pair("corner", c.table.corner), std::make_pair("side", c.table.side)})
             std::printf(",\"%s_mouth\":%.17g,\"%s_facing_angle_deg\":%.17g,\"%s_nose_radius\":%.17g,\"%s_shelf\":%.17g,"
@@ -399,8 +401,10 @@ void print_game_json(const demo::GameRecord &g, const Options &o, const Simulati
                 response_name(o.config.response), static_cast<unsigned long long>(o.config.seed));
     for (size_t i = 0; i < g.shots.size(); ++i) {
         const demo::ShotRecord &r = g.shots[i];
-        std::printf("%s{\"player\":%d,\"angle\":%.17g,\"speed\":%.17g,\"side\":%.17g,\"topback\":%.17g,", i ? "," : "",
-                    r.player, r.shot.angle_deg, r.shot.speed, r.shot.side, r.shot.topback);
+        std::printf("%s{\"player\":%d,\"angle\":%.17g,\"speed\":%.17g,\"side\":%.17g,\"topback\":%.17g,"
+                    "\"elevation\":%.17g,",
+                    i ? "," : "", r.player, r.shot.angle_deg, r.shot.speed, r.shot.side, r.shot.topback,
+                    r.shot.elevation);
         if (r.placed) std::printf("\"ball_in_hand\":[%.17g,%.17g],", r.cue.x, r.cue.y);
         else std::printf("\"ball_in_hand\":null,");
         std::printf("\"potted\":[");

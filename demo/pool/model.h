@@ -25,6 +25,10 @@ struct Surface {
 //                    (c2d_collide_rough, c2d_collide_rough_normal), wx and
 //                    wy untouched by an impact
 enum class ContactModel { Sphere, SphereAlciatore, Disk };
+// --model's name of each: sphere, sphere-alciatore, disk.
+inline const char *contact_model_name(ContactModel c) {
+    return c == ContactModel::Sphere ? "sphere" : c == ContactModel::SphereAlciatore ? "sphere-alciatore" : "disk";
+}
 
 struct Model {
     // false: the frictionless scenes.  Balls move straight at constant

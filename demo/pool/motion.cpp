@@ -124,9 +124,10 @@ Ball strike(const Ball &b, double angle_rad, double speed, double side, double t
     const double k = 2.5 * speed / (kBallRadius * ce);  // |J| R / I, |J| = m speed / cos(elev)
     s.vx = speed * sx;
     s.vy = speed * sy;
-    s.wx = k * (ry * jz - rz * jy);
-    s.wy = k * (rz * jx - rx * jz);
-    s.wz = k * (rx * jy - ry * jx);
+    // (+ 0: a component that cancels is +0, never -0, in the records)
+    s.wx = k * (ry * jz - rz * jy) + 0.0;
+    s.wy = k * (rz * jx - rx * jz) + 0.0;
+    s.wz = k * (rx * jy - ry * jx) + 0.0;
     s.motion = classify(s);
     return s;
 }

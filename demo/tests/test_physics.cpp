@@ -409,6 +409,50 @@ void rails(const SimConfig &c) {
     check(ran == 18, "rails: all 18 shots ran");
 }
 
+// --- squirt, swerve and masse ---------------------------------------------------
+// The strike by hand, with 3-vectors: the cue along D = cos(elev) x -
+// sin(elev) z (aimed at +x), the tip at r = R (side e_right + topback e_up -
+// sqrt(1 - side^2 - topback^2) D), e_right = -y, e_up = sin(elev) x +
+// cos(elev) z; the impulse along D turned left about z by the squirt angle
+// atan((5/2) s sqrt(1 - s^2) / (1 + m/m_e + (5/2)(1 - s^2))) (Alciatore TP
+// A.31, m_e = m/30), its size m speed / cos(elev) (the cloth takes the
+// vertical part); w = r x J / I.  Level, the ball leaves squirted and goes
+// straight on (w's horizontal part along v); raised, the side offset puts a
+// spin across the path, the cloth's slip gets a sideways part and the ball
+// curves towards the side of the tip (swerve; at 60 degrees and more a
+// masse) until it rolls along rolls_at.
+void swerve(const SimConfig &c) {
+    const double v = 1.0, me = demo::kBallMass / 30;
+    int ran = 0;
+    for (double elev : {0.0, 15.0, 30.0, 60.0}) {
+        for (double side : {-0.3, 0.3}) {
+            const double th = elev * M_PI / 180, topback = -0.1, cc = std::sqrt(1 - side * side - topback * topback);
+            const V3 d{std::cos(th), 0, -std::sin(th)}, right{0, -1, 0}, up{std::sin(th), 0, std::cos(th)};
+            const V3 r = kBallRadius * (side * right + topback * up - cc * d);
+            const double a = std::atan(2.5 * side * std::sqrt(1 - side * side) /
+                                       (1 + demo::kBallMass / me + 2.5 * (1 - side * side)));
+            const V3 j = (v / std::cos(th)) * V3{std::cos(th) * std::cos(a), std::cos(th) * std::sin(a), -std::sin(th)};
+            Moving m{{j.x, j.y, 0}, (1 / kInertiaPerMass) * cross(r, j)};
+            const V3 f = rolls_at(m);
+            const ShotOutcome o = demo::simulate_shot(c, {ball(0, 0.5, 0.635)}, Shot{0, v, side, topback, elev});
+            const Event *strike = first(o, EventKind::Strike, 0), *roll = first(o, EventKind::SlideToRoll, 0);
+            const double leaves = strike ? degrees(std::atan2(strike->vy, strike->vx)) : NAN;
+            const double rolls = roll ? degrees(std::atan2(roll->vy, roll->vx)) : NAN;
+            const double hand = degrees(std::atan2(f.y, f.x));
+            std::printf("    cue %2.0f deg up, tip %+.1f R side: leaves at %+.4f deg (squirt %+.4f), rolls on at %+.4f "
+                        "deg (hand %+.4f)\n",
+                        elev, side, leaves, degrees(a), rolls, hand);
+            // curving towards the tip's side: right (-y, a smaller angle) for side > 0
+            const bool curves = elev == 0 ? std::fabs(rolls - leaves) < 1e-9 : (rolls - leaves) * side < 0;
+            check(std::fabs(leaves - degrees(a)) < 1e-9 && std::fabs(rolls - hand) < 1e-9 && curves,
+                  "cue " + std::to_string(static_cast<int>(elev)) + " deg up, side " + std::to_string(side).substr(0, 4) +
+                      ": squirt (TP A.31), then " + (elev == 0 ? "straight" : "curving to the tip's side"));
+            ++ran;
+        }
+    }
+    check(ran == 8, "swerve: all 8 strikes ran");
+}
+
 // --- english off a rail ---------------------------------------------------------
 void english(const SimConfig &c) {
     const double y = 0.635, x = 1.9;
@@ -531,6 +575,8 @@ int main(int argc, char **argv) {
     roll_out(c);
     std::printf("# rolling into a rail, with and without english\n");
     rails(c);
+    std::printf("# squirt, swerve and masse\n");
+    swerve(c);
     std::printf("# english off a rail\n");
     english(c);
     std::printf("# integrity\n");
