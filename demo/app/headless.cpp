@@ -401,16 +401,14 @@ void print_game_json(const demo::GameRecord &g, const Options &o, const Simulati
                 response_name(o.config.response), static_cast<unsigned long long>(o.config.seed));
     for (size_t i = 0; i < g.shots.size(); ++i) {
         const demo::ShotRecord &r = g.shots[i];
-        std::printf("%s{\"player\":%d,\"angle\":%.17g,\"speed\":%.17g,\"side\":%.17g,\"topback\":%.17g,"
-                    "\"elevation\":%.17g,",
-                    i ? "," : "", r.player, r.shot.angle_deg, r.shot.speed, r.shot.side, r.shot.topback,
-                    r.shot.elevation);
+        std::printf("%s{\"player\":%d,\"angle\":%.17g,\"speed\":%.17g,\"side\":%.17g,\"topback\":%.17g,", i ? "," : "",
+                    r.player, r.shot.angle_deg, r.shot.speed, r.shot.side, r.shot.topback);
         if (r.placed) std::printf("\"ball_in_hand\":[%.17g,%.17g],", r.cue.x, r.cue.y);
         else std::printf("\"ball_in_hand\":null,");
         std::printf("\"potted\":[");
         for (size_t k = 0; k < r.potted.size(); ++k) std::printf("%s%d", k ? "," : "", r.potted[k]);
-        std::printf("],\"foul\":\"%s\",\"keeps_turn\":%s,\"candidates\":%d}", demo::foul_name(r.foul),
-                    r.keeps_turn ? "true" : "false", r.candidates);
+        std::printf("],\"foul\":\"%s\",\"keeps_turn\":%s,\"candidates\":%d,\"elevation\":%.17g}",
+                    demo::foul_name(r.foul), r.keeps_turn ? "true" : "false", r.candidates, r.shot.elevation);
     }
     std::printf("],\"shot_count\":%zu,\"fouls\":%d,\"groups\":[\"%s\",\"%s\"],\"winner\":", g.shots.size(), g.fouls,
                 demo::group_name(g.groups[0]), demo::group_name(g.groups[1]));
