@@ -10,7 +10,16 @@
 //             and tangential components (derived below)
 //   30 deg    a rolling ball's final direction after a cut
 //   draw, follow   straight shots come back and go through
+//   throw     a rolling cue ball's throw against cut angle: atan(mu(v) sin t)
+//             (constant mu and Alciatore's mu(v))
+//   roll-out  draw, stun and follow: the cue ball's roll-out velocity and
+//             where it starts rolling, in closed form
+//   rails     rolling into a rail at 20-70 degrees with reverse, no and
+//             running english: Han 2005's rebound and the path once rolling
+//   swerve    squirt (TP A.31) and the curve of an elevated cue's shot
 //   english   left and right english mirror each other off a rail
+// The sphere contact's figures come from the impacts solved by hand with
+// 3-vectors below (hit_balls, hit_rail, rolls_at), not from the library.
 //   random    1,000 random tables (every fourth a full rack) and shots
 //             (angles, speeds up to 12 m/s, tips): nothing tunnels or escapes, no
 //             overlap deeper than 1e-9 of a diameter, energy (rotation
@@ -85,7 +94,8 @@ void slide_and_roll(const SimConfig &c) {
 }
 
 // The cue ball's velocity right after the impact with an object ball at
-// rest (2-D rough contact, c2d_collide_rough): normal impulse Jn = m (1 + e)
+// rest, neither spinning (so the sphere contact's slip is horizontal and it
+// is the 2-D rough contact of c2d_collide_rough): normal impulse Jn = m (1 + e)
 // v cos(t) / 2; the contact points' tangential slip gt = v sin(t) (no z
 // spin), stopped by Jt = m gt / 7 (1/m_t = 2/m + 2 R^2 / I = 7/m, beta = 0)
 // unless that exceeds mu Jn.  n = line of centres at angle -t from the
