@@ -388,8 +388,8 @@ void rails(const SimConfig &c) {
     const double wz_english = 2.5 * v / kBallRadius * 0.3;  // a tip 0.3 R off centre at this speed
     int ran = 0;
     for (double deg : {20.0, 30.0, 40.0, 50.0, 60.0, 70.0}) {
-        for (int english = -1; english <= 1; ++english) {  // reverse, none, running
-            const double th = deg * M_PI / 180, wz0 = -english * wz_english;
+        for (int way = -1; way <= 1; ++way) {  // english: reverse, none, running
+            const double th = deg * M_PI / 180, wz0 = -way * wz_english;
             const double dx = std::cos(th), dy = std::sin(th);
             Ball b = ball(0, c.table.length - kBallRadius - gap, 0.3);
             b.vx = v * dx, b.vy = v * dy, b.wx = -b.vy / kBallRadius, b.wy = b.vx / kBallRadius, b.wz = wz0;
@@ -404,7 +404,7 @@ void rails(const SimConfig &c) {
             const V3 f = rolls_at(m);
             const double measured = roll ? degrees(std::atan2(roll->vy, -roll->vx)) : NAN;
             const double by_hand = degrees(std::atan2(f.y, -f.x));
-            const char *kind = english < 0 ? "reverse" : english > 0 ? "running" : "none";
+            const char *kind = way < 0 ? "reverse" : way > 0 ? "running" : "none";
             std::printf("    %2.0f deg, english %-7s: rebounds at (%+.6f, %+.6f) m/s (hand (%+.6f, %+.6f)); rolling "
                         "again at %.4f deg from the normal (hand %.4f), %.4f m/s\n",
                         deg, kind, hit ? hit->vx : NAN, hit ? hit->vy : NAN, m.v.x, m.v.y, measured, by_hand,
