@@ -163,12 +163,12 @@ void stun(const SimConfig &c) {
 struct V3 {
     double x, y, z;
 };
-V3 operator+(V3 a, V3 b) { return V3{a.x + b.x, a.y + b.y, a.z + b.z}; }
-V3 operator-(V3 a, V3 b) { return V3{a.x - b.x, a.y - b.y, a.z - b.z}; }
-V3 operator*(double k, V3 a) { return V3{k * a.x, k * a.y, k * a.z}; }
-double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 cross(V3 a, V3 b) { return V3{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-double norm(V3 a) { return std::sqrt(dot(a, a)); }
+V3 operator+(const V3 &a, const V3 &b) { return V3{a.x + b.x, a.y + b.y, a.z + b.z}; }
+V3 operator-(const V3 &a, const V3 &b) { return V3{a.x - b.x, a.y - b.y, a.z - b.z}; }
+V3 operator*(double k, const V3 &a) { return V3{k * a.x, k * a.y, k * a.z}; }
+double dot(const V3 &a, const V3 &b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+V3 cross(const V3 &a, const V3 &b) { return V3{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double norm(const V3 &a) { return std::sqrt(dot(a, a)); }
 
 struct Moving {
     V3 v, w;
@@ -177,7 +177,7 @@ struct Moving {
 constexpr double kInertiaPerMass = 0.4 * kBallRadius * kBallRadius;
 
 // An impulse P (per unit mass) at r from the centre, then the cloth.
-void push(Moving &b, V3 r, V3 p) {
+void push(Moving &b, const V3 &r, const V3 &p) {
     b.v = b.v + p;
     b.v.z = 0;
     b.w = b.w + (1 / kInertiaPerMass) * cross(r, p);
@@ -190,7 +190,7 @@ struct Friction {
 };
 
 // Ball a hits ball b, the normal n from a to b (horizontal, unit).
-void hit_balls(Moving &a, Moving &b, V3 n, double e, Friction f) {
+void hit_balls(Moving &a, Moving &b, const V3 &n, double e, const Friction &f) {
     const V3 ra = kBallRadius * n, rb = -1.0 * ra;
     const V3 g = (b.v + cross(b.w, rb)) - (a.v + cross(a.w, ra));  // b's contact point past a's
     const double pn = (1 + e) * -dot(g, n) / 2;                     // 1/m_n = 2
@@ -204,7 +204,7 @@ void hit_balls(Moving &a, Moving &b, V3 n, double e, Friction f) {
 // A ball hits a rail whose nose is h above the cloth; n horizontal, from
 // the ball to the rail (Han 2005: the contact at R nu, nu = cos th n +
 // sin th z, sin th = h / R - 1).
-void hit_rail(Moving &b, V3 n, double h, double e, double mu) {
+void hit_rail(Moving &b, const V3 &n, double h, double e, double mu) {
     const double sn = h / kBallRadius - 1, cs = std::sqrt(1 - sn * sn);
     const V3 nu = cs * n + sn * V3{0, 0, 1}, r = kBallRadius * nu;
     const double pn = (1 + e) * dot(b.v, nu);  // inverse mass 1 along nu (r x nu = 0)
@@ -293,7 +293,7 @@ void draw_and_follow(const SimConfig &c) {
 // v sin t, no vertical part) throws by atan(mu) instead, a rolling one far
 // less at small cuts.  Checked: the engine's object ball after the impact
 // against hit_balls, and hit_balls against the closed form.
-void throw_angles(const SimConfig &c, const char *name, Friction f) {
+void throw_angles(const SimConfig &c, const char *name, const Friction &f) {
     const double v = 2.0, e = c.model.ball.restitution;
     int ran = 0;
     for (double deg : {10.0, 15.0, 20.0, 30.0, 40.0, 45.0, 50.0, 60.0, 70.0}) {
