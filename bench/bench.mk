@@ -128,7 +128,8 @@ TEST_TARGETS += test-bench
 # ------------------------------------------------------------------ sphere
 # Pool balls as spheres (bench/sphere.c): accuracy of the library and of a
 # plain transcription against the MPFR referee, and instructions per call
-# of each under callgrind (printed; the figures are quoted in the README).
+# of each under callgrind (printed; the figures are quoted in
+# bench/RESULTS-sphere.md, the README and docs/API.md).
 .PHONY: bench-sphere
 BENCH_SPHERE_N := 100000
 $(BENCH_DIR)/sphere: bench/sphere.c referee/cases_sphere.c referee/ref_sphere.c $(STATIC)

@@ -30,7 +30,7 @@ $(MCU_B)/%/firmware.o: examples/firmware.c | mcu-deps
 	$(MCU_COMPILE) $(DEPFLAGS) -Wdouble-promotion -c $< -o $@
 
 $(EXAMPLE_FIRMWARE): $(MCU_B)/m4f/startup_arm.o $(MCU_B)/m4f/firmware.o $(MCU_B)/m4f/lib.o $(MCU_DIR)/arm.ld
-	$(MCU_m4f_CC) $(MCU_m4f_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
+	$(MCU_m4f_CC) $(MCU_m4f_ARCH) $(call MCU_ARM_LINK,m4f) -o $@ $(filter %.o,$^) -lgcc
 
 # One check per host example run, one for the firmware's link (no double
 # helpers), one for its run under QEMU; `test-examples: N passed, M failed`.

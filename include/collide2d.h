@@ -198,9 +198,15 @@ c2d_status c2d_time_of_impact(const c2d_body *a, const c2d_body *b, double radiu
  *                  and passes shorter than ~2^-106 of the elapsed time on a
  *                  curved path.  Ties there resolve as exact ties: a graze is
  *                  no contact, a touch at the horizon is a contact at it.
- *                  With zero accelerations it agrees with c2d_time_of_impact.
+ *                  With equal accelerations (zero ones included) the relative
+ *                  path is straight and the answer is c2d_time_of_impact's,
+ *                  status and bits, at every magnitude, the horizon only
+ *                  cutting (a contact beyond it is none; RANGE only with an
+ *                  infinite horizon).
  *   accuracy       within 1 unit of ulp(t) + ulp(|d|) / s, s the approach speed
- *                  at contact (c2d_time_of_impact's unit; measured worst 0.5).
+ *                  at contact (c2d_time_of_impact's unit; measured worst 0.5);
+ *                  with equal accelerations c2d_time_of_impact's 4 units
+ *                  (measured worst 2.2).
  *   cost           a few hundred ns for ordinary pairs; microseconds near a
  *                  tie (exact evaluation); stack up to ~3 KB (x86-64 double),
  *                  1.6 KB (Cortex-M4F float). */
@@ -331,9 +337,13 @@ typedef struct c2d_ball_surface { double restitution, friction, friction_boost, 
  *   accuracy     each velocity component and spin x radius within
  *                c2d_collide's bound plus 8 ulp of the PAIR's scale (the
  *                largest |vx|, |vy|, |R w| of both balls before and after;
- *                measured worst 8.3 ulp in all, tests/unit/test_sphere.c, against a
- *                512-bit MPFR referee, pool-like and mixed masses at unit
- *                scale).  The friction part is plain arithmetic: a light
+ *                measured against a 512-bit MPFR referee, all parts in,
+ *                tests/unit/test_sphere.c: worst 8.3 ulp double, 7.1 float
+ *                at unit scale (pool pairs 4.4, 5.0); 5.5 and 6.0 with
+ *                masses, radii, speeds and spins each anywhere in 2^+-300
+ *                (float 2^+-30), sliding and sticking).  Nearer the
+ *                format's ends only the statuses, finiteness and
+ *                conservation are checked (fuzzed).  The friction part is plain arithmetic: a light
  *                ball brushed by a much faster one gets an error of the fast
  *                one's scale.
  *   cost         c2d_collide's plus ~100 floating-point operations (exp
@@ -372,8 +382,10 @@ typedef struct c2d_cushion { c2d_vec2 normal; double height, restitution, fricti
  *   physics      energy never grows; the ball's angular momentum about the
  *                contact point along n^ and z^ is kept.
  *   accuracy     each output within 16 ulp of the ball's scale (largest |vx|,
- *                |vy|, |R w| before and after; plain arithmetic, measured
- *                against the MPFR referee: worst 9.8).
+ *                |vy|, |R w| before and after; plain arithmetic, cos(th)
+ *                from h's distance to 2R so it keeps a few u near the top;
+ *                measured against the MPFR referee: worst 9.3 double, 9.0
+ *                float at unit scale, 9.7 and 7.9 over 2^+-300 / 2^+-30).
  *   cost         ~70 floating-point operations, two square roots. */
 c2d_status c2d_collide_cushion(c2d_ball *ball, c2d_cushion c);
 #endif
@@ -469,13 +481,24 @@ c2d_status c2d_time_of_impactx(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed
  * (-std=c99, c11, c++11...: contraction off by default) or for a target
  * without FMA; elsewhere they are plain calls of the library functions.
  * One case no macro shows: -ffp-contract=fast given explicitly with -std=c99
- * on gcc for an FMA target.  Don't combine it with C2D_INLINE. */
+ * on gcc for an FMA target.  Don't combine it with C2D_INLINE.
+ *   Query: C2D_INLINE_AS_WRITTEN is 1 where the front ends are inline, 0
+ * where they are plain calls.  Diagnostic: #define C2D_INLINE_REQUIRED as
+ * well, and a translation unit whose flags would make them plain calls
+ * fails to compile, with #error naming the flags that enable them.
+ *   Flags that enable them: clang with any flags but -ffast-math or
+ * -ffinite-math-only; gcc with -std=c99 (c11, c17, c++11...) or, in its GNU
+ * modes (the default), for a target without FMA (x86-64 baseline: plain
+ * `cc -O2` is inline; -march=native or -march=x86-64-v3 there is not). */
 #if defined(C2D_INLINE)
 #if !defined(__FAST_MATH__) && !(defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) && (defined(__clang__) || (defined(__GNUC__) && (defined(__STRICT_ANSI__) || \
     !(defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)))))
 #define C2D_INLINE_AS_WRITTEN 1
 #else
 #define C2D_INLINE_AS_WRITTEN 0
+#endif
+#if defined(C2D_INLINE_REQUIRED) && !C2D_INLINE_AS_WRITTEN
+#error "C2D_INLINE_REQUIRED: the inline front ends would be plain calls under these flags (fast math, or gcc's GNU mode on an FMA target): compile with -std=c99 (or c11, c++11) and without -ffast-math, or use clang"
 #endif
 
 #endif /* C2D_INLINE */

@@ -205,11 +205,22 @@
  *   second in bench/world.c's opening comment.
  *
  * CONFIGURATION
- *   C2D_NO_WORLD (when compiling the library): leave the world out.  The
- *   firmware builds of tests/mcu do: the world hands 16-byte vectors by
- *   value to the library's calls, which GCC's Cortex-M code copies with
- *   memcpy, and the library promises no C library.  C2D_NO_DOUBLE leaves it
- *   out too (it is double precision).
+ *   C2D_NO_WORLD (when compiling the library): leave the world out.
+ *   C2D_NO_DOUBLE leaves it out too (it is double precision).
+ *
+ * FREESTANDING: the world calls no C library function (not even memcpy:
+ *   it copies no struct whole and passes none by value, which gcc -Os
+ *   compiles into memcpy calls on Cortex-M0 and RV32; tests/mcu/sizes.sh
+ *   fails on any), allocates nothing and does not recurse.  Its only
+ *   indirect calls are the caller's: on_event, the resolvers and the
+ *   broadphase's four, which run on the world's stack; the world's own
+ *   depth under c2d_world_advance is about 5 KiB on Cortex-M0 and RV32
+ *   (soft double), 4 KiB on Cortex-M7 (docs/SIZES.md, "+ callbacks"), and
+ *   its code 20 to 36 KiB beyond the rest of the library (about 80 KiB with
+ *   the collisions it calls, on Cortex-M0).  The firmware builds with
+ *   double (tests/mcu: m0, m7, rv32) include it; the world's hash scenes
+ *   (22.5 KiB of world memory) run on m7 and rv32 and give x86-64's bits
+ *   (docs/DETERMINISM.md).
  *
  * THREAD SAFETY: the functions touch only their arguments; one world may
  * be read (c2d_world_get, c2d_world_get_stats) from several threads at once
@@ -497,10 +508,22 @@ c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t);
  * collapse rule once the bounces are below collapse_length (an event
  * every sqrt(2 collapse_length / a)): stop such a disk from a timer, or
  * use the box's walls, which have the rest rule.  Statics are not checked against disks for overlap,
- * take no part in the broadphase and see no periodic images: every
- * prediction tries every static (measured: a few statics cost little; for
- * many, cells would be needed).  Reported as C2D_WORLD_STATIC events and
- * counted in stats.wall_collisions.
+ * take no part in the broadphase and see no periodic images.  A
+ * prediction tries only the statics whose boxes (a segment's ends, a
+ * circle's or sensor's centre +- radius, derived from what is stored: no
+ * memory of their own) meet the disk's reach until its next crossing: the
+ * 3 x 3 cells around its own (at least a diameter beyond its cell), or
+ * with a caller's broadphase its box grown by its radius; a static that
+ * comes into reach at a cell crossing is tried there, a box left predicts
+ * the disk anew.  A static's time is computed from the disk's reference
+ * state whenever it is tried, so the culling changes no time (the pool
+ * table's 36 statics: the break 3x fewer instructions; exceptions, none
+ * met in the tests: a static tried again at a later crossing and found
+ * due at once, and a curved path's second entry into a sensor, which are
+ * sought from the time of the try).  Every static is tested
+ * against the reach (4 comparisons each): meant for a few dozen to a few
+ * hundred.  Reported as C2D_WORLD_STATIC events and counted in
+ * stats.wall_collisions.
  *   returns  C2D_OK; C2D_INVALID (NULL world, NaN/Inf, a == b, restitution
  *            outside [0, 1], the statics full, inside on_event; nothing
  *            changes).

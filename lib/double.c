@@ -56,4 +56,23 @@ c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a, const c2d
     return c2d_toia_solve(a, &acc_a, b, &acc_b, radius_sum, horizon, t);
 }
 
+#ifndef C2D_NO_WORLD
+/* The world's by-address forms of three of the above (internal.h). */
+c2d_status c2d_collide_normal_by_ref(c2d_body *a, c2d_body *b, const c2d_vec2 *normal, double restitution)
+{
+    return c2d_real_collide_normal(a, b, normal, restitution);
+}
+
+c2d_status c2d_collide_rough_by_ref(c2d_disk *a, c2d_disk *b, const c2d_vec2 *normal, const c2d_surface *s)
+{
+    return c2d_real_collide_rough(a, b, normal, s);
+}
+
+c2d_status c2d_time_of_impact_accel_by_ref(const c2d_body *a, const c2d_vec2 *acc_a, const c2d_body *b,
+                                           const c2d_vec2 *acc_b, double radius_sum, double horizon, double *t)
+{
+    return c2d_toia_solve(a, acc_a, b, acc_b, radius_sum, horizon, t);
+}
+#endif /* C2D_NO_WORLD */
+
 #endif /* C2D_NO_DOUBLE */

@@ -92,6 +92,28 @@ float sqrtf(float x);
 #define C2D_DISPATCH 1
 #endif
 
+/* The world's way into double.c (lib/world.c is a translation unit of its
+ * own): the public calls that take a c2d_vec2 or c2d_surface by value, with
+ * it by address instead, the same code and bits.  gcc -Os copies a struct
+ * argument of 16 bytes or more with a memcpy call on Cortex-M0 and RV32, and
+ * the library calls no C library (tests/mcu/sizes.sh fails on it).  Hidden
+ * where the object format allows, so not in the shared library's ABI;
+ * sizes.sh leaves hidden functions out of the size table. */
+#if defined(__GNUC__) && defined(__ELF__)
+#define C2D_LIBRARY_ONLY __attribute__((visibility("hidden")))
+#else
+#define C2D_LIBRARY_ONLY
+#endif
+#if !defined(C2D_NO_DOUBLE) && !defined(C2D_NO_WORLD)
+C2D_LIBRARY_ONLY c2d_status c2d_collide_normal_by_ref(c2d_body *a, c2d_body *b, const c2d_vec2 *normal,
+                                                      double restitution);
+C2D_LIBRARY_ONLY c2d_status c2d_collide_rough_by_ref(c2d_disk *a, c2d_disk *b, const c2d_vec2 *normal,
+                                                     const c2d_surface *s);
+C2D_LIBRARY_ONLY c2d_status c2d_time_of_impact_accel_by_ref(const c2d_body *a, const c2d_vec2 *acc_a,
+                                                            const c2d_body *b, const c2d_vec2 *acc_b,
+                                                            double radius_sum, double horizon, double *t);
+#endif
+
 /* What the fast path (and tier 2) concluded.  Internal only: never mixed
  * with the public c2d_status; c2d_verdict_status (real/collide/fast.h) converts the
  * final ones. */

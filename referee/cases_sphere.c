@@ -77,6 +77,72 @@ void gen_cushion(c2d_rng *r, ref_cushion_case *c)
     if (c->a.vel[0] * c->n[0] + c->a.vel[1] * c->n[1] <= 0) c->a.vel[0] = c->n[0], c->a.vel[1] = c->n[1];
 }
 
+/* 2^k (1 + u), k uniform in [-span, span], a random sign: a magnitude over
+ * 2 span binades, exact in float for span < 126. */
+static double wide(c2d_rng *r, int span)
+{
+    int k = (int)(c2d_rng_next(r) % (uint64_t)(2 * span + 1)) - span;
+    double v = ldexp((double)(float)(1 + c2d_rng_unit(r)), k);
+    return c2d_rng_next(r) & 1 ? -v : v;
+}
+
+/* One component of a speed or of spin x radius: 0 in one case in 8. */
+static double wide_speed(c2d_rng *r, int span) { return c2d_rng_next(r) % 8 == 0 ? 0 : wide(r, span); }
+
+/* kMu's regimes: no friction, sliding, either, sticking (1e6 and INFINITY:
+ * mu Jn always beyond the slip's stopping impulse). */
+static const double kWideMu[6] = {0, 0.05, 0.2, 1, 1e6, INFINITY};
+
+/* Mass and radius anywhere in the span, inertia k m R^2 with k in [0.1, 1]
+ * (one in 8 INFINITY); each velocity component and each spin x radius at
+ * its own exponent.  The inertia and every product stay within the format. */
+static void wide_ball(c2d_rng *r, ref_ball *d, int span)
+{
+    int i;
+    d->m = fabs(wide(r, span)), d->r = fabs(wide(r, span));
+    d->inertia = c2d_rng_next(r) % 8 == 0 ? INFINITY : (double)(float)c2d_rng_range(r, 0.1, 1) * d->m * d->r * d->r;
+    for (i = 0; i < 2; i++) d->vel[i] = wide_speed(r, span);
+    for (i = 0; i < 3; i++) d->w[i] = wide_speed(r, span) / d->r;
+}
+
+void gen_wide_balls(c2d_rng *r, ref_balls_case *c, int span)
+{
+    double th, d, gn;
+    wide_ball(r, &c->a, span), wide_ball(r, &c->b, span);
+    if (c2d_rng_next(r) % 8 == 0) c->b.m = INFINITY;
+    c->e = c2d_rng_next(r) % 4 == 0 ? 1 : (double)(float)c2d_rng_unit(r);
+    c->mu = kWideMu[c2d_rng_next(r) % 6];
+    c->boost = c2d_rng_next(r) % 2 ? 0 : (double)(float)c2d_rng_range(r, 0, 0.5);
+    c->decay = (double)(float)fabs(wide(r, span / 4));
+    d = c->a.r + c->b.r, th = c2d_rng_range(r, 0, 6.283185307179586);
+    c->a.pos[0] = c2d_rng_range(r, -10, 10) * d, c->a.pos[1] = c2d_rng_range(r, -10, 10) * d;
+    c->b.pos[0] = c->a.pos[0] + d * cos(th), c->b.pos[1] = c->a.pos[1] + d * sin(th);
+    gn = (c->b.vel[0] - c->a.vel[0]) * cos(th) + (c->b.vel[1] - c->a.vel[1]) * sin(th);
+    if (gn > 0) {
+        int i;
+        for (i = 0; i < 2; i++) c->a.vel[i] = -c->a.vel[i], c->b.vel[i] = -c->b.vel[i];
+    } else if (gn == 0) { /* both still along the line of centres */
+        double s = fabs(wide(r, span));
+        c->b.vel[0] = -s * cos(th), c->b.vel[1] = -s * sin(th);
+    }
+}
+
+void gen_wide_cushion(c2d_rng *r, ref_cushion_case *c, int span)
+{
+    double th = c2d_rng_range(r, 0, 6.283185307179586), nl = fabs(wide(r, span));
+    uint64_t k = c2d_rng_next(r) % 4;
+    wide_ball(r, &c->a, span);
+    if (isinf(c->a.inertia)) c->a.inertia = 0.4 * c->a.m * c->a.r * c->a.r;
+    c->a.pos[0] = c2d_rng_range(r, -10, 10) * c->a.r, c->a.pos[1] = c2d_rng_range(r, -10, 10) * c->a.r;
+    c->n[0] = cos(th) * nl, c->n[1] = sin(th) * nl;
+    /* the centre's height, the table's 0.635 D, or anywhere up to 2R */
+    c->h = k == 0 ? c->a.r : k == 1 ? 0.635 * 2 * c->a.r : c->a.r * (1 + c2d_rng_unit(r));
+    c->e = c2d_rng_next(r) % 4 == 0 ? 1 : (double)(float)c2d_rng_unit(r);
+    c->mu = kWideMu[c2d_rng_next(r) % 6];
+    if (c->a.vel[0] * c->n[0] + c->a.vel[1] * c->n[1] <= 0) c->a.vel[0] = -c->a.vel[0], c->a.vel[1] = -c->a.vel[1];
+    if (c->a.vel[0] * c->n[0] + c->a.vel[1] * c->n[1] <= 0) c->a.vel[0] += cos(th) * fabs(wide(r, span));
+}
+
 /* Field by field through a list of addresses: gcc 12.2's vectoriser at -O2
  * dropped the last two of ten straight-line conversions here (r, inertia). */
 static void ball_to_float(ref_ball *d)

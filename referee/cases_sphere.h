@@ -20,6 +20,17 @@ void gen_mixed_balls(c2d_rng *r, ref_balls_case *c);
  * table's 0.635 D), e in [0.5, 1], mu in [0, 0.4].  Approaching. */
 void gen_cushion(c2d_rng *r, ref_cushion_case *c);
 
+/* Over many decades: masses, radii, each velocity component and each spin
+ * x radius at exponents uniform in [-span, span] (span 300 for double, 30
+ * for float keeps the inertia and every product within the format), one b
+ * in 8 immovable, one inertia in 8 INFINITY, mu from 0 to INFINITY (sliding
+ * and sticking), constant or Alciatore's form, the approach at any angle.
+ * The cushion: the same ball, h = R, the table's 0.635 D or anywhere in
+ * [R, 2R), a normal of any length.  Approaching (to rounding: a near
+ * tangent pair may be SEPARATING). */
+void gen_wide_balls(c2d_rng *r, ref_balls_case *c, int span);
+void gen_wide_cushion(c2d_rng *r, ref_cushion_case *c, int span);
+
 void balls_case_to_float(ref_balls_case *c);
 void cushion_case_to_float(ref_cushion_case *c);
 

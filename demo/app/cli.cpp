@@ -30,6 +30,9 @@ const char kUsage[] =
     "                              frame (default); sample the pairs of every m-th\n"
     "                              ball, m = ceil(N/1024), from a seeded offset drawn\n"
     "                              each frame, the rest whole; off checks nothing\n"
+    "  --broadphase tree|cells     who finds the world's candidate pairs in the pool\n"
+    "                              scenes: Box2D's b2DynamicTree (default) or the\n"
+    "                              world's own cells (the same events, bit for bit)\n"
     "  --headless                  no window (automatic without a display)\n"
     "  --game practice|8ball       practice: clear the table (the window's default);\n"
     "                              8ball: two players, WPA-style rules\n"
@@ -128,7 +131,7 @@ bool takes_value(const std::string &flag) {
     static const char *const options[] = {"--scene",   "--response", "--balls",  "--place",      "--seed",
                                           "--game",    "--players",  "--seconds", "--shot",      "--events",
                                           "--trace",   "--speeds",   "--screenshot", "--screenshot-window",
-                                          "--check",   "--model"};
+                                          "--check",   "--model",    "--broadphase"};
     for (const char *o : options)
         if (flag == o) return true;
     return false;
@@ -292,6 +295,11 @@ Options parse(int argc, char **argv) {
             else if (v == "sphere-alciatore") o.config.model.contact = ContactModel::SphereAlciatore;
             else if (v == "disk") o.config.model.contact = ContactModel::Disk;
             else fail("--model: unknown contact model '" + v + "' (sphere, sphere-alciatore or disk)");
+        } else if (flag == "--broadphase") {
+            const std::string v = value();
+            if (v == "tree") o.config.broadphase = demo::WorldBroadphase::Tree;
+            else if (v == "cells") o.config.broadphase = demo::WorldBroadphase::Cells;
+            else fail("--broadphase: unknown broadphase '" + v + "' (tree or cells)");
         } else if (flag == "--game") {
             const std::string v = value();
             if (v == "practice") o.game = GameMode::Practice;

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 // broadphase.h - candidate pairs from Box2D's b2DynamicTree: boxes (in
 // Box2D units) with a tag, and the query "every box that overlaps this
-// one".  No engine uses it today: the world finds its own candidates; it
-// stays for the world's caller-supplied broadphase, through which the pool
-// game is to plug Box2D's tree in.  Two answers to the query:
+// one".  The pool scenes' world engine plugs the dynamic tree into the
+// world's caller-supplied broadphase (world_engine.cpp: Box2D finds the
+// candidates, the library resolves).  Two answers to the query:
 //   dynamic tree  Box2D's b2DynamicTree: any sizes, any spread; the pool
 //                 scenes' broadphase;
 //   cell grid     a uniform grid of square cells over a fixed region, each

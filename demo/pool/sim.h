@@ -17,6 +17,7 @@
 #include "pool/events.h"
 #include "pool/model.h"
 #include "pool/scene.h"
+#include "pool/world_engine.h"
 
 namespace demo {
 
@@ -80,6 +81,9 @@ struct SimConfig {
     TableSpec table;                     // table.h: size and pocket geometry
     std::vector<Placement> placements;   // break, elastic: only these balls
     CheckMode check = CheckMode::Full;   // how much of each frame the checker checks (checker.h)
+    // who finds the world's candidates in the pool scenes (break, elastic,
+    // 8-ball; the gas and the cradle use the world's cells): world_engine.h
+    WorldBroadphase broadphase = WorldBroadphase::Tree;
     // The scene with the physics that goes with it.
     // (The contact model chosen is kept: it only matters with friction.)
     void set_scene(Scene s) {

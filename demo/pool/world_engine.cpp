@@ -42,6 +42,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "pool/broadphase.h"
 #include "pool/slow_contact.h"
 #include "pool/sphere_contact.h"
 
@@ -81,7 +82,7 @@ struct Feature {
 
 class WorldEngine : public Engine {
 public:
-    WorldEngine(const std::vector<Ball> &balls, const Table &table, const Model &model);
+    WorldEngine(const std::vector<Ball> &balls, const Table &table, const Model &model, WorldBroadphase broadphase);
     void step(double dt, Stats &stats, FrameLog &log) override;
     bool settle(double max_seconds, Stats &stats, FrameLog &log) override;
     void set_motion(int i, const Ball &state) override;
@@ -91,6 +92,10 @@ public:
 private:
     // the world's calls
     static void on_event(void *user, const c2d_world_event *event);
+    static void tree_insert(void *user, size_t disk, const c2d_world_box *box);
+    static void tree_move(void *user, size_t disk, const c2d_world_box *box);
+    static void tree_remove(void *user, size_t disk);
+    static void tree_query(void *user, const c2d_world_box *box, c2d_world_report report, void *context);
     static c2d_status resolve_impact(void *user, const c2d_world_contact *c, c2d_body *a, c2d_body *b);
     static c2d_status resolve_static(void *user, const c2d_world_contact *c, c2d_body *a, c2d_body *b);
 
@@ -116,15 +121,16 @@ private:
     Ball absorbed(int i, double t, const Ball &b, int partner, const Ball *partner_state);
     void pressed_group(int a, int b, double t, std::vector<int> &group) const;
     void move_together(int a, int b, double t);
+    void join(int a, int b, double t);
     double closing_by_acceleration(int a, int b, double t) const;
 
     // events
     bool resolving(const c2d_world_event &e) const;
-    bool repeating(size_t a, size_t b, double t);
-    static constexpr long kMostRepeats = 8;
-    size_t repeat_a_ = kNoDisk, repeat_b_ = kNoDisk;
-    double repeat_t_ = -1;
-    long repeats_ = 0;
+    void count_contact(int i, double t);
+    bool crowded(int i, double t) const;
+    static constexpr long kMostAtOnce = 8;
+    std::vector<double> instant_;  // per ball: the instant of its last contact (world time)
+    std::vector<long> at_once_;    // per ball: its contacts at that instant
     void take_resting_acceleration(int i);
     void impact(const c2d_world_event &e);
     void fixed(const c2d_world_event &e);
@@ -132,7 +138,7 @@ private:
     void pocket(const c2d_world_event &e);
     Ball after_event(int i, double t) const;
     void record(double t, EventKind kind, int ball, int other, int feature, double impulse);
-    void waypoint(int ball);
+    void waypoint(int i);
 
     const Model model_;
     const Table table_;
@@ -141,6 +147,11 @@ private:
     std::vector<Feature> statics_;  // by the world's static index
     std::vector<Segment> faces_;  // what a ball can lean on: the rails' cushions, the jaws' facings
     std::vector<uint64_t> memory_;  // the world's buffer (8-byte aligned)
+    const bool use_tree_;           // Box2D's tree finds the world's candidates (else its cells)
+    c2d_world_broadphase tree_calls_{};
+    std::unique_ptr<Broadphase> tree_;  // each disk's box, tagged with its index
+    std::vector<int32> proxy_;          // disk -> the tree's proxy
+    std::vector<uintptr_t> found_;      // a query's tags
     c2d_world *world_ = nullptr;
     std::vector<size_t> world_index_;  // ball -> disk, kNoDisk off the table
     std::vector<int> ball_of_;         // disk -> ball
@@ -164,10 +175,11 @@ private:
     std::vector<int> group_;
 };
 
-WorldEngine::WorldEngine(const std::vector<Ball> &balls, const Table &table, const Model &model)
+WorldEngine::WorldEngine(const std::vector<Ball> &balls, const Table &table, const Model &model,
+                         WorldBroadphase broadphase)
     : Engine(balls), model_(model), table_(table), walls_(is_closed_box(table)),
-      offset_(is_closed_box(table) ? 0.0 : kMargin) {
-    faces_ = table.cushions;
+      offset_(is_closed_box(table) ? 0.0 : kMargin), faces_(table.cushions),
+      use_tree_(broadphase == WorldBroadphase::Tree) {
     for (const Pocket &p : table.pockets)
         for (const Jaw &j : p.jaws) faces_.push_back(j.facing);
     track_.resize(balls_.size());
@@ -233,6 +245,13 @@ void WorldEngine::build() {
         d.resolve_impact = &WorldEngine::resolve_impact;
         d.resolve_static = &WorldEngine::resolve_static;
     }
+    if (use_tree_) {
+        tree_ = make_dynamic_tree();
+        proxy_.clear();
+        tree_calls_ = c2d_world_broadphase{&WorldEngine::tree_insert, &WorldEngine::tree_move, &WorldEngine::tree_remove,
+                                           &WorldEngine::tree_query, this, 0};
+        d.broadphase = &tree_calls_;
+    }
     add_statics(d.statics, false);
     const size_t bytes = c2d_world_bytes(&d);
     memory_.assign(bytes / sizeof(uint64_t) + 1, 0);
@@ -242,6 +261,8 @@ void WorldEngine::build() {
     add_statics(d.statics, true);
     epoch_ += world_now_;
     world_now_ = 0;
+    instant_.assign(balls_.size(), -1);  // the new world's clock starts at 0
+    at_once_.assign(balls_.size(), 0);
     world_index_.assign(balls_.size(), kNoDisk);
     ball_of_.clear();
     for (size_t i = 0; i < balls_.size(); ++i) {
@@ -353,7 +374,9 @@ c2d_status WorldEngine::resolve_static(void *user, const c2d_world_contact *c, c
 // it touches, the other one's new state included), else rough.
 c2d_status WorldEngine::resolve_pair(const c2d_world_contact &c, c2d_body &a, c2d_body &b) {
     const int ia = ball_of_[c.a], ib = ball_of_[c.b];
-    if (repeating(c.a, c.b, c.time)) return C2D_INVALID;
+    count_contact(ia, c.time);
+    count_contact(ib, c.time);
+    if (crowded(ia, c.time) || crowded(ib, c.time)) return C2D_INVALID;
     const Ball sa = with_spin(ia, c.time, a.pos.x - offset_, a.pos.y - offset_, a.vel.x, a.vel.y);
     const Ball sb = with_spin(ib, c.time, b.pos.x - offset_, b.pos.y - offset_, b.vel.x, b.vel.y);
     const double d = std::hypot(c.normal.x, c.normal.y), nx = c.normal.x / d, ny = c.normal.y / d;
@@ -419,7 +442,7 @@ void WorldEngine::limits_of(int i, double t, const Ball &b, int partner, const B
     const double reach = kBallDiameter * (1 + 1e-9);
     for (int k : ball_of_) {
         if (k == i || !balls_[static_cast<size_t>(k)].active) continue;
-        const Ball o = k == partner ? *partner_state : ball_at(k, t);
+        const Ball o = partner_state != nullptr && k == partner ? *partner_state : ball_at(k, t);
         const double dx = o.x - b.x, dy = o.y - b.y, d = std::hypot(dx, dy);
         // a ball moving off lets b follow at its speed; one coming at b
         // is held back when it is absorbed itself, not b pushed away
@@ -514,6 +537,26 @@ void WorldEngine::move_together(int a, int b, double t) {
     }
 }
 
+// A crowded pair (count_contact) moves on as one: both take their mean
+// velocity and z spin and roll (momentum kept, energy lost), so they
+// neither approach nor press each other (the same velocity and the same
+// deceleration), and the instant ends.  Without it the world's own
+// resolution and the tracks' state changes pass an approach of a few ulp
+// back and forth for ever (a ball rolling tangentially past one at rest,
+// its deceleration pressing into it by rounding: the impact gives the
+// resting ball 1e-19 m/s, its slide and roll end at once, the approach is
+// back).
+void WorldEngine::join(int a, int b, double t) {
+    Ball sa = ball_at(a, t), sb = ball_at(b, t);
+    const double vx = 0.5 * (sa.vx + sb.vx), vy = 0.5 * (sa.vy + sb.vy), wz = 0.5 * (sa.wz + sb.wz);
+    for (Ball *s : {&sa, &sb}) {
+        s->vx = vx, s->vy = vy, s->wz = wz;
+        roll(*s);
+    }
+    restart(a, sa, t, true);
+    restart(b, sb, t, true);
+}
+
 // How fast the accelerations of balls a and b (their current tracks) close
 // their line of centres at time t, m/s^2 (> 0: pressing together).
 double WorldEngine::closing_by_acceleration(int a, int b, double t) const {
@@ -523,6 +566,59 @@ double WorldEngine::closing_by_acceleration(int a, int b, double t) const {
     position_at(tb, t, bx, by);
     const double dx = bx - ax, dy = by - ay, d = std::hypot(dx, dy);
     return ((ta.ax - tb.ax) * dx + (ta.ay - tb.ay) * dy) / d;
+}
+
+// --- Box2D's tree as the world's broadphase -------------------------------
+
+// The world's boxes in the tree's float coordinates, in millimetres: the
+// tree fattens every box by b2_aabbExtension (0.1 of its unit), a tenth of
+// a millimetre there instead of 10 cm (three balls) in metres.  Rounded
+// outwards (lo down, hi up), so every pair of boxes that overlap in double
+// overlap in float: more candidates at most, never fewer (a missed impact).
+constexpr double kTreeUnit = 1024;  // a power of two: the scaling itself is exact
+
+float float_down(double v) {
+    const float f = static_cast<float>(v);
+    return static_cast<double>(f) > v ? std::nextafter(f, -INFINITY) : f;
+}
+
+float float_up(double v) {
+    const float f = static_cast<float>(v);
+    return static_cast<double>(f) < v ? std::nextafter(f, INFINITY) : f;
+}
+
+b2AABB tree_box(const c2d_world_box &b) {
+    b2AABB a;
+    a.lowerBound.Set(float_down(b.lo.x * kTreeUnit), float_down(b.lo.y * kTreeUnit));
+    a.upperBound.Set(float_up(b.hi.x * kTreeUnit), float_up(b.hi.y * kTreeUnit));
+    return a;
+}
+
+void WorldEngine::tree_insert(void *user, size_t disk, const c2d_world_box *box) {
+    WorldEngine &w = *static_cast<WorldEngine *>(user);
+    if (w.proxy_.size() <= disk) w.proxy_.resize(disk + 1, b2_nullNode);
+    w.proxy_[disk] = w.tree_->add(tree_box(*box), disk);
+}
+
+void WorldEngine::tree_move(void *user, size_t disk, const c2d_world_box *box) {
+    WorldEngine &w = *static_cast<WorldEngine *>(user);
+    w.tree_->move(w.proxy_[disk], tree_box(*box));
+}
+
+void WorldEngine::tree_remove(void *user, size_t disk) {
+    WorldEngine &w = *static_cast<WorldEngine *>(user);
+    w.tree_->remove(w.proxy_[disk]);
+    w.proxy_[disk] = b2_nullNode;
+}
+
+// Every disk whose box overlaps `box` (the tree's answer: touching counts).
+// A query runs inside a prediction, never inside another query, so one
+// list of tags serves.
+void WorldEngine::tree_query(void *user, const c2d_world_box *box, c2d_world_report report, void *context) {
+    WorldEngine &w = *static_cast<WorldEngine *>(user);
+    w.found_.clear();
+    w.tree_->query(tree_box(*box), w.found_);
+    for (uintptr_t tag : w.found_) report(context, static_cast<size_t>(tag));
 }
 
 // --- events ------------------------------------------------------------
@@ -570,21 +666,31 @@ void WorldEngine::take_resting_acceleration(int i) {
     c2d_vec2 a;
     if (c2d_world_get_acceleration(world_, world_index_[k], &a) != C2D_OK || (a.x == track_[k].ax && a.y == track_[k].ay))
         return;
-    Ball now = state_of(world_index_[k], last_event_);
-    now.motion = track_[k].start.motion;
-    track_[k].start = now, track_[k].t0 = last_event_;
+    Ball rested = state_of(world_index_[k], last_event_);
+    rested.motion = track_[k].start.motion;
+    track_[k].start = rested, track_[k].t0 = last_event_;
     track_[k].ax = a.x, track_[k].ay = a.y;
     waypoint(i);
 }
 
-// Whether the pair meets again at the same instant more than kMostRepeats
-// times: a slow contact the pool model and the world's rest rule pass back
-// and forth (the model presses them together again), which the world's
-// own resolution then ends.
-bool WorldEngine::repeating(size_t a, size_t b, double t) {
-    if (a == repeat_a_ && b == repeat_b_ && t == repeat_t_) ++repeats_;
-    else repeat_a_ = a, repeat_b_ = b, repeat_t_ = t, repeats_ = 0;
-    return repeats_ > kMostRepeats;
+// A ball's contacts at one instant are counted, per ball, whichever pair
+// they are with: a slow contact the pool model and the world's rest rule
+// pass back and forth (the model's track pressing the pair together
+// again) can cycle through several pairs (6-10, 10-14, 6-10, ...), and a
+// count that any other pair resets never ends it.  A ball with more than
+// kMostAtOnce contacts at one instant is crowded: its contacts there are
+// the world's own (resolution, rest rule, collapse rule, which end), with
+// no change of ours.  The count depends on the events alone, never on how
+// the advance is sliced into frames.
+void WorldEngine::count_contact(int i, double t) {
+    const size_t k = static_cast<size_t>(i);
+    if (instant_[k] == t) ++at_once_[k];
+    else instant_[k] = t, at_once_[k] = 1;
+}
+
+bool WorldEngine::crowded(int i, double t) const {
+    const size_t k = static_cast<size_t>(i);
+    return instant_[k] == t && at_once_[k] > kMostAtOnce;
 }
 
 // Whether event e is the contact a resolver has just seen.
@@ -605,11 +711,8 @@ Ball with_position(Ball s, const Ball &w) {
 void WorldEngine::impact(const c2d_world_event &e) {
     const int ia = ball_of_[e.a], ib = ball_of_[e.b];
     Ball a = state_of(e.a, e.time), b = state_of(e.b, e.time);
-    const bool mine = resolving(e);
-    if (repeats_ > kMostRepeats) {  // the world's own rules end it: no changes of ours
-        ++stats_->ball_ball_collisions;
-        return;
-    }
+    // a crowded ball's contact is the world's own (its resolver refused)
+    const bool mine = resolving(e) && !crowded(ia, e.time) && !crowded(ib, e.time);
     if (mine && kept(a, resolved_.after_a) && kept(b, resolved_.after_b)) {  // the resolver's spins
         a = with_position(resolved_.after_a, a), b = with_position(resolved_.after_b, b);
     } else {  // the world's own resolution: no spin changed
@@ -621,6 +724,7 @@ void WorldEngine::impact(const c2d_world_event &e) {
     take_resting_acceleration(ia);
     take_resting_acceleration(ib);
     if (mine && resolved_.absorbed && closing_by_acceleration(ia, ib, e.time) > 0) move_together(ia, ib, e.time);
+    else if (!mine && (crowded(ia, e.time) || crowded(ib, e.time))) join(ia, ib, e.time);
     ++stats_->ball_ball_collisions;
     if (record_paths_) log_->contacts.push_back(pair_key(ia, ib));
     double impulse = std::hypot(e.impulse.x, e.impulse.y);
@@ -763,8 +867,9 @@ void WorldEngine::place_ball(int i, Point p) {
 
 }  // namespace
 
-std::unique_ptr<Engine> make_world_engine(const std::vector<Ball> &balls, const Table &table, const Model &model) {
-    return std::unique_ptr<Engine>(new WorldEngine(balls, table, model));
+std::unique_ptr<Engine> make_world_engine(const std::vector<Ball> &balls, const Table &table, const Model &model,
+                                          WorldBroadphase broadphase) {
+    return std::unique_ptr<Engine>(new WorldEngine(balls, table, model, broadphase));
 }
 
 }  // namespace demo

@@ -15,7 +15,15 @@
 
 namespace demo {
 
-std::unique_ptr<Engine> make_world_engine(const std::vector<Ball> &balls, const Table &table, const Model &model);
+// Who finds the world's candidate pairs: Box2D's b2DynamicTree through the
+// world's caller broadphase (c2d_world_desc.broadphase: Box2D finds
+// candidates, the library resolves), or the world's built-in cells.  The
+// events and states are the same bits either way (the world's contract);
+// only the time differs.
+enum class WorldBroadphase { Tree, Cells };
+
+std::unique_ptr<Engine> make_world_engine(const std::vector<Ball> &balls, const Table &table, const Model &model,
+                                          WorldBroadphase broadphase = WorldBroadphase::Cells);
 
 }  // namespace demo
 

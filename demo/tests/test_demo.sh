@@ -149,6 +149,8 @@ bad --scene cradle --balls 0
 bad --scene cradle --place 0,1,0.6
 bad --scene elastic --balls 5
 bad --check bogus
+bad --broadphase bogus
+bad --broadphase
 bad --check
 bad --check ""
 bad --trace ""
@@ -194,7 +196,7 @@ check "--seconds 0 is no underflow" $?
 # --- repeated options: --place and --shot accumulate, the
 # switches (--headless, --json) may repeat; any other option taking a value
 # given twice is an error naming it, and nothing is written
-for opt in "--scene break" "--response box2d" "--balls 5" "--seed 3" "--check sample" "--game 8ball" "--players computer,computer" \
+for opt in "--scene break" "--response box2d" "--balls 5" "--seed 3" "--check sample" "--broadphase cells" "--game 8ball" "--players computer,computer" \
            "--seconds 1" "--events $TMP/twice1.csv" "--trace $TMP/twice2.csv" "--speeds $TMP/twice3.txt" \
            "--screenshot $TMP/twice4.png" "--screenshot-window $TMP/twice5.png"; do
     # shellcheck disable=SC2086
@@ -355,6 +357,14 @@ awk -v d="$d_relaxed" -v b="$bound" 'BEGIN { exit !(d < b) }'; check "gas speeds
 awk -v d="$d_start" -v b="$bound" 'BEGIN { exit !(d > b) }'; check "KS rejects the non-equilibrium start" $?
 [ "$(json_get "$TMP/gas.json" tunnelled)" = 0 ] && [ "$(json_get "$TMP/gas.json" escaped)" = 0 ]
 check "gas tunnelled 0, escaped 0" $?
+
+# --- --broadphase tree|cells: who finds the world's candidates changes no
+# bit of the events (the world's contract)
+bad_says "--broadphase: unknown broadphase 'grid' (tree or cells)" --broadphase grid
+"$BIN" --headless --events "$TMP/bp_tree.csv" > /dev/null &&
+    "$BIN" --headless --broadphase cells --events "$TMP/bp_cells.csv" > /dev/null &&
+    [ "$(wc -l < "$TMP/bp_tree.csv")" -gt 50 ] && cmp -s "$TMP/bp_tree.csv" "$TMP/bp_cells.csv"
+check "the break's events are the same bits with Box2D's tree and the world's cells" $?
 
 # --- --check full|sample|off (checker.h).  The JSON says which ran; off
 # checks no pair; sample checks the pairs of every m-th ball, m = ceil(N /

@@ -55,7 +55,7 @@ c2d_status c2d_world_set_acceleration(c2d_world *world, size_t index, c2d_vec2 a
 
 static c2d_status c2d_w_add_static(c2d_world *w, const c2d_w_static *st, size_t *index)
 {
-    w->stat[w->nstatic] = *st;
+    c2d_w_static_copy(&w->stat[w->nstatic], st);
     if (index != NULL) *index = w->nstatic;
     w->nstatic++;
     if (w->count > 0) {
@@ -170,5 +170,6 @@ void c2d_world_get_stats(const c2d_world *world, c2d_world_stats *stats)
         stats->virial = 0;
         return;
     }
-    *stats = world->stats;
+    stats->collisions = world->stats.collisions, stats->wall_collisions = world->stats.wall_collisions;
+    stats->events = world->stats.events, stats->time = world->stats.time, stats->virial = world->stats.virial;
 }

@@ -21,7 +21,7 @@ static void c2d_w_pair(c2d_world *w, uint32_t owner)
         c2d_w_predict(w, owner);
         return;
     }
-    shift = c2d_w_pair_shift(w, p, q); /* the image the prediction used */
+    c2d_w_pair_shift(w, p, q, &shift); /* the image the prediction used */
     c2d_w_body_at(p, now, &a);
     c2d_w_body_at(q, now, &b);
     qx = b.pos.x, qy = b.pos.y;
@@ -86,7 +86,7 @@ static void c2d_w_static_hit(c2d_world *w, uint32_t i, size_t k)
         if (collapsed) e = 1;
     }
     c.kind = C2D_WORLD_STATIC, c.time = now, c.a = i, c.b = k;
-    c.normal = n, c.restitution = e, c.collapsed = collapsed;
+    c2d_w_vec_copy(&c.normal, &n), c.restitution = e, c.collapsed = collapsed;
     {
         const double vx0 = a.vel.x, vy0 = a.vel.y;
         if (c2d_w_resolve(w, w->resolve_static, &c, &a, &b) == C2D_OK) {

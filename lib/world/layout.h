@@ -121,7 +121,7 @@ static void c2d_w_init_resolvers(c2d_world *w, const c2d_world_desc *d)
     w->surface.restitution = d->restitution;
     w->surface.friction = d->friction;
     w->surface.tangential_restitution = d->tangential_restitution;
-    w->wall_surface = w->surface;
+    c2d_w_surface_copy(&w->wall_surface, &w->surface);
     w->wall_surface.friction = d->wall_friction;
     w->inertia_factor = d->inertia_factor > 0 ? d->inertia_factor : 0.5;
 }
@@ -180,7 +180,9 @@ c2d_status c2d_world_init(c2d_world **world, void *memory, size_t bytes, const c
     w->user = desc->user;
     w->caller = desc->broadphase != NULL;
     if (w->caller) {
-        w->bp = *desc->broadphase;
+        const c2d_world_broadphase *bp = desc->broadphase;
+        w->bp.insert = bp->insert, w->bp.move = bp->move, w->bp.remove = bp->remove, w->bp.query = bp->query;
+        w->bp.user = bp->user, w->bp.margin = bp->margin;
     } else {
         w->bp.insert = NULL, w->bp.move = NULL, w->bp.remove = NULL, w->bp.query = NULL;
         w->bp.user = NULL, w->bp.margin = 0;

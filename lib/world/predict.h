@@ -95,7 +95,8 @@ static int c2d_w_unchanged(const c2d_body *a0, const c2d_body *a, const c2d_body
  * elastic impact changes something always ends). */
 static int c2d_w_refused_now(const c2d_body *a, const c2d_body *b)
 {
-    c2d_body ta = *a, tb = *b;
+    c2d_body ta, tb;
+    c2d_w_body_copy(&ta, a), c2d_w_body_copy(&tb, b);
     return C2D_W_COLLIDE(&ta, &tb, 1.0) != C2D_OK || c2d_w_unchanged(a, &ta, b, &tb);
 }
 
@@ -146,11 +147,12 @@ static void c2d_w_static_contact(const c2d_w_static *st, double px, double py, c
 
 static int c2d_w_static_refused(const c2d_w_static *st, const c2d_body *a)
 {
-    c2d_body ta = *a, tb;
+    c2d_body ta, tb;
     c2d_vec2 n;
+    c2d_w_body_copy(&ta, a);
     c2d_w_static_contact(st, a->pos.x, a->pos.y, &tb.pos, &n);
     tb.vel.x = tb.vel.y = 0, tb.mass = C2D_W_INF;
-    return C2D_W_COLLIDE_NORMAL(&ta, &tb, n, 1.0) != C2D_OK || (ta.vel.x == a->vel.x && ta.vel.y == a->vel.y);
+    return C2D_W_COLLIDE_NORMAL(&ta, &tb, &n, 1.0) != C2D_OK || (ta.vel.x == a->vel.x && ta.vel.y == a->vel.y);
 }
 
 /* Disk p (at a, now) entering sensor k: a point meeting a circle, from
@@ -182,11 +184,11 @@ static void c2d_w_predict_sensor(const c2d_world *w, const c2d_w_disk *p, const 
         if (r != C2D_OK || !(p->t + toi >= w->now)) return;
         when = p->t + toi;
     } else {
-        r = C2D_W_TOI_ACCEL(&ref, acc, &b, zero, st->radius, p->timer - p->t, &toi);
+        r = C2D_W_TOI_ACCEL(&ref, &acc, &b, &zero, st->radius, p->timer - p->t, &toi);
         if (r == C2D_OK && p->t + toi >= w->now) {
             when = p->t + toi;
         } else {
-            r = C2D_W_TOI_ACCEL(a, acc, &b, zero, st->radius, p->timer - w->now, &toi);
+            r = C2D_W_TOI_ACCEL(a, &acc, &b, &zero, st->radius, p->timer - w->now, &toi);
             if (r != C2D_OK) return;
             when = w->now + toi;
         }
@@ -194,13 +196,28 @@ static void c2d_w_predict_sensor(const c2d_world *w, const c2d_w_disk *p, const 
     c2d_w_consider(best, when, C2D_W_WALL, (uint32_t)(4 + k), 0);
 }
 
-/* Disk p against every static, from its reference state (time p->t, so the
+/* Whether static st's box (a segment's ends, a circle's or sensor's
+ * centre +- radius: a, b and radius as stored, so the box costs no memory
+ * and the world's layout stays as it was) meets box r, touching counts. */
+C2D_W_HOT int c2d_w_static_meets(const c2d_w_static *st, const c2d_world_box *r)
+{
+    const double lx = st->ax < st->bx ? st->ax : st->bx, hx = st->ax < st->bx ? st->bx : st->ax;
+    const double ly = st->ay < st->by ? st->ay : st->by, hy = st->ay < st->by ? st->by : st->ay;
+    return lx - st->radius <= r->hi.x && hx + st->radius >= r->lo.x && ly - st->radius <= r->hi.y &&
+           hy + st->radius >= r->lo.y;
+}
+
+/* Disk p against the statics whose boxes meet its reach (and not `seen`,
+ * tried already; NULL: none), from its reference state (time p->t, so the
  * times depend on that state alone; an approach already due is clamped to
  * now): a circle (radius sum r + R), a segment's two ends (points) and its
  * interior (the normal coordinate reaching +-r, on the side the centre is
  * now, with the foot within the segment).  With acceleration the horizon is
- * the disk's timer, where its motion may change. */
-static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const c2d_body *a, c2d_w_best *best)
+ * the disk's timer, where its motion may change.  A static beyond the reach
+ * cannot be met before the disk's next crossing (c2d_w_reach_of), where it
+ * is tried, from the same reference state, if it then comes into reach. */
+static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const c2d_body *a,
+                                  const c2d_world_box *reach, const c2d_world_box *seen, c2d_w_best *best)
 {
     const double now = w->now;
     size_t k;
@@ -212,6 +229,7 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
         const c2d_w_static *st = &w->stat[k];
         const uint32_t partner = (uint32_t)(4 + k);
         int end;
+        if (!c2d_w_static_meets(st, reach) || (seen != NULL && c2d_w_static_meets(st, seen))) continue;
         if (st->shape == C2D_W_SENSOR) {
             c2d_w_predict_sensor(w, p, a, k, best);
             continue;
@@ -226,7 +244,7 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
             else {
                 c2d_vec2 zero;
                 zero.x = zero.y = 0;
-                r = C2D_W_TOI_ACCEL(&ref, acc, &b, zero, p->radius + st->radius, p->timer - p->t, &toi);
+                r = C2D_W_TOI_ACCEL(&ref, &acc, &b, &zero, p->radius + st->radius, p->timer - p->t, &toi);
             }
             if (r != C2D_OK) continue;
             when = p->t + toi;
@@ -308,35 +326,34 @@ static int c2d_w_curved(const c2d_world *w, const c2d_w_disk *p, const c2d_w_dis
 /* q's image shift in pair (p, q), p the lower index, as its prediction
  * chose it: a straight pair from its relative position as
  * c2d_w_try_straight computes it, a curved one from c2d_w_pair_start's. */
-static c2d_vec2 c2d_w_pair_shift(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q)
+static void c2d_w_pair_shift(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, c2d_vec2 *shift)
 {
-    c2d_vec2 shift;
-    shift.x = shift.y = 0;
-    if (!w->periodic) return shift;
+    shift->x = shift->y = 0;
+    if (!w->periodic) return;
     if (c2d_w_curved(w, p, q)) {
         c2d_body a, b;
-        (void)c2d_w_pair_start(w, p, q, &a, &b, &shift); /* only the shift is wanted */
+        (void)c2d_w_pair_start(w, p, q, &a, &b, shift); /* only the shift is wanted */
     } else {
         const double t0 = p->t > q->t ? p->t : q->t, sp = t0 - p->t, sq = t0 - q->t;
-        shift.x = c2d_w_image_shift((q->x + q->vx * sq) - (p->x + p->vx * sp), w->width);
-        shift.y = c2d_w_image_shift((q->y + q->vy * sq) - (p->y + p->vy * sp), w->height);
+        shift->x = c2d_w_image_shift((q->x + q->vx * sq) - (p->x + p->vx * sp), w->width);
+        shift->y = c2d_w_image_shift((q->y + q->vy * sq) - (p->y + p->vy * sp), w->height);
     }
-    return shift;
 }
 
 /* The pair at time t as its impact sees it (q shifted to its image). */
-static void c2d_w_pair_at(const c2d_w_disk *p, const c2d_w_disk *q, double t, c2d_vec2 shift, c2d_body *a, c2d_body *b)
+static void c2d_w_pair_at(const c2d_w_disk *p, const c2d_w_disk *q, double t, const c2d_vec2 *shift, c2d_body *a,
+                          c2d_body *b)
 {
     c2d_w_body_at(p, t, a);
     c2d_w_body_at(q, t, b);
-    b->pos.x += shift.x, b->pos.y += shift.y;
+    b->pos.x += shift->x, b->pos.y += shift->y;
 }
 
 /* A pair due at once (time <= now) that c2d_collide would refuse at now
  * (touching with no approach speed, pushed together by accelerations, or
  * a graze rounded into the past): no event, or the world would predict it
  * again and again. */
-static int c2d_w_pair_refused_now(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, c2d_vec2 shift)
+static int c2d_w_pair_refused_now(const c2d_world *w, const c2d_w_disk *p, const c2d_w_disk *q, const c2d_vec2 *shift)
 {
     c2d_body a, b;
     c2d_w_pair_at(p, q, w->now, shift, &a, &b);
@@ -411,8 +428,9 @@ C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, ui
     when = t0 + toi;
     if (when <= self->now) {
         const uint32_t lo = j < self->i ? j : self->i, hi = j < self->i ? self->i : j;
-        if (c2d_w_pair_refused_now(w, &w->disk[lo], &w->disk[hi], c2d_w_pair_shift(w, &w->disk[lo], &w->disk[hi])))
-            return;
+        c2d_vec2 shift;
+        c2d_w_pair_shift(w, &w->disk[lo], &w->disk[hi], &shift);
+        if (c2d_w_pair_refused_now(w, &w->disk[lo], &w->disk[hi], &shift)) return;
         when = self->now;
     }
     c2d_w_consider(best, when, C2D_W_PAIR, j, q->count);
@@ -447,13 +465,13 @@ static void c2d_w_try_pair(const c2d_world *w, const c2d_w_self *self, uint32_t 
     }
     t0 = c2d_w_pair_start(w, p, q, &a, &b, &shift);
     pa.x = p->ax, pa.y = p->ay, qa.x = q->ax, qa.y = q->ay;
-    if (C2D_W_TOI_ACCEL(&a, pa, &b, qa, p->radius + q->radius, (p->timer < q->timer ? p->timer : q->timer) - t0, &toi) !=
+    if (C2D_W_TOI_ACCEL(&a, &pa, &b, &qa, p->radius + q->radius, (p->timer < q->timer ? p->timer : q->timer) - t0, &toi) !=
         C2D_OK)
         return;
     when = t0 + toi;
     if (when <= w->now) {
         /* Refused now, unless pressed together (the pair rest rule). */
-        c2d_w_pair_at(p, q, w->now, shift, &a, &b);
+        c2d_w_pair_at(p, q, w->now, &shift, &a, &b);
         if (c2d_w_refused_now(&a, &b) && !c2d_w_pressed(w, p, q, &a, &b)) return;
         when = w->now;
     }
@@ -635,7 +653,8 @@ static void c2d_w_query_images(const c2d_world *w, const c2d_world_box *box, c2d
     }
     for (l = 0; l < ny; l++)
         for (k = 0; k < nx; k++) {
-            c2d_world_box b = *box;
+            c2d_world_box b;
+            c2d_w_box_copy(&b, box);
             b.lo.x += sx[k], b.hi.x += sx[k], b.lo.y += sy[l], b.hi.y += sy[l];
             w->bp.query(w->bp.user, &b, report, ctx);
         }
@@ -660,6 +679,47 @@ static void c2d_w_predict_caller(const c2d_world *w, uint32_t i, const c2d_body 
     ctx.w = w, ctx.best = best;
     c2d_w_self_of(w, i, &ctx.self);
     c2d_w_query_images(w, &box, c2d_w_report, &ctx);
+}
+
+/* Where disk i (at a, now) can reach before its next crossing, as a box
+ * in its own frame: its centre stays in `cell` (up to rounding) and its
+ * body within a radius of it, so the 3 x 3 cells around, at least a
+ * diameter beyond on every side, hold it with room to spare; with a
+ * caller's broadphase the centre stays within margin of its box's centre,
+ * and the shell grown by a radius more holds it. */
+static void c2d_w_reach_of(const c2d_world *w, uint32_t i, const c2d_body *a, size_t cell, c2d_world_box *reach)
+{
+    const c2d_w_disk *p = &w->disk[i];
+    double x0, x1, y0, y1, gx, gy;
+    if (w->caller) {
+        const double h = (p->radius + c2d_w_margin(w, p)) * C2D_W_BOX_SLACK + p->radius;
+        x0 = x1 = w->box[2 * (size_t)i], y0 = y1 = w->box[2 * (size_t)i + 1];
+        gx = gy = h;
+    } else {
+        const size_t cx = cell % w->mx, cy = cell / w->mx;
+        x0 = (double)cx * w->cw, x1 = cx + 1 == w->mx ? w->width : (double)(cx + 1) * w->cw;
+        y0 = (double)cy * w->ch, y1 = cy + 1 == w->my ? w->height : (double)(cy + 1) * w->ch;
+        gx = w->cw, gy = w->ch;
+    }
+    if (w->periodic) {
+        const double fx = c2d_w_frame_shift(a->pos.x, x0, x1, w->width);
+        const double fy = c2d_w_frame_shift(a->pos.y, y0, y1, w->height);
+        x0 += fx, x1 += fx, y0 += fy, y1 += fy;
+    }
+    reach->lo.x = x0 - gx, reach->hi.x = x1 + gx, reach->lo.y = y0 - gy, reach->hi.y = y1 + gy;
+}
+
+/* The cell disk p has just left by `side` (it is now in p->cell). */
+static size_t c2d_w_cell_left(const c2d_world *w, const c2d_w_disk *p, uint32_t side)
+{
+    size_t cx = p->cell % w->mx, cy = p->cell / w->mx;
+    switch (side) {
+    case 0: cx = cx + 1 == w->mx ? 0 : cx + 1; break;
+    case 1: cx = (cx == 0 ? w->mx : cx) - 1; break;
+    case 2: cy = cy + 1 == w->my ? 0 : cy + 1; break;
+    default: cy = (cy == 0 ? w->my : cy) - 1; break;
+    }
+    return cy * w->mx + cx;
 }
 
 /* Disk i's event: the earlier of its best event other than a crossing
@@ -705,7 +765,11 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     if (!w->periodic) c2d_w_predict_walls(w, p, &best);
     else c2d_w_predict_rebase(w, p, &best);
     if (p->timer < C2D_W_INF) c2d_w_consider(&best, p->timer, C2D_W_TIMER, 0, 0);
-    if (w->nstatic > 0) c2d_w_predict_statics(w, p, &a, &best);
+    if (w->nstatic > 0) {
+        c2d_world_box reach;
+        c2d_w_reach_of(w, i, &a, p->cell, &reach);
+        c2d_w_predict_statics(w, p, &a, &reach, NULL, &best);
+    }
     if (w->caller) c2d_w_predict_caller(w, i, &a, &best);
     else c2d_w_predict_cells(w, i, &a, &best, &cross, C2D_W_NONE);
     c2d_w_settle(w, i, &best, &cross);
@@ -727,6 +791,12 @@ static void c2d_w_predict_crossed(c2d_world *w, uint32_t i, uint32_t side)
     best.when = w->node[i].mwhen, best.kind = p->kind, best.partner = p->partner, best.pcount = p->pcount;
     c2d_w_best_none(&cross);
     c2d_w_body_at(p, w->now, &a);
+    if (w->nstatic > 0) { /* the statics that have come into reach */
+        c2d_world_box reach, seen;
+        c2d_w_reach_of(w, i, &a, p->cell, &reach);
+        c2d_w_reach_of(w, i, &a, c2d_w_cell_left(w, p, side), &seen);
+        c2d_w_predict_statics(w, p, &a, &reach, &seen, &best);
+    }
     c2d_w_predict_cells(w, i, &a, &best, &cross, side);
     c2d_w_settle(w, i, &best, &cross);
 }

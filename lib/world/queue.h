@@ -12,15 +12,17 @@ static int c2d_w_before(const c2d_w_entry *a, const c2d_w_entry *b)
 
 /* The window: a binary heap of the events of the current day (and any
  * earlier), disk i at w->disk[i].slot. */
-static void c2d_w_win_place(c2d_world *w, size_t s, c2d_w_entry e)
+static void c2d_w_win_place(c2d_world *w, size_t s, const c2d_w_entry *placed)
 {
     c2d_w_entry *h = w->win;
     c2d_w_node *n = w->node;
     const size_t count = w->nwin;
+    c2d_w_entry e;
+    c2d_w_entry_copy(&e, placed);
     while (s > 0) {
         size_t up = (s - 1) / 2;
         if (!c2d_w_before(&e, &h[up])) break;
-        h[s] = h[up];
+        c2d_w_entry_copy(&h[s], &h[up]);
         n[h[s].disk].slot = (uint32_t)s;
         s = up;
     }
@@ -29,11 +31,11 @@ static void c2d_w_win_place(c2d_world *w, size_t s, c2d_w_entry e)
         if (l >= count) break;
         if (l + 1 < count && c2d_w_before(&h[l + 1], &h[l])) best = l + 1;
         if (!c2d_w_before(&h[best], &e)) break;
-        h[s] = h[best];
+        c2d_w_entry_copy(&h[s], &h[best]);
         n[h[s].disk].slot = (uint32_t)s;
         s = best;
     }
-    h[s] = e;
+    c2d_w_entry_copy(&h[s], &e);
     n[e.disk].slot = (uint32_t)s;
 }
 
@@ -43,14 +45,14 @@ static void c2d_w_win_push(c2d_world *w, uint32_t i)
     e.when = w->node[i].when, e.tie = w->node[i].tie, e.disk = i, e.spare = 0;
     w->node[i].where = C2D_W_Q_WIN;
     w->nwin++;
-    c2d_w_win_place(w, w->nwin - 1, e);
+    c2d_w_win_place(w, w->nwin - 1, &e);
 }
 
 static void c2d_w_win_remove(c2d_world *w, uint32_t i)
 {
     const size_t s = w->node[i].slot;
     w->nwin--;
-    if (s < w->nwin) c2d_w_win_place(w, s, w->win[w->nwin]);
+    if (s < w->nwin) c2d_w_win_place(w, s, &w->win[w->nwin]);
 }
 
 static void c2d_w_link(c2d_world *w, uint32_t *head, uint32_t i, uint32_t where)

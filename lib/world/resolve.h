@@ -55,14 +55,13 @@ static void c2d_w_impact_clock(c2d_w_disk *p, double now)
 
 /* ------------------------------------------------------------ resolution */
 
-/* Disk i (body b) as a rough disk: its spin, radius and inertia k m r^2. */
-static c2d_disk c2d_w_rough_disk(const c2d_world *w, const c2d_body *b, size_t i)
+/* Disk i (body b) as a rough disk d: its spin, radius and inertia k m r^2. */
+static void c2d_w_rough_disk(const c2d_world *w, const c2d_body *b, size_t i, c2d_disk *d)
 {
-    c2d_disk d;
     const double r = w->disk[i].radius;
-    d.pos = b->pos, d.vel = b->vel, d.spin = w->spin[i], d.mass = b->mass, d.radius = r;
-    d.inertia = w->inertia_factor * b->mass * r * r;
-    return d;
+    c2d_w_vec_copy(&d->pos, &b->pos), c2d_w_vec_copy(&d->vel, &b->vel);
+    d->spin = w->spin[i], d->mass = b->mass, d->radius = r;
+    d->inertia = w->inertia_factor * b->mass * r * r;
 }
 
 /* The rough model's resolution of contact c (spins written on C2D_OK):
@@ -70,24 +69,25 @@ static c2d_disk c2d_w_rough_disk(const c2d_world *w, const c2d_body *b, size_t i
  * immovable point for walls and statics. */
 static c2d_status c2d_w_rough(c2d_world *w, const c2d_world_contact *c, c2d_body *a, c2d_body *b)
 {
-    c2d_disk da = c2d_w_rough_disk(w, a, c->a), db;
+    c2d_disk da, db;
     c2d_surface s;
     c2d_status r;
+    c2d_w_rough_disk(w, a, c->a, &da);
     if (c->kind == C2D_WORLD_IMPACT) {
-        db = c2d_w_rough_disk(w, b, c->b);
-        s = w->surface;
+        c2d_w_rough_disk(w, b, c->b, &db);
+        c2d_w_surface_copy(&s, &w->surface);
         s.restitution = c->restitution;
-        r = c2d_collide_rough(&da, &db, s);
+        r = C2D_W_COLLIDE_ROUGH(&da, &db, NULL, &s);
     } else {
-        db.pos = b->pos, db.vel.x = db.vel.y = 0, db.spin = 0;
+        c2d_w_vec_copy(&db.pos, &b->pos), db.vel.x = db.vel.y = 0, db.spin = 0;
         db.mass = db.inertia = C2D_W_INF, db.radius = 0;
-        s = w->wall_surface;
+        c2d_w_surface_copy(&s, &w->wall_surface);
         s.restitution = c->restitution;
-        r = c2d_collide_rough_normal(&da, &db, c->normal, s);
+        r = C2D_W_COLLIDE_ROUGH(&da, &db, &c->normal, &s);
     }
     if (r != C2D_OK) return r;
-    a->vel = da.vel, w->spin[c->a] = da.spin;
-    if (c->kind == C2D_WORLD_IMPACT) b->vel = db.vel, w->spin[c->b] = db.spin;
+    c2d_w_vec_copy(&a->vel, &da.vel), w->spin[c->a] = da.spin;
+    if (c->kind == C2D_WORLD_IMPACT) c2d_w_vec_copy(&b->vel, &db.vel), w->spin[c->b] = db.spin;
     return C2D_OK;
 }
 
@@ -98,10 +98,11 @@ static c2d_status c2d_w_rough(c2d_world *w, const c2d_world_contact *c, c2d_body
 static int c2d_w_caller_resolves(c2d_world *w, c2d_world_resolver fn, const c2d_world_contact *c, c2d_body *a,
                                  c2d_body *b)
 {
-    c2d_body ta = *a, tb = *b;
+    c2d_body ta, tb;
     int ok;
     double bx = 0, by = 0;
     if (fn == NULL) return 0;
+    c2d_w_body_copy(&ta, a), c2d_w_body_copy(&tb, b);
     w->busy = 2;
     ok = fn(w->user, c, &ta, &tb) == C2D_OK;
     w->busy = 0;
@@ -109,8 +110,8 @@ static int c2d_w_caller_resolves(c2d_world *w, c2d_world_resolver fn, const c2d_
     if (!ok || !c2d_w_finite(ta.vel.x) || !c2d_w_finite(ta.vel.y) || !c2d_w_finite(bx) || !c2d_w_finite(by))
         return 0;
     if ((bx - ta.vel.x) * c->normal.x + (by - ta.vel.y) * c->normal.y < 0) return 0;
-    a->vel = ta.vel;
-    if (c->kind == C2D_WORLD_IMPACT) b->vel = tb.vel;
+    c2d_w_vec_copy(&a->vel, &ta.vel);
+    if (c->kind == C2D_WORLD_IMPACT) c2d_w_vec_copy(&b->vel, &tb.vel);
     return 1;
 }
 
@@ -122,7 +123,7 @@ static c2d_status c2d_w_resolve(c2d_world *w, c2d_world_resolver fn, const c2d_w
     if (c2d_w_caller_resolves(w, fn, c, a, b)) return C2D_OK;
     if (w->spin != NULL && c2d_w_rough(w, c, a, b) == C2D_OK) return C2D_OK;
     if (c->kind == C2D_WORLD_IMPACT) return C2D_W_COLLIDE(a, b, c->restitution);
-    return C2D_W_COLLIDE_NORMAL(a, b, c->normal, c->restitution);
+    return C2D_W_COLLIDE_NORMAL(a, b, &c->normal, c->restitution);
 }
 
 /* After an event: predict disk i again, unless on_event removed it. */

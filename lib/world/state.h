@@ -2,12 +2,15 @@
 /* world/state.h - its constants and the state of a world: disks, statics, queue entries.
  * Part of lib/world.c, which includes the parts once, in order. */
 
-/* The impact and the time of impact are the library's own public calls
- * (double.c): one copy of their code in any build, the same bits. */
+/* The impact and the time of impact are the library's own calls
+ * (double.c): one copy of their code in any build, the same bits.  Those
+ * whose public form takes a vector by value are called by address
+ * (internal.h: by value is a memcpy call on small cores). */
 #define C2D_W_COLLIDE c2d_collide
 #define C2D_W_TOI c2d_time_of_impact
-#define C2D_W_TOI_ACCEL c2d_time_of_impact_accel
-#define C2D_W_COLLIDE_NORMAL c2d_collide_normal
+#define C2D_W_TOI_ACCEL c2d_time_of_impact_accel_by_ref
+#define C2D_W_COLLIDE_NORMAL c2d_collide_normal_by_ref
+#define C2D_W_COLLIDE_ROUGH c2d_collide_rough_by_ref
 
 #ifdef __GNUC__
 #define C2D_W_SQRT __builtin_sqrt
@@ -148,3 +151,41 @@ struct c2d_world {
     double hmax;     /* the largest half-size of a box given to the caller's broadphase */
     c2d_world_stats stats;
 };
+
+/* ------------------------------------------------------------ copies
+ * Member by member: gcc -Os turns a struct assignment of 16 bytes or more
+ * into a memcpy call on Cortex-M0 and RV32 (so does a struct passed or
+ * returned by value), and the library calls no C library. */
+
+static void c2d_w_vec_copy(c2d_vec2 *to, const c2d_vec2 *from)
+{
+    to->x = from->x, to->y = from->y;
+}
+
+static void c2d_w_body_copy(c2d_body *to, const c2d_body *from)
+{
+    c2d_w_vec_copy(&to->pos, &from->pos), c2d_w_vec_copy(&to->vel, &from->vel), to->mass = from->mass;
+}
+
+static void c2d_w_surface_copy(c2d_surface *to, const c2d_surface *from)
+{
+    to->restitution = from->restitution, to->friction = from->friction;
+    to->tangential_restitution = from->tangential_restitution;
+}
+
+static void c2d_w_entry_copy(c2d_w_entry *to, const c2d_w_entry *from)
+{
+    to->when = from->when, to->tie = from->tie, to->disk = from->disk, to->spare = from->spare;
+}
+
+static void c2d_w_static_copy(c2d_w_static *to, const c2d_w_static *from)
+{
+    to->ax = from->ax, to->ay = from->ay, to->bx = from->bx, to->by = from->by;
+    to->nx = from->nx, to->ny = from->ny, to->len = from->len, to->radius = from->radius;
+    to->restitution = from->restitution, to->shape = from->shape, to->spare = from->spare;
+}
+
+static void c2d_w_box_copy(c2d_world_box *to, const c2d_world_box *from)
+{
+    c2d_w_vec_copy(&to->lo, &from->lo), c2d_w_vec_copy(&to->hi, &from->hi);
+}

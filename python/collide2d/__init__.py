@@ -9,8 +9,9 @@ Units: any consistent set (SI: m, m/s, kg, s, rad/s, kg m^2).  Masses > 0;
 math.inf is immovable.  Restitution in [0, 1].  A normal points from a
 towards b and may have any finite non-zero length.
 
-Scalar calls take the C structs (Body, Disk, Vec2, Surface for double; the
-same names ending in f for float), write the new velocities (and spins) into
+Scalar calls take the C structs (Body, Disk, Vec2, Surface, and for pool
+balls as spheres Ball, BallSurface, Cushion, for double; the same names
+ending in f for float), write the new velocities (and spins) into
 the bodies in place, and return a Status.  Any status but Status.OK leaves
 both bodies untouched, bit for bit.
 
@@ -63,7 +64,8 @@ __all__ = [
     "Status", "version", "status_string", "LIB_PATH",
     "Vec2", "Body", "Disk", "Surface", "Vec2f", "Bodyf", "Diskf", "Surfacef",
     "collide", "collide_normal", "time_of_impact", "time_of_impact_accel", "collide_rough",
-    "collide_rough_normal",
+    "collide_rough_normal", "Ball", "BallSurface", "Cushion", "Ballf", "BallSurfacef", "Cushionf",
+    "collide_balls", "collide_cushion", "collide_ballsf", "collide_cushionf",
     "collidef", "collide_normalf", "time_of_impactf", "time_of_impact_accelf", "collide_roughf",
     "collide_rough_normalf",
     "collide_batch", "collide_batchf",
@@ -74,6 +76,8 @@ LIB_PATH = _native.LIB_PATH
 
 Vec2, Body, Disk, Surface = (_native.DOUBLE[k] for k in ("Vec2", "Body", "Disk", "Surface"))
 Vec2f, Bodyf, Diskf, Surfacef = (_native.FLOAT[k] for k in ("Vec2", "Body", "Disk", "Surface"))
+Ball, BallSurface, Cushion = (_native.DOUBLE[k] for k in ("Ball", "BallSurface", "Cushion"))
+Ballf, BallSurfacef, Cushionf = (_native.FLOAT[k] for k in ("Ball", "BallSurface", "Cushion"))
 
 
 class Status(enum.IntEnum):
@@ -212,6 +216,30 @@ def collide_rough_normal(a, b, normal, surface):
     return _call("c2d_collide_rough_normal", a, b, normal, surface)
 
 
+def collide_balls(a, b, surface):
+    """Impact of two pool balls as spheres (Ball: pos, vel in the table's
+    plane, spin = (wx, wy, wz) in rad per time unit about +x, +y, +z (z up),
+    mass, radius, inertia about the centre, 2/5 m r^2 for a solid ball),
+    touching at their equators.  surface: BallSurface or (restitution e in
+    [0, 1], friction, friction_boost, friction_decay): friction
+    mu(v) = friction + friction_boost exp(-friction_decay v) on the 3-D slip
+    at the contact (Alciatore's fit: 9.951e-3, 0.108, 1.088; boost 0 =
+    constant).  Writes both velocities and spins on Status.OK.  With
+    wx = wy = 0 and constant mu it is collide_rough with beta = 0; friction 0
+    gives collide's velocities bit for bit.  Accuracy: each output within 24
+    ulp of the pair's scale (C header, c2d_collide_balls)."""
+    return _call("c2d_collide_balls", a, b, surface)
+
+
+def collide_cushion(ball, cushion):
+    """A ball's impact on a still rail (Cushion: normal from the ball towards
+    the rail, height of the contact above the cloth in [radius, 2 radius],
+    0.635 of the diameter on a pool table, restitution, friction).  Han
+    2005's impulse with Coulomb friction along the slip; writes the ball's
+    velocity and spin on Status.OK.  Within 16 ulp of the ball's scale."""
+    return _call("c2d_collide_cushion", ball, cushion)
+
+
 # ------------------------------------------------------------ float
 
 def collidef(a, b, restitution):
@@ -243,6 +271,16 @@ def collide_roughf(a, b, surface):
 def collide_rough_normalf(a, b, normal, surface):
     """Float twin of collide_rough_normal (Diskf, Vec2f, Surfacef)."""
     return _call("c2d_collide_rough_normalf", a, b, normal, surface)
+
+
+def collide_ballsf(a, b, surface):
+    """Float twin of collide_balls (Ballf, BallSurfacef)."""
+    return _call("c2d_collide_ballsf", a, b, surface)
+
+
+def collide_cushionf(ball, cushion):
+    """Float twin of collide_cushion (Ballf, Cushionf)."""
+    return _call("c2d_collide_cushionf", ball, cushion)
 
 
 from .batch import collide_batch, collide_batchf  # noqa: E402  (needs Status)

@@ -121,6 +121,23 @@ def _components(cls, value, where):
     return list(value)
 
 
+def _array_value(ctype, value, where):
+    """value as the ctypes array `ctype` (a ball's spin: three reals), from
+    any sequence or 1-D numpy array of exactly that many numbers."""
+    n, real_type = ctype._length_, ctype._type_
+    np = sys.modules.get("numpy")
+    if np is not None and isinstance(value, np.ndarray):
+        if value.dtype.kind not in "fiu":
+            raise TypeError(f"{where} must be an array of real numbers, not one of dtype {value.dtype.name}")
+        if value.shape != (n,):
+            raise ValueError(f"{where} must have shape ({n},), not {value.shape}")
+    elif isinstance(value, _NOT_SEQUENCES) or not isinstance(value, collections.abc.Sequence):
+        raise TypeError(f"{where} must be a sequence of {n} numbers, not {_kind(value)}")
+    if len(value) != n:
+        raise ValueError(f"{where} must have {n} components, not {len(value)}")
+    return ctype(*(real(x, real_type, f"{where}[{i}]") for i, x in enumerate(value)))
+
+
 def struct_value(cls, value, where):
     """value as an instance of the _Struct `cls` (a new one unless it is one)."""
     if type(value) is cls:
@@ -164,6 +181,8 @@ class _Struct(ctypes.Structure):
         ctype = dict(self._fields_)[name]
         if isinstance(ctype, type) and issubclass(ctype, _Struct):
             value = struct_value(ctype, value, where)
+        elif isinstance(ctype, type) and issubclass(ctype, ctypes.Array):
+            value = _array_value(ctype, value, where)
         else:
             value = real(value, ctype, where)
         super().__setattr__(name, value)
@@ -175,11 +194,13 @@ class _Struct(ctypes.Structure):
         self._set(name, value, f"{type(self).__name__}.{name}")
 
     def _values(self):
-        return tuple(getattr(self, name) for name, _ in self._fields_)
+        """Every field's value; an array field (a ball's spin) as a tuple."""
+        values = (getattr(self, name) for name, _ in self._fields_)
+        return tuple(tuple(x) if isinstance(x, ctypes.Array) else x for x in values)
 
     def __repr__(self):
         return f"{type(self).__name__}(" + ", ".join(
-            f"{name}={getattr(self, name)!r}" for name, _ in self._fields_) + ")"
+            f"{name}={value!r}" for (name, _), value in zip(self._fields_, self._values())) + ")"
 
     def __eq__(self, other):
         return type(self) is type(other) and self._values() == other._values()
@@ -206,6 +227,12 @@ def _types(real, suffix):
         ("pos", vec2), ("vel", vec2), ("spin", real), ("mass", real), ("radius", real), ("inertia", real)]})
     ns["Surface"] = type("Surface", (_Struct,), {"_fields_": [
         ("restitution", real), ("friction", real), ("tangential_restitution", real)]})
+    ns["Ball"] = type("Ball", (_Struct,), {"_fields_": [
+        ("pos", vec2), ("vel", vec2), ("spin", real * 3), ("mass", real), ("radius", real), ("inertia", real)]})
+    ns["BallSurface"] = type("BallSurface", (_Struct,), {"_fields_": [
+        ("restitution", real), ("friction", real), ("friction_boost", real), ("friction_decay", real)]})
+    ns["Cushion"] = type("Cushion", (_Struct,), {"_fields_": [
+        ("normal", vec2), ("height", real), ("restitution", real), ("friction", real)]})
     ptr = ctypes.POINTER(real)
     ns["Pairs"] = type("Pairs", (ctypes.Structure,), {"_fields_": [
         (name, ptr) for name in ("pos_ax", "pos_ay", "pos_bx", "pos_by",
@@ -237,6 +264,8 @@ def _prototypes(t, real, sfx):
                                            Out(real)),
         "c2d_collide_rough" + sfx: (p(t["Disk"]), p(t["Disk"]), t["Surface"]),
         "c2d_collide_rough_normal" + sfx: (p(t["Disk"]), p(t["Disk"]), t["Vec2"], t["Surface"]),
+        "c2d_collide_balls" + sfx: (p(t["Ball"]), p(t["Ball"]), t["BallSurface"]),
+        "c2d_collide_cushion" + sfx: (p(t["Ball"]), t["Cushion"]),
         "c2d_collide_batch" + sfx: (p(t["Pairs"]), ctypes.c_size_t, real, p(ctypes.c_int)),
     }
 

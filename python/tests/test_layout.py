@@ -26,6 +26,8 @@ MIRRORED = {  # C struct -> its ctypes class
     "c2d_surfacef": collide2d.Surfacef, "c2d_pairsf": _native.FLOAT["Pairs"],
     "c2d_world_event": _native.WorldEvent, "c2d_world_desc": _native.WorldDesc,
     "c2d_world_stats": _native.WorldStats, "c2d_world_contact": _native.WorldContact,
+    "c2d_ball": collide2d.Ball, "c2d_ball_surface": collide2d.BallSurface, "c2d_cushion": collide2d.Cushion,
+    "c2d_ballf": collide2d.Ballf, "c2d_ball_surfacef": collide2d.BallSurfacef, "c2d_cushionf": collide2d.Cushionf,
 }
 # The Q16.16 API has no binding (no c2d_*x function is wrapped): its structs
 # are laid out by the program but have no ctypes twin to compare.
@@ -33,8 +35,6 @@ NOT_MIRRORED = {"c2d_vec2x", "c2d_bodyx"}
 # Nor has a caller's broadphase (collide2d.World uses the built-in one; its
 # WorldDesc.broadphase stays NULL).
 NOT_MIRRORED |= {"c2d_world_box", "c2d_world_broadphase"}
-# The sphere contacts have no binding yet (issue 21).
-NOT_MIRRORED |= {"c2d_ball", "c2d_ball_surface", "c2d_cushion", "c2d_ballf", "c2d_ball_surfacef", "c2d_cushionf"}
 TYPES = {  # C type -> the ctypes type the binding passes it as
     "c2d_status": ctypes.c_int,  # the scalar calls' restype, the batch's status array (numpy.intc)
     "int": ctypes.c_int, "size_t": ctypes.c_size_t, "long": ctypes.c_long,  # c2d_version's restype
@@ -106,6 +106,9 @@ def test_every_type_is_checked_or_listed(layout):
 
 def test_nested_fields_are_the_mirrored_structs():
     for cname, cls in MIRRORED.items():
+        real = ctypes.c_float if cname.endswith("f") else ctypes.c_double
         for name, ctype in cls._fields_:
             if isinstance(ctype, type) and issubclass(ctype, ctypes.Structure):
                 assert ctype is MIRRORED["c2d_vec2" + ("f" if cname.endswith("f") else "")], (cname, name)
+            if isinstance(ctype, type) and issubclass(ctype, ctypes.Array):  # a ball's spin[3]
+                assert (ctype._type_, ctype._length_) == (real, 3), (cname, name)

@@ -25,6 +25,7 @@ GOOD_FIELDS = {  # valid values of every field, in order
     "Body": ((0.0, 0.0), (1.0, 0.0), 2.0),
     "Disk": ((0.0, 0.0), (1.0, 0.0), 0.5, 2.0, 0.5, 0.25),
     "Surface": (0.75, 0.25, 0.5),  # exact in float: the twins compare bit for bit
+    "Ball": ((0.0, 0.0), (1.0, 0.0), (0.5, -1.0, 2.0), 2.0, 0.5, 0.25),
 }
 
 
@@ -269,6 +270,7 @@ def test_bad_values_raise_value_or_type_error(value, exc):
 # ------------------------------------------------------------ functions
 
 BODY, VEC2, REAL, DISK, SURFACE = "body", "vec2", "real", "disk", "surface"
+BALL, BALL_SURFACE, CUSHION = "ball", "ball surface", "cushion"
 
 
 def function_cases(v):
@@ -276,6 +278,7 @@ def function_cases(v):
     a, b = (0.0, 0.0), (1.0, 0.0)
     body = lambda p, vel: ("body", (p, vel, 1.0))  # noqa: E731
     disk = lambda p, vel: ("disk", (p, vel, 0.0, 1.0, 0.5, 0.125))  # noqa: E731
+    ball = lambda p, vel: ("ball", (p, vel, (0.0, 2.0, 1.0), 1.0, 0.5, 0.125))  # noqa: E731
     return [
         ("collide", [body(a, (1, 0)), body(b, (0, 0)), (REAL, 1.0)], Status.OK),
         ("collide_normal", [body(a, (1, 0)), body(b, (0, 0)), (VEC2, (1.0, 0.0)), (REAL, 1.0)], Status.OK),
@@ -285,11 +288,14 @@ def function_cases(v):
         ("collide_rough", [disk(a, (1, 0)), disk(b, (0, 0)), (SURFACE, (1.0, 0.4, 0.5))], Status.OK),
         ("collide_rough_normal", [disk(a, (1, 0)), disk(b, (0, 0)), (VEC2, (1.0, 0.0)), (SURFACE, (1.0, 0.4, 0.5))],
          Status.OK),
+        ("collide_balls", [ball(a, (1, 0)), ball(b, (0, 0)), (BALL_SURFACE, (1.0, 0.25, 0.125, 1.0))], Status.OK),
+        ("collide_cushion", [ball(a, (1, 0)), (CUSHION, ((1.0, 0.0), 0.75, 0.75, 0.25))], Status.OK),
     ]
 
 
 def build(v, kind, value):
-    return v.Body(*value) if kind == BODY else v.Disk(*value) if kind == DISK else value
+    cls = {BODY: v.Body, DISK: v.Disk, BALL: v.Ball}.get(kind)
+    return cls(*value) if cls else value
 
 
 def bad_arguments(v, kind):
@@ -299,7 +305,13 @@ def bad_arguments(v, kind):
         return bad_sequences(v, 2, "Vec2")
     if kind == SURFACE:
         return bad_sequences(v, 3, "Surface")
-    own, twin = (v.Body, v.other.Body) if kind == BODY else (v.Disk, v.other.Disk)
+    if kind in (BALL_SURFACE, CUSHION):  # four fields each; a cushion's first is its normal
+        head = (0.5,) if kind == BALL_SURFACE else ((1.0, 0.0),)
+        return [("one component short", head + (0.5,) * 2, ValueError), ("None", None, TypeError),
+                ("a dict", {}, TypeError), ("a Surface", v.Surface(), TypeError),
+                ("a text component", head + ("1",) + (0.5,) * 2, TypeError),
+                ("a huge component", head + (2 ** 1024,) + (0.5,) * 2, ValueError)]
+    own, twin = {BODY: (v.Body, v.other.Body), DISK: (v.Disk, v.other.Disk), BALL: (v.Ball, v.other.Ball)}[kind]
     other_kind = v.Disk if kind == BODY else v.Body
     return [("None", None, TypeError), ("its fields as a tuple", GOOD_FIELDS[own.__name__.rstrip("f")], TypeError),
             ("the other precision", twin(), TypeError), ("the other struct", other_kind(), TypeError),
@@ -347,7 +359,7 @@ def test_a_bad_argument_is_refused_and_nothing_is_written(v, name, i, value, exc
 
 def test_every_argument_has_bad_cases():
     seen = {(repr(p.values[0]), p.values[1], p.values[2]) for p in ARGUMENT_BAD}
-    assert len(seen) == 2 * (3 + 4 + 3 + 6 + 3 + 4)
+    assert len(seen) == 2 * (3 + 4 + 3 + 6 + 3 + 4 + 3 + 2)
 
 
 @pytest.mark.parametrize("v", VARIANTS, ids=repr)

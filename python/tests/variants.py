@@ -11,8 +11,9 @@ import collide2d as c
 class Variant:
     def __init__(self, sfx, real):
         self.sfx, self.real = sfx, real
-        for name in ("Vec2", "Body", "Disk", "Surface", "collide", "collide_normal", "time_of_impact",
-                     "time_of_impact_accel", "collide_rough", "collide_rough_normal"):
+        for name in ("Vec2", "Body", "Disk", "Surface", "Ball", "BallSurface", "Cushion", "collide",
+                     "collide_normal", "time_of_impact", "time_of_impact_accel", "collide_rough",
+                     "collide_rough_normal", "collide_balls", "collide_cushion"):
             setattr(self, name, getattr(c, name + sfx))
         self.other = None
 

@@ -107,5 +107,15 @@ if [ "$(uname -m)" = x86_64 ]; then
     check "C2D_INLINE is off for gnu99 on an FMA target (gcc contracts)" \
         test "$(inline_flag gcc -std=gnu99 -march=x86-64-v3)" = 0
 fi
+inline_required() { # compiler flags... -> does C2D_INLINE_REQUIRED compile?
+    printf '#define C2D_INLINE\n#define C2D_INLINE_REQUIRED\n#include "collide2d.h"\nint c2d_ok;\n' |
+        "$@" -Iinclude -fsyntax-only -x c - 2>/dev/null
+}
+inline_refused() { ! inline_required "$@"; }
+check "C2D_INLINE_REQUIRED compiles where the front ends are inline" inline_required gcc -std=c99 -O2
+check "C2D_INLINE_REQUIRED stops a build where they would be calls (fast math)" inline_refused gcc -std=c99 -ffast-math
+if [ "$(uname -m)" = x86_64 ]; then
+    check "C2D_INLINE_REQUIRED stops gnu99 on an FMA target" inline_refused gcc -std=gnu99 -march=x86-64-v3
+fi
 check "header compiles as C++ (g++ -std=c++11)" g++ -std=c++11 -pedantic -Wall -Wextra -Werror -fsyntax-only -x c++ include/collide2d.h
 c2d_summary

@@ -605,8 +605,8 @@ uint64_t c2d_hv_models_combined(const c2d_hv_models_hash *h)
  * (kind as one byte, time, a and b as 8 little-endian bytes, the impulse),
  * every call's status is hashed, and at the end every disk's state and
  * acceleration and the statistics.  The memory is static: a world of 100
- * disks needs about 17 KiB, so the host (and any target that builds the
- * world) runs it; the firmware builds leave the world out and hash none. */
+ * disks needs about 17 KiB (less with 4-byte pointers), so the host and the
+ * firmware builds with double and room for it (m7, rv32) run it. */
 #if !defined(C2D_NO_DOUBLE) && !defined(C2D_NO_WORLD)
 #include "collide2d_world.h"
 
@@ -624,6 +624,7 @@ static void mix_world(const void *p, size_t n)
 {
     if (sink != NULL) sink(p, n);
     fnv(&world_out->hash, p, n);
+    fnv(&world_out->portable, p, n);
 }
 
 static void mix_world_status(c2d_status s)
@@ -632,12 +633,27 @@ static void mix_world_status(c2d_status s)
     mix_world(&c, 1);
 }
 
+static void little_endian(uint64_t k, unsigned char b[8])
+{
+    int i;
+    for (i = 0; i < 8; i++) b[i] = (unsigned char)(k >> (8 * i));
+}
+
 static void mix_world_count(uint64_t k)
 {
     unsigned char b[8];
-    int i;
-    for (i = 0; i < 8; i++) b[i] = (unsigned char)(k >> (8 * i));
+    little_endian(k, b);
     mix_world(b, sizeof b);
+}
+
+/* c2d_world_bytes depends on the pointer size (the world's header holds
+ * pointers): in "world", not in "world-portable". */
+static void mix_world_bytes(size_t bytes)
+{
+    unsigned char b[8];
+    little_endian(bytes, b);
+    if (sink != NULL) sink(b, sizeof b);
+    fnv(&world_out->hash, b, sizeof b);
 }
 
 /* At a timer (control scenes): a new acceleration from the disk's index
@@ -677,7 +693,7 @@ static c2d_world *world_make(c2d_world_desc *d, hv_world_run *run)
     c2d_world *w = NULL;
     const size_t bytes = c2d_world_bytes(d);
     d->on_event = world_event, d->user = run;
-    mix_world_count(bytes);
+    mix_world_bytes(bytes);
     if (bytes == 0 || bytes > sizeof world_memory) return NULL;
     mix_world_status(c2d_world_init(&w, world_memory, sizeof world_memory, d));
     run->world = w;
@@ -826,7 +842,7 @@ void c2d_hv_run_world(c2d_hv_world_hash *h, void (*bytes)(const void *p, size_t 
 {
     rng.s = 0xBB67AE8584CAA73Bull; /* the world's own stream */
     world_out = h, sink = bytes;
-    h->hash = 0xCBF29CE484222325ull, h->events = 0, h->present = 1;
+    h->hash = h->portable = 0xCBF29CE484222325ull, h->events = 0, h->present = 1;
     world_collapse(0);
     world_collapse(1);
     world_periodic();
@@ -836,6 +852,6 @@ void c2d_hv_run_world(c2d_hv_world_hash *h, void (*bytes)(const void *p, size_t 
 void c2d_hv_run_world(c2d_hv_world_hash *h, void (*bytes)(const void *p, size_t n))
 {
     (void)bytes;
-    h->hash = 0xCBF29CE484222325ull, h->events = 0, h->present = 0;
+    h->hash = h->portable = 0xCBF29CE484222325ull, h->events = 0, h->present = 0;
 }
 #endif

@@ -57,13 +57,16 @@ void c2d_hv_run_models(unsigned long count, c2d_hv_models_hash *h, void (*sink)(
  * rule, a periodic elastic gas, accelerations and timers whose callback
  * changes the motion among static segments and circles, kicks and a
  * removal between uneven slices): every event (kind, time, indices,
- * impulse), every status, and the final states and statistics.  Not
- * present (present 0) when the world is compiled out (C2D_NO_WORLD, as the
- * firmware builds are, or C2D_NO_DOUBLE).  The expected value is in
+ * impulse), every status, and the final states and statistics, and the
+ * world's size (c2d_world_bytes).  "world-portable" is the same without
+ * the size, which depends on the pointer size: 32-bit targets (the
+ * firmware) compare that one.  Not present (present 0) when the world is
+ * compiled out (C2D_NO_WORLD, or C2D_NO_DOUBLE).  The expected value is in
  * docs/DETERMINISM.md's table ("world"): it moves whenever the world's
  * arithmetic or event order changes, by design. */
 typedef struct c2d_hv_world_hash {
     uint64_t hash;          /* "world" */
+    uint64_t portable;      /* "world-portable": without c2d_world_bytes */
     unsigned long events;   /* the events hashed, for the printout */
     int present;
 } c2d_hv_world_hash;

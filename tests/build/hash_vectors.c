@@ -12,7 +12,8 @@
  * variants together); then, over the models' own 20,000 cases, their
  * inputs' hash ("model-inputs"), one hash per model and variant
  * ("rough-double" ...) and "hash_vectors: N model cases, models hash H".
- * The world's hash ("world hash H" and its number of events) comes between
+ * The world's hashes ("world hash H", "world-portable hash H": without its
+ * memory size, and its number of events) come between
  * the two, when the world is compiled in: the last three lines stay the
  * models' (accel-double, accel-float, models hash).
  * DUMP receives the raw bytes hashed, to locate differences (cmp -l).  Bad arguments: a message and exit status 2. */
@@ -70,6 +71,8 @@ int main(int argc, char **argv)
     if (wh.present) {
         c2d_hv_hex(wh.hash, hex);
         printf("hash_vectors: world hash %s\n", hex);
+        c2d_hv_hex(wh.portable, hex);
+        printf("hash_vectors: world-portable hash %s\n", hex);
         printf("hash_vectors: world scenes, %lu events\n", wh.events);
     }
     c2d_hv_run_models(C2D_HV_MODELS_DEFAULT_COUNT, &m, dump != NULL ? to_dump : NULL);

@@ -53,7 +53,7 @@ $(MCU_B)/%/hash.o: $(CROSS_MCU_SRC) $(MCU_DIR)/mcu.mk | mcu-deps
 
 $(MCU_ARM:%=$(MCU_B)/%/hash.elf): $(MCU_B)/%/hash.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/hash.o \
   $(MCU_B)/%/lib.o $(MCU_DIR)/arm.ld
-	$(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -Wl,--start-group -lm -lc -lgcc -Wl,--end-group
+	$(MCU_$*_CC) $(MCU_$*_ARCH) $(call MCU_ARM_LINK,$*) -o $@ $(filter %.o,$^) -Wl,--start-group -lm -lc -lgcc -Wl,--end-group
 
 $(MCU_B)/rv32/hash.elf: $(MCU_B)/rv32/platform_rv32.o $(MCU_B)/rv32/hash.o $(MCU_B)/rv32/lib.o
 	$(MCU_rv32_CC) $(MCU_rv32_ARCH) $(MCU_RV32_LINK) -o $@ $^ -lm

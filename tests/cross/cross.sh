@@ -25,9 +25,10 @@ end='<!-- hash table: end -->'
 variants="inputs double float Q16.16"
 # The models' hashes, over their own case stream (hash_cases.h).
 models="model-inputs rough-double rough-float accel-double accel-float"
-# The world's, over its own scenes, where it is compiled in (not in the
-# firmware builds: C2D_NO_WORLD).
-world="world"
+# The world's, over its own scenes, where it is compiled in (not without
+# double); the firmware's 4-byte pointers make c2d_world_bytes smaller, so
+# they print only "world-portable" (the same without it).
+world="world world-portable"
 
 # Start every run; each writes OUTDIR/NAME.txt and OUTDIR/NAME.rc.
 names=""
@@ -46,7 +47,7 @@ hash_of() { # NAME VARIANT: the hash a run printed, or nothing
     sed -n "s/^.*: $2 hash \([0-9a-f]\{16\}\)\$/\1/p" "$out/$1.txt" | tail -n 1
 }
 hashed() { # NAME: the variants and models a run hashed (inputs excluded)
-    for v in double float Q16.16 rough-double rough-float accel-double accel-float world; do
+    for v in double float Q16.16 rough-double rough-float accel-double accel-float world world-portable; do
         [ -n "$(hash_of "$1" "$v")" ] && printf '%s ' "$v"
     done
 }

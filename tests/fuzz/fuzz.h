@@ -6,9 +6,10 @@
  *   bounds.c           the bounds the documented accuracy implies
  *   fuzz_template.h    the checks of one floating type, instantiated by
  *                      fuzz_double.c and fuzz_float.c (as lib/ does);
- *                      fuzz_rough_template.h and fuzz_accel_template.h
- *                      likewise for the rough contact and the time of
- *                      impact under acceleration
+ *                      fuzz_rough_template.h, fuzz_accel_template.h and
+ *                      fuzz_sphere_template.h likewise for the rough
+ *                      contact, the time of impact under acceleration and
+ *                      the sphere contacts
  *   fuzz_fixed.c       the Q16.16 checks */
 #ifndef C2D_FUZZ_H
 #define C2D_FUZZ_H
@@ -38,8 +39,16 @@ enum {
     C2D_FUZZ_ROUGHF,
     C2D_FUZZ_ROUGH_NORMALF,
     C2D_FUZZ_TOI_ACCELF,
-    C2D_FUZZ_ENTRIES
+    C2D_FUZZ_ENTRIES,
+    /* Byte 0 = C2D_FUZZ_SPHERE_TAG: these, chosen by byte 2 (the other 255
+     * values of byte 0 keep their entries, so the corpus keeps its meaning). */
+    C2D_FUZZ_BALLS = C2D_FUZZ_ENTRIES,
+    C2D_FUZZ_CUSHION,
+    C2D_FUZZ_BALLSF,
+    C2D_FUZZ_CUSHIONF,
+    C2D_FUZZ_ALL_ENTRIES
 };
+#define C2D_FUZZ_SPHERE_TAG 255
 
 enum { C2D_FUZZ_MIXED = 0, C2D_FUZZ_TAME = 1, C2D_FUZZ_RAW = 2 };
 #define C2D_FUZZ_NULL_STATUS 0x04 /* batch: pass status == NULL */
@@ -123,6 +132,10 @@ void c2d_fuzz_collide_rough(c2d_fuzz_reader *r, int with_normal);
 void c2d_fuzz_time_of_impact_accel(c2d_fuzz_reader *r);
 void c2d_fuzz_collide_roughf(c2d_fuzz_reader *r, int with_normal);
 void c2d_fuzz_time_of_impact_accelf(c2d_fuzz_reader *r);
+void c2d_fuzz_collide_balls(c2d_fuzz_reader *r);
+void c2d_fuzz_collide_cushion(c2d_fuzz_reader *r);
+void c2d_fuzz_collide_ballsf(c2d_fuzz_reader *r);
+void c2d_fuzz_collide_cushionf(c2d_fuzz_reader *r);
 
 /* The double answer the float and Q16.16 checks compare with
  * (fuzz_double.c): the call made and checked as c2d_fuzz_collide does

@@ -32,7 +32,7 @@ FUZZ_REPLAY := $(FUZZ_DIR)/replay
 # the shared test helper (tests/harness/) for the batch arrays and checks.
 FUZZ_SRC := $(addprefix tests/fuzz/,fuzz_collide2d.c decode.c bounds.c fuzz_double.c fuzz_float.c fuzz_fixed.c) \
   tests/harness/harness.c
-FUZZ_REF_SRC := referee/referee.c referee/ref_rough.c referee/ref_toi_accel.c referee/cases_toi_accel.c
+FUZZ_REF_SRC := referee/referee.c referee/ref_rough.c referee/ref_sphere.c referee/ref_toi_accel.c referee/cases_toi_accel.c
 FUZZ_CORPUS := tests/fuzz/corpus
 FUZZ_INC := -Iinclude -Itests/harness -Itests/fuzz -Ireferee
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer

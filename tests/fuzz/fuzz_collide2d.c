@@ -2,7 +2,8 @@
 /* fuzz_collide2d.c - libFuzzer harness for every public entry point.
  *
  * INPUT FORMAT (raw bytes; missing bytes read as 0)
- *   byte 0   entry point, modulo C2D_FUZZ_ENTRIES (see the enum in fuzz.h)
+ *   byte 0   entry point, modulo C2D_FUZZ_ENTRIES (see the enum in fuzz.h);
+ *            C2D_FUZZ_SPHERE_TAG (255): a sphere contact, byte 2 mod 4
  *   byte 1   decoding mode (low 2 bits) and flags (high bits)
  *   rest     the arguments, field by field (decode.c).  In C2D_FUZZ_RAW
  *            every double/float/int32 is its bit pattern straight from the
@@ -44,6 +45,15 @@
  *     (referee/ref_toi_accel.c, Sturm sequences over Q) outside the tie
  *     band the header states, and t within 1 unit of the exact time; with
  *     equal accelerations and no horizon, c2d_time_of_impact's status;
+ *   - sphere contacts (c2d_collide_balls(f), c2d_collide_cushion(f)): on OK
+ *     only velocities and spins written, never non-finite; an immovable
+ *     ball keeps its velocity, infinite inertia or a zero radius its spin;
+ *     momentum kept between finite masses, each ball's angular momentum at
+ *     the contact along n^ and z^ kept, energy (translation and rotation)
+ *     never gained, each within what the documented 24 (balls) or 16
+ *     (cushion) ulp of the scale allow; inside the range the unit tests
+ *     sweep, the status and outputs are the 512-bit referee's
+ *     (referee/ref_sphere.c) within those bounds (fuzz_sphere_template.h);
  *   - the batch entry points give bit-identical outputs, statuses and count
  *     to scalar calls on the same pairs (tests/harness), each of which
  *     holds every property above.
@@ -115,18 +125,20 @@ void c2d_fuzz_describe_x(const c2d_bodyx *a, const c2d_bodyx *b, c2d_fixed nx, c
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    static const char *const names[C2D_FUZZ_ENTRIES] = {
+    static const char *const names[C2D_FUZZ_ALL_ENTRIES] = {
         "c2d_collide", "c2d_collide_normal", "c2d_time_of_impact", "c2d_collidef", "c2d_collide_normalf",
         "c2d_time_of_impactf", "c2d_collidex", "c2d_collide_normalx", "c2d_time_of_impactx",
         "c2d_collide_batch", "c2d_collide_batchf", "c2d_collide_rough", "c2d_collide_rough_normal",
-        "c2d_time_of_impact_accel", "c2d_collide_roughf", "c2d_collide_rough_normalf", "c2d_time_of_impact_accelf"};
+        "c2d_time_of_impact_accel", "c2d_collide_roughf", "c2d_collide_rough_normalf", "c2d_time_of_impact_accelf",
+        "c2d_collide_balls", "c2d_collide_cushion", "c2d_collide_ballsf", "c2d_collide_cushionf"};
     c2d_fuzz_reader r;
     int entry, flags;
     r.p = data;
     r.n = size;
     r.mode = C2D_FUZZ_MIXED;
-    entry = c2d_fuzz_read_byte(&r) % C2D_FUZZ_ENTRIES;
+    entry = c2d_fuzz_read_byte(&r);
     flags = c2d_fuzz_read_byte(&r);
+    entry = entry == C2D_FUZZ_SPHERE_TAG ? C2D_FUZZ_ENTRIES + c2d_fuzz_read_byte(&r) % 4 : entry % C2D_FUZZ_ENTRIES;
     r.mode = flags % 4 == 3 ? C2D_FUZZ_MIXED : flags % 4;
     c2d_fuzz_case = names[entry];
     switch (entry) {
@@ -146,7 +158,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     case C2D_FUZZ_TOI_ACCEL: c2d_fuzz_time_of_impact_accel(&r); break;
     case C2D_FUZZ_ROUGHF: c2d_fuzz_collide_roughf(&r, 0); break;
     case C2D_FUZZ_ROUGH_NORMALF: c2d_fuzz_collide_roughf(&r, 1); break;
-    default: c2d_fuzz_time_of_impact_accelf(&r); break;
+    case C2D_FUZZ_TOI_ACCELF: c2d_fuzz_time_of_impact_accelf(&r); break;
+    case C2D_FUZZ_BALLS: c2d_fuzz_collide_balls(&r); break;
+    case C2D_FUZZ_CUSHION: c2d_fuzz_collide_cushion(&r); break;
+    case C2D_FUZZ_BALLSF: c2d_fuzz_collide_ballsf(&r); break;
+    default: c2d_fuzz_collide_cushionf(&r); break;
     }
     return 0;
 }

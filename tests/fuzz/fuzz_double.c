@@ -7,16 +7,19 @@
 #include <float.h>
 #include <limits.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "type_double.h"
 #include "soa_template.h"
 #include "referee.h"
 #include "ref_rough.h"
+#include "ref_sphere.h"
 #include "cases_toi_accel.h"
 #include "fuzz_template.h"
 #include "fuzz_rough_template.h"
 #include "fuzz_accel_template.h"
+#include "fuzz_sphere_template.h"
 
 void c2d_fuzz_collide(c2d_fuzz_reader *r, int with_normal)
 {
@@ -44,3 +47,7 @@ c2d_fuzz_response c2d_fuzz_response_of(const c2d_body *a0, const c2d_body *b0, c
 void c2d_fuzz_collide_rough(c2d_fuzz_reader *r, int with_normal) { c2d_num_fuzz_collide_rough(r, with_normal); }
 
 void c2d_fuzz_time_of_impact_accel(c2d_fuzz_reader *r) { c2d_num_fuzz_time_of_impact_accel(r); }
+
+void c2d_fuzz_collide_balls(c2d_fuzz_reader *r) { c2d_num_fuzz_collide_balls(r); }
+
+void c2d_fuzz_collide_cushion(c2d_fuzz_reader *r) { c2d_num_fuzz_collide_cushion(r); }

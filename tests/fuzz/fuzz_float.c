@@ -7,16 +7,19 @@
 #include <float.h>
 #include <limits.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "type_float.h"
 #include "soa_template.h"
 #include "referee.h"
 #include "ref_rough.h"
+#include "ref_sphere.h"
 #include "cases_toi_accel.h"
 #include "fuzz_template.h"
 #include "fuzz_rough_template.h"
 #include "fuzz_accel_template.h"
+#include "fuzz_sphere_template.h"
 
 static int float_result_near_limit(const c2d_body *a0, const c2d_body *b0, const c2d_body *a, const c2d_body *b)
 {
@@ -77,3 +80,7 @@ void c2d_fuzz_batchf(c2d_fuzz_reader *r, int flags) { c2d_num_fuzz_batch(r, flag
 void c2d_fuzz_collide_roughf(c2d_fuzz_reader *r, int with_normal) { c2d_num_fuzz_collide_rough(r, with_normal); }
 
 void c2d_fuzz_time_of_impact_accelf(c2d_fuzz_reader *r) { c2d_num_fuzz_time_of_impact_accel(r); }
+
+void c2d_fuzz_collide_ballsf(c2d_fuzz_reader *r) { c2d_num_fuzz_collide_balls(r); }
+
+void c2d_fuzz_collide_cushionf(c2d_fuzz_reader *r) { c2d_num_fuzz_collide_cushion(r); }

@@ -8,7 +8,10 @@
  * bad fields; for the time of impact under acceleration a ball slowing on
  * cloth, a puck pushed, zero and equal accelerations, a horizon before and
  * after the contact, touching at 0, a graze, and bad accelerations and
- * horizons.  Usage: make_seeds DIR */
+ * horizons; for the sphere contacts (byte 0 C2D_FUZZ_SPHERE_TAG, byte 2 the
+ * contact) stun, follow and draw, a cut with side spin, Alciatore's mu(v),
+ * sticking, an immovable ball, rails at R, 0.635 D and 2R with running
+ * english, and bad fields.  Usage: make_seeds DIR */
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -235,6 +238,112 @@ static void scene_rough_bad(int entry, const char *name)
     }
 }
 
+/* A tame ball (1/256 units): pos, vel, spin (3), radius; mass and inertia
+ * indices as tame_disk's. */
+static void tame_ball(const double d[8], long m, long inertia)
+{
+    int i;
+    for (i = 0; i < 7; i++) i16((long)(d[i] * 256));
+    i16(m);
+    i16((long)(d[7] * 256));
+    i16(inertia);
+}
+
+static void start_sphere(int entry, int mode)
+{
+    start(C2D_FUZZ_SPHERE_TAG, mode);
+    byte(entry - C2D_FUZZ_ENTRIES);
+}
+
+/* Tame ball-ball surfaces: e byte / 255, friction, boost and decay bytes
+ * / 64 (friction 255: INFINITY).  Balls of radius 0.25, mass 1, inertia
+ * 25/256 (~ 2/5 m R^2). */
+static void scene_balls(int entry, const char *name)
+{
+    static const struct {
+        const char *what;
+        double a[8], b[8]; /* pos, vel, spin x y z, radius */
+        long ma, mb;
+        int e, mu, boost, decay;
+    } s[] = {
+        {"stun", {0, 0, 2, 0, 0, 0, 0, 0.25}, {0.5, 0, 0, 0, 0, 0, 0, 0.25}, 255, 255, 242, 3, 0, 0},
+        {"follow", {0, 0, 2, 0, 0, 8, 0, 0.25}, {0.5, 0, 0, 0, 0, 0, 0, 0.25}, 255, 255, 242, 3, 0, 0},
+        {"draw-cut", {0, 0, 2, 0, 0, -6, 3, 0.25}, {0.35, 0.35, 0, 0, 0, 0, 0, 0.25}, 255, 255, 242, 13, 0, 0},
+        {"alciatore", {0, 0, 1, 0.5, 2, 4, -4, 0.25}, {0.4, 0.3, -1, 0, 0, 0, 1, 0.25}, 255, 255, 242, 1, 7, 70},
+        {"stick", {0, 0, 1, 0, 0, 0, 8, 0.25}, {0.3, 0.4, 0, 0, 0, 0, 0, 0.25}, 255, 255, 255, 255, 0, 0},
+        {"immovable", {0, 0, 1, 0.5, 4, 0, 2, 0.25}, {0.5, 0, 0, 0, 1, 1, 1, 0.25}, 255, 0xFFFF, 204, 51, 0, 0},
+        {"separating", {0, 0, -1, 0, 0, 4, 0, 0.25}, {0.5, 0, 1, 0, 0, 0, 0, 0.25}, 255, 255, 242, 3, 0, 0},
+    };
+    char full[256];
+    size_t i;
+    for (i = 0; i < sizeof s / sizeof s[0]; i++) {
+        start_sphere(entry, C2D_FUZZ_TAME);
+        tame_ball(s[i].a, s[i].ma, 24);
+        tame_ball(s[i].b, s[i].mb, 24);
+        byte(s[i].e);
+        byte(s[i].mu);
+        byte(s[i].boost);
+        byte(s[i].decay);
+        snprintf(full, sizeof full, "%s-%s", name, s[i].what);
+        save(full);
+    }
+}
+
+/* Tame rails: normal, height byte (R (1 + k / 255)), e byte, friction byte. */
+static void scene_cushion(int entry, const char *name)
+{
+    static const struct {
+        const char *what;
+        double a[8], nx, ny;
+        int h, e, mu;
+    } s[] = {
+        {"rolling-table-height", {0, 0, 1.5, 0, 0, 6, 0, 0.25}, 1, 0, 69, 204, 13},
+        {"english-30deg", {0, 0, 1.3, 0.75, 0, 5, 4, 0.25}, 1, 0, 69, 204, 13},
+        {"centre-height", {0, 0, 1, 1, 0, 0, -4, 0.25}, 0.6, 0.8, 0, 204, 13},
+        {"top", {0, 0, 1, 0, 2, 0, 0, 0.25}, 1, 0, 255, 204, 13},
+        {"stick", {0, 0, 1, -1, 3, -3, 3, 0.25}, 0, -1, 128, 255, 255},
+        {"separating", {0, 0, -1, 0, 0, 4, 0, 0.25}, 1, 0, 69, 204, 13},
+    };
+    char full[256];
+    size_t i;
+    for (i = 0; i < sizeof s / sizeof s[0]; i++) {
+        start_sphere(entry, C2D_FUZZ_TAME);
+        tame_ball(s[i].a, 255, 24);
+        i16((long)(s[i].nx * 256));
+        i16((long)(s[i].ny * 256));
+        byte(s[i].h);
+        byte(s[i].e);
+        byte(s[i].mu);
+        snprintf(full, sizeof full, "%s-%s", name, s[i].what);
+        save(full);
+    }
+}
+
+/* Mixed-mode balls with one bad field each (NaN spin, Inf radius, inertia
+ * 0), the rest small integers; then a good surface (e 1, friction 1). */
+static void scene_sphere_bad(int entry, const char *name)
+{
+    static const struct { const char *what; int field, value; } s[] = {
+        {"nan-spin", 5, 252}, {"inf-radius", 8, 250}, {"zero-inertia", 9, 0},
+    };
+    static const int base[20] = {0, 0, 1, 0, 1, 1, 1, 1, 1, 1, 2, 0, -1, 0, 0, 0, 0, 1, 1, 1};
+    char full[256];
+    size_t i;
+    int f;
+    for (i = 0; i < sizeof s / sizeof s[0]; i++) {
+        start_sphere(entry, C2D_FUZZ_MIXED);
+        for (f = 0; f < 20; f++) {
+            if (f == s[i].field) special(s[i].value);
+            else small(base[f]);
+        }
+        byte(2); /* restitution 1 */
+        byte(1), byte(64); /* friction 1 */
+        byte(2), byte(2); /* boost and decay 0 */
+        snprintf(full, sizeof full, "%s-%s", name, s[i].what);
+        save(full);
+    }
+}
+
 /* Tame accelerated pairs (1/256 units); horizon < 0: INFINITY. */
 static void scene_accel(int entry, const char *name)
 {
@@ -367,5 +476,11 @@ int main(int argc, char **argv)
     scene_accel(C2D_FUZZ_TOI_ACCELF, "time_of_impact_accelf");
     scene_accel_bad(C2D_FUZZ_TOI_ACCEL, "time_of_impact_accel");
     scene_accel_bad(C2D_FUZZ_TOI_ACCELF, "time_of_impact_accelf");
+    scene_balls(C2D_FUZZ_BALLS, "collide_balls");
+    scene_balls(C2D_FUZZ_BALLSF, "collide_ballsf");
+    scene_cushion(C2D_FUZZ_CUSHION, "collide_cushion");
+    scene_cushion(C2D_FUZZ_CUSHIONF, "collide_cushionf");
+    scene_sphere_bad(C2D_FUZZ_BALLS, "collide_balls");
+    scene_sphere_bad(C2D_FUZZ_BALLSF, "collide_ballsf");
     return 0;
 }

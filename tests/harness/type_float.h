@@ -39,6 +39,11 @@ typedef c2d_soaf c2d_num_soa;
 #define C2D_T_COLLIDE_ROUGH c2d_collide_roughf
 #define C2D_T_COLLIDE_ROUGH_NORMAL c2d_collide_rough_normalf
 #define C2D_T_TIME_OF_IMPACT_ACCEL c2d_time_of_impact_accelf
+#define C2D_T_BALL c2d_ballf
+#define C2D_T_BALL_SURFACE c2d_ball_surfacef
+#define C2D_T_CUSHION c2d_cushionf
+#define C2D_T_COLLIDE_BALLS c2d_collide_ballsf
+#define C2D_T_COLLIDE_CUSHION c2d_collide_cushionf
 #define C2D_T_ROUGH_VECTOR c2d_rough_vector_f
 #define C2D_T_ROUGH_VECTORS c2d_rough_vectors_f
 #define C2D_T_ROUGH_VECTOR_COUNT c2d_rough_vector_count_f

@@ -31,12 +31,11 @@ MCU_PKGS := gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi \
   gcc-riscv64-unknown-elf binutils-riscv64-unknown-elf picolibc-riscv64-unknown-elf \
   qemu-system-arm qemu-system-misc cppcheck
 
-# C2D_NO_WORLD: the event-driven world passes 16-byte vectors by value to the
-# library's own calls, which GCC compiles into memcpy calls on these cores,
-# and the library promises no C library; it is not in the firmware builds
-# until it calls scalar entry points instead.
+# The event-driven world is in every build that has double (m0, m7, rv32):
+# it copies no struct whole and passes none by value (gcc -Os makes such
+# copies memcpy calls on these cores; sizes.sh fails on any).
 MCU_CFLAGS := -std=c99 $(WARN) -Werror -ffp-contract=off -Os -ffreestanding -fno-math-errno \
-  -ffunction-sections -fdata-sections -DC2D_NO_WORLD
+  -ffunction-sections -fdata-sections
 
 # Per target: compiler, core flags, library options, table description,
 # emulator, and the extra checks of `make cross`.
@@ -45,12 +44,14 @@ MCU_m0_ARCH := -mcpu=cortex-m0 -mthumb
 MCU_m0_OPTS :=
 MCU_m0_DESC := Cortex-M0, soft float; double, float, Q16.16
 MCU_m0_QEMU := qemu-system-arm -M microbit
+MCU_m0_RAM := 16K
 
 MCU_m4f_CC := arm-none-eabi-gcc
 MCU_m4f_ARCH := -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16
 MCU_m4f_OPTS := -DC2D_NO_DOUBLE
 MCU_m4f_DESC := Cortex-M4F, single-precision FPU; float, Q16.16 (C2D_NO_DOUBLE)
 MCU_m4f_QEMU := qemu-system-arm -M mps2-an386
+MCU_m4f_RAM := 16K
 MCU_m4f_CHECKS := --forbid '^__aeabi_d' --inline sqrtf=vsqrt.f32
 
 MCU_m7_CC := arm-none-eabi-gcc
@@ -58,6 +59,7 @@ MCU_m7_ARCH := -mcpu=cortex-m7 -mfloat-abi=hard -mfpu=fpv5-d16
 MCU_m7_OPTS :=
 MCU_m7_DESC := Cortex-M7, double-precision FPU; double, float, Q16.16
 MCU_m7_QEMU := qemu-system-arm -M mps2-an500
+MCU_m7_RAM := 64K
 
 MCU_rv32_CC := riscv64-unknown-elf-gcc
 MCU_rv32_ARCH := -march=rv32imac -mabi=ilp32
@@ -70,6 +72,7 @@ MCU_m0q16_ARCH := -mcpu=cortex-m0 -mthumb
 MCU_m0q16_OPTS := -DC2D_NO_DOUBLE -DC2D_NO_FLOAT
 MCU_m0q16_DESC := Cortex-M0, Q16.16 only (C2D_NO_DOUBLE C2D_NO_FLOAT), linked -nostdlib -lgcc
 MCU_m0q16_QEMU := qemu-system-arm -M microbit
+MCU_m0q16_RAM := 16K
 
 # Only the compiler's own headers (stddef.h, stdint.h, float.h): no C
 # library's.  Asked of the compiler when the recipe runs, after deps.
@@ -86,7 +89,10 @@ MCU_TEST_SRC := $(MCU_DIR)/main.c tests/vectors/vectors.c $(wildcard tests/vecto
 MCU_DEPS_OF = $(DEPFLAGS) -MT $@ -MF $(basename $@).$(1).d
 
 MCU_ARM := m0 m4f m7
-MCU_ARM_LINK := -nostdlib -T $(MCU_DIR)/arm.ld -Wl,--gc-sections
+# RAM: 16 KiB (the micro:bit's nRF51) where the harness fits, 64 KiB on the
+# M7 (its MPS2 board has 4 MiB), where the world's hash scenes
+# (tests/cross/hash_mcu.c: 22.5 KiB of world memory) run.
+MCU_ARM_LINK = -nostdlib -T $(MCU_DIR)/arm.ld -Wl,--gc-sections -Wl,--defsym=__c2d_ram_size=$(MCU_$(1)_RAM)
 # picolibc's semihosting crt0 and console; code and data in the virt board's RAM.
 MCU_RV32_LINK := --specs=picolibc.specs --crt0=semihost --oslib=semihost -Wl,--gc-sections \
   -Wl,--defsym=__flash=0x80000000,--defsym=__flash_size=0x100000 \
@@ -134,22 +140,22 @@ $(MCU_B)/rv32/platform_rv32.o: $(MCU_DIR)/platform_rv32.c | mcu-deps
 # harness.elf links lib/, harness_all.elf the amalgamation.
 $(MCU_ARM:%=$(MCU_B)/%/harness.elf): $(MCU_B)/%/harness.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/tests.o \
   $(MCU_B)/%/lib.o $(MCU_DIR)/arm.ld
-	$(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) \
+	$(MCU_$*_CC) $(MCU_$*_ARCH) $(call MCU_ARM_LINK,$*) -o $@ $(filter %.o,$^) \
 	  -Wl,--start-group -lm -lc -lgcc -Wl,--end-group
 
 $(MCU_ARM:%=$(MCU_B)/%/harness_all.elf): $(MCU_B)/%/harness_all.elf: $(MCU_B)/%/startup_arm.o $(MCU_B)/%/tests.o \
   $(MCU_B)/%/collide2d.o $(MCU_DIR)/arm.ld
-	$(MCU_$*_CC) $(MCU_$*_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) \
+	$(MCU_$*_CC) $(MCU_$*_ARCH) $(call MCU_ARM_LINK,$*) -o $@ $(filter %.o,$^) \
 	  -Wl,--start-group -lm -lc -lgcc -Wl,--end-group
 
 # Q16.16 alone: libgcc is the only library.
 $(MCU_B)/m0q16/harness.elf: $(MCU_B)/m0q16/startup_arm.o $(MCU_B)/m0q16/tests.o \
   $(MCU_B)/m0q16/lib.o $(MCU_DIR)/arm.ld
-	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
+	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(call MCU_ARM_LINK,m0q16) -o $@ $(filter %.o,$^) -lgcc
 
 $(MCU_B)/m0q16/harness_all.elf: $(MCU_B)/m0q16/startup_arm.o $(MCU_B)/m0q16/tests.o \
   $(MCU_B)/m0q16/collide2d.o $(MCU_DIR)/arm.ld
-	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(MCU_ARM_LINK) -o $@ $(filter %.o,$^) -lgcc
+	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) $(call MCU_ARM_LINK,m0q16) -o $@ $(filter %.o,$^) -lgcc
 
 $(MCU_B)/m0q16/q16_link.elf: $(MCU_B)/m0q16/q16_caller.o $(MCU_B)/m0q16/collide2d.o
 	$(MCU_m0q16_CC) $(MCU_m0q16_ARCH) -nostdlib -Wl,--gc-sections -Wl,-e,c2d_q16_entry -o $@ $^ -lgcc
@@ -175,7 +181,9 @@ MCU_TABLE := rm -f $(MCU_B)/rows.md $(MCU_B)/sections.md; \
 	  echo 'The library (lib/, as the single file of `make amalgamate`) built with `$(MCU_CFLAGS)`.'; \
 	  echo 'Bytes. *code*: what linking only that function brings in from the library (--gc-sections);'; \
 	  echo '*+ helpers*: the libgcc routines that adds; *stack*: worst case through the library'"'"'s own'; \
-	  echo 'call graph (-fstack-usage, -fcallgraph-info; helper frames not counted). No recursion, no allocation.'; echo; \
+	  echo 'call graph (-fstack-usage, -fcallgraph-info; helper frames not counted), *+ callbacks*: the world'"'"'s, plus'; \
+	  echo 'the caller'"'"'s on_event, resolvers and broadphase (the only indirect calls). No recursion, no allocation.'; \
+	  echo 'The world needs double: it is in the m0, m7 and rv32 builds.'; echo; \
 	  echo '| target | core, variants | text | data | bss | text with libgcc helpers | worst stack | outside symbols |'; \
 	  echo '|---|---|---:|---:|---:|---:|---:|---|'; \
 	  cat $(MCU_B)/rows.md; echo; cat $(MCU_B)/sections.md; } >$(MCU_B)/SIZES.md

@@ -6,8 +6,10 @@
 # -fcallgraph-info=su.
 # Fails (exit 1, reason on stderr) when the object takes any outside symbol
 # other than compiler-runtime helpers and sqrt/sqrtf, when the call graph has
-# a cycle (recursion), an indirect call or a dynamically sized frame, and on
-# the target-specific checks given as options.
+# a cycle (recursion), an indirect call outside the world or a dynamically
+# sized frame, and on the target-specific checks given as options.  The
+# world's indirect calls are the caller's callbacks (on_event, resolvers,
+# broadphase): its functions' stack is the library's part, "+ callbacks".
 #
 # Usage: sizes.sh [--forbid REGEX] [--inline SYMBOL=INSN]... [--rows FILE]
 #                 NAME DESCRIPTION OBJECT CC ARCH-FLAGS...
@@ -105,7 +107,7 @@ function collect(n,   i, c) {
     seen[n] = 1
     for (i = 1; i <= nout[n]; i++) {
         c = to[n, i]
-        if (c in fn) collect(c); else found[c in ext ? ext[c] : c] = 1
+        if (c in fn) collect(c); else if (c == "__indirect_call") calls_back = 1; else found[c in ext ? ext[c] : c] = 1
     }
 }
 /^node:/ {
@@ -118,7 +120,7 @@ function collect(n,   i, c) {
 /^edge:/ {
     s = quoted($0, "sourcename"); d = quoted($0, "targetname")
     nout[s]++; to[s, nout[s]] = d
-    if (d == "__indirect_call") print "INDIRECT " fn[s]
+    if (d == "__indirect_call" && fn[s] !~ /^c2d_(w|world)_/) print "INDIRECT " fn[s]
 }
 END {
     for (t in fn) byname[fn[t]] = t
@@ -132,15 +134,15 @@ END {
     for (t in fn) {
         if (index(t, ":") > 0) continue
         w = worst(t)
-        split("", seen); split("", found); collect(t); list = ""
+        split("", seen); split("", found); calls_back = 0; collect(t); list = ""
         for (e in found) list = list " " e
-        print "STACK " fn[t] " " own[t] " " w list
+        print "STACK " fn[t] " " own[t] " " w (calls_back ? "+" : "") list
     }
 }' "$tmp/alias" "$base.ci" >"$tmp/graph"
 grep '^RECURSION ' "$tmp/graph" | sort -u | while read -r _ f; do echo "cross $name: FAIL: recursion through $f" >&2; done
 grep -q '^RECURSION ' "$tmp/graph" && status=1
 grep -q '^UNRESOLVED ' "$tmp/graph" && fail "callee without a call-graph node: $(grep '^UNRESOLVED ' "$tmp/graph" | cut -d' ' -f2 | sort -u | tr '\n' ' ')"
-grep -q '^INDIRECT ' "$tmp/graph" && fail "indirect call (stack not bounded statically)"
+grep -q '^INDIRECT ' "$tmp/graph" && fail "indirect call outside the world's callbacks (stack not bounded statically): $(grep '^INDIRECT ' "$tmp/graph" | cut -d' ' -f2 | sort -u | tr '\n' ' ')"
 grep -q '^DYNAMIC ' "$tmp/graph" && fail "dynamically sized stack frame: $(grep '^DYNAMIC ' "$tmp/graph" | cut -d' ' -f2 | tr '\n' ' ')"
 
 # ------------------------------------------------------------ sizes
@@ -153,7 +155,10 @@ link() {
     shift
     $cc $arch -nostdlib -Wl,--gc-sections -Wl,--unresolved-symbols=ignore-all -o "$out" "$@"
 }
-"${tools}nm" -g --defined-only "$obj" | awk '$2 == "T" { print $3 }' | sort >"$tmp/public"
+# Public: global default-visibility functions (the hidden ones are the
+# library's own, lib/internal.h).
+"${tools}readelf" -sW "$obj" | awk '$4 == "FUNC" && $5 == "GLOBAL" && $6 == "DEFAULT" && $7 != "UND" { print $8 }' |
+    sort >"$tmp/public"
 set -- $("${tools}size" "$obj" | awk 'NR == 2 { print $1, $2, $3 }')
 obj_text=$1 obj_data=$2 obj_bss=$3
 all_entry=$(head -n 1 "$tmp/public")
@@ -163,6 +168,21 @@ link "$tmp/allh.elf" -Wl,-e,"$all_entry" $undefs "$obj" -lgcc
 all_code=$(text_of "$tmp/all.elf")
 all_total=$(text_of "$tmp/allh.elf")
 worst_stack=0
+# A part of the library (the world, the sphere contacts): the code linking
+# only its functions brings in, and what it adds to all the others linked.
+part_code() { # FILE-OF-FUNCTIONS
+    $cc $arch -nostdlib -Wl,--gc-sections -Wl,--unresolved-symbols=ignore-all -o "$tmp/part.elf" \
+        -Wl,-e,"$(head -n 1 "$1")" $(sed 's/^/-Wl,--undefined=/' "$1" | tr '\n' ' ') "$obj"
+    text_of "$tmp/part.elf"
+}
+part_rows() { # REGEX DESCRIPTION
+    grep -E "$1" "$tmp/public" >"$tmp/part" || return 0
+    grep -vE "$1" "$tmp/public" >"$tmp/rest"
+    code=$(part_code "$tmp/part")
+    rest=$(part_code "$tmp/rest")
+    echo "| $2 | $code | 0 | 0 |"
+    echo "| what it adds to all the other public functions linked | $((all_code - rest)) | 0 | 0 |"
+}
 
 echo "### $name: $desc"
 echo
@@ -173,6 +193,8 @@ echo "|---|---:|---:|---:|"
 echo "| library object | $obj_text | $obj_data | $obj_bss |"
 echo "| all public functions linked (--gc-sections) | $all_code | 0 | 0 |"
 echo "| the same with the libgcc helpers it pulls in | $all_total | 0 | 0 |"
+part_rows '^c2d_world_' 'the event-driven world: its functions linked (with the calls it makes)'
+part_rows '^c2d_collide_(balls|cushion)f?$' 'the sphere contacts: `c2d_collide_balls`, `c2d_collide_cushion` (and `f`) linked'
 echo
 echo "| function | code | + helpers | stack | compiler helpers and outside symbols called |"
 echo "|---|---:|---:|---:|---|"
@@ -184,7 +206,8 @@ for f in $(cat "$tmp/public"); do
     line=$(grep "^STACK $f " "$tmp/graph" || echo "STACK $f ? ?")
     stack=$(echo "$line" | cut -d' ' -f4)
     called=$(echo "$line" | cut -d' ' -f5- | tr ' ' '\n' | sed '/^$/d' | sort -u | sed 's/.*/`&`/' | tr '\n' ' ' | sed 's/ $//')
-    [ "$stack" != "?" ] && [ "$stack" -gt "$worst_stack" ] && worst_stack=$stack
+    [ "${stack%+}" != "?" ] && [ "${stack%+}" -gt "$worst_stack" ] && worst_stack=${stack%+}
+    [ "${stack%+}" = "$stack" ] || stack="${stack%+} + callbacks"
     echo "| \`$f\` | $code | $((total - code)) | $stack | ${called:--} |"
 done
 echo

@@ -65,7 +65,9 @@ static void test_mixed_pairs_match_the_referee_in_double_and_float(void **state)
                   balls_worst(gen_mixed_balls, 1, 24));
 }
 
-static double cushion_worst(int is_float, uint64_t seed)
+typedef void (*cushion_gen)(c2d_rng *, ref_cushion_case *);
+
+static double cushion_worst(cushion_gen gen, int is_float, uint64_t seed)
 {
     double worst = 0;
     int i, ok = 0;
@@ -75,7 +77,7 @@ static double cushion_worst(int is_float, uint64_t seed)
         ref_cushion_case c;
         double got[5], err = 0;
         c2d_status st, want;
-        gen_cushion(&r, &c);
+        gen(&r, &c);
         if (is_float) cushion_case_to_float(&c);
         st = is_float ? cushion_callf(&c, got) : cushion_call(&c, got);
         want = ref_cushion(&c, got, is_float ? 24 : 53, &err);
@@ -88,7 +90,7 @@ static double cushion_worst(int is_float, uint64_t seed)
         worst = fmax(worst, err);
         ok += st == C2D_OK;
     }
-    /* gen_cushion turns every ball towards the rail; h = 2R never comes
+    /* Both generators turn every ball towards the rail; h = 2R never comes
      * out of c2d_rng_range's half-open interval. */
     assert_cases_checked(ok, CASES);
     return worst;
@@ -97,7 +99,59 @@ static double cushion_worst(int is_float, uint64_t seed)
 static void test_cushion_impacts_match_the_referee_in_double_and_float(void **state)
 {
     (void)state;
-    print_message("cushion: worst %.2f ulp (double), %.2f ulp (float)\n", cushion_worst(0, 31), cushion_worst(1, 32));
+    print_message("cushion: worst %.2f ulp (double), %.2f ulp (float)\n", cushion_worst(gen_cushion, 0, 31),
+                  cushion_worst(gen_cushion, 1, 32));
+}
+
+/* Over many decades (gen_wide_balls): 300 binades either side of 1 in
+ * double, 30 in float, where the inertia and every product of the model
+ * stay within the format.  The same bounds as at unit scale: the analysis
+ * (lib/real/sphere.h, ACCURACY) is in ulp of the scale and holds at any. */
+static void wide_double(c2d_rng *r, ref_balls_case *c) { gen_wide_balls(r, c, 300); }
+static void wide_float(c2d_rng *r, ref_balls_case *c) { gen_wide_balls(r, c, 30); }
+static void wide_cushion_double(c2d_rng *r, ref_cushion_case *c) { gen_wide_cushion(r, c, 300); }
+static void wide_cushion_float(c2d_rng *r, ref_cushion_case *c) { gen_wide_cushion(r, c, 30); }
+
+static void test_pairs_over_many_decades_match_the_referee_in_double_and_float(void **state)
+{
+    (void)state;
+    print_message("pairs over many decades: worst %.2f ulp (double), %.2f ulp (float)\n",
+                  balls_worst(wide_double, 0, 25), balls_worst(wide_float, 1, 26));
+}
+
+static void test_cushion_impacts_over_many_decades_match_the_referee_in_double_and_float(void **state)
+{
+    (void)state;
+    print_message("cushion over many decades: worst %.2f ulp (double), %.2f ulp (float)\n",
+                  cushion_worst(wide_cushion_double, 0, 33),
+                  cushion_worst(wide_cushion_float, 1, 34));
+}
+
+/* Rails just below h = 2R, where cos(th) -> 0: the sliding friction mu Pn
+ * is proportional to cos(th), so cos(th) must keep a few u however small
+ * (c2d_cushion_tilt); h = 2R (1 - 2^-k) for k up to the format's
+ * precision, against the referee at the cushion's bound. */
+static void test_a_rail_near_the_top_of_the_ball_stays_within_the_bound(void **state)
+{
+    int k, is_float, n = 0;
+    c2d_rng r;
+    (void)state;
+    r.s = 35;
+    for (is_float = 0; is_float < 2; is_float++)
+        for (k = 2; k < (is_float ? 24 : 53); k++) {
+            ref_cushion_case c;
+            double got[5], err = 0;
+            gen_cushion(&r, &c);
+            if (is_float) cushion_case_to_float(&c);
+            c.h = 2 * c.a.r - ldexp(2 * c.a.r, -k), c.mu = 1;
+            if (is_float) c.h = (float)c.h;
+            assert_status(is_float ? cushion_callf(&c, got) : cushion_call(&c, got), C2D_OK);
+            assert_status(ref_cushion(&c, got, is_float ? 24 : 53, &err), C2D_OK);
+            if (!(err <= CUSHION_BOUND_ULP)) print_error("h = 2R (1 - 2^-%d): error %.2f ulp\n", k, err);
+            assert_true(err <= CUSHION_BOUND_ULP);
+            n++;
+        }
+    assert_cases_checked(n, 51 + 22);
 }
 
 static double pair_scale(const c2d_ball *a0, const c2d_ball *b0, const double *got)
@@ -501,6 +555,9 @@ int main(void)
         cmocka_unit_test(test_pool_pairs_match_the_referee_in_double_and_float),
         cmocka_unit_test(test_mixed_pairs_match_the_referee_in_double_and_float),
         cmocka_unit_test(test_cushion_impacts_match_the_referee_in_double_and_float),
+        cmocka_unit_test(test_a_rail_near_the_top_of_the_ball_stays_within_the_bound),
+        cmocka_unit_test(test_pairs_over_many_decades_match_the_referee_in_double_and_float),
+        cmocka_unit_test(test_cushion_impacts_over_many_decades_match_the_referee_in_double_and_float),
         cmocka_unit_test(test_spin_about_the_vertical_only_is_the_rough_disk_model),
         cmocka_unit_test(test_a_cushion_at_the_centre_height_is_the_rough_wall),
         cmocka_unit_test(test_throw_follows_alciatores_closed_form),

@@ -215,6 +215,27 @@ static c2d_status c2d_toia_result(const c2d_dd *out, c2d_real horizon, c2d_real 
     return C2D_OK;
 }
 
+/* Equal accelerations (zero ones included) cancel in the difference: the
+ * relative path is a straight line, d(t) = d0 + v t, and the plain time of
+ * impact is the answer, to its own accuracy and at every magnitude.  The
+ * curved solver's time scale comes from bounds on the acceleration term,
+ * which is zero here, so it must not see such a pair (it put a contact at
+ * 2^-101 at 0x1.8p+195).  The horizon only cuts: a contact beyond it, or
+ * beyond DBL_MAX under a finite horizon, is none.  Called after the exact
+ * decision at t = 0 and the zero horizon, so a contact at a time that
+ * underflows to 0 is none within a zero horizon. */
+static c2d_status c2d_toia_straight(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum,
+                                    c2d_real horizon, c2d_real *t)
+{
+    c2d_real tt;
+    c2d_status s = c2d_real_time_of_impact(a, b, radius_sum, &tt);
+    if (s == C2D_RANGE) return horizon <= C2D_R_MAX ? C2D_SEPARATING : C2D_RANGE;
+    if (s != C2D_OK) return s;
+    if (tt > horizon) return C2D_SEPARATING;
+    *t = tt;
+    return C2D_OK;
+}
+
 static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc_a, const c2d_real_body *b,
                                  const c2d_real_vec *acc_b, c2d_real radius_sum, c2d_real horizon, c2d_real *t)
 {
@@ -237,6 +258,7 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
         return C2D_OK;
     }
     if (horizon == 0) return C2D_SEPARATING;
+    if (c.nonzero[2] == 0) return c2d_toia_straight(a, b, radius_sum, horizon, t);
     eb = c2d_toia_bound(&c);
     t_is_h = horizon <= C2D_R_MAX && c2d_ilogb(horizon) < eb;
     if (t_is_h != 0) c2d_dd_set(&T, horizon, 0, 0);
