@@ -32,6 +32,7 @@ struct AimState {
     double angle = 0;   // radians, 0 = +x, counter-clockwise
     double power = 0;   // 0..1 of the greatest speed
     double side = 0, topback = 0;  // tip offset, fractions of R
+    double elevation = 0;          // the cue's elevation, degrees in [0, kMaxElevation]
 };
 
 // Ghost ball and lines, then the cue stick, for the cue ball (index 0).

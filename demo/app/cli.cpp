@@ -38,12 +38,19 @@ const char kUsage[] =
     "                              8ball: two players, WPA-style rules\n"
     "  --players A,B               8ball: each human or computer (window default\n"
     "                              human,computer; headless: computer,computer only)\n"
+    "  --model sphere|sphere-alciatore|disk  the pool scenes' impacts: balls as\n"
+    "                              spheres with 3-D spin, cushions 0.64 D high (default);\n"
+    "                              the same with Alciatore's speed-dependent ball-ball\n"
+    "                              friction; or the former disks in the plane of the\n"
+    "                              centres\n"
     "headless only:\n"
-    "  --shot DEG,MPS[,SIDE,TOP]   cue shot, may repeat, each once the table is at rest:\n"
-    "                              angle (0 = +x, counter-clockwise), the cue ball's\n"
-    "                              speed, the tip's offset right of centre and above it\n"
-    "                              as fractions of R, sqrt(SIDE^2+TOP^2) <= 0.5\n"
-    "                              (default 0,12,0,0: the break; none with --place)\n"
+    "  --shot DEG,MPS[,SIDE,TOP[,ELEV]]  cue shot, may repeat, each once the table is\n"
+    "                              at rest: angle (0 = +x, counter-clockwise), the cue\n"
+    "                              ball's speed, the tip's offset right of centre and\n"
+    "                              above it as fractions of R, sqrt(SIDE^2+TOP^2) <= 0.5,\n"
+    "                              the cue's elevation in degrees, 0 (level, the\n"
+    "                              default) to 85 (default 0,12,0,0: the break; none\n"
+    "                              with --place)\n"
     "  --seconds S                 simulated time, 0 to 86400 (default: until rest;\n"
     "                              60 for elastic/gas)\n"
     "  --json                      one JSON object on stdout instead of the summary\n"
@@ -124,7 +131,7 @@ bool takes_value(const std::string &flag) {
     static const char *const options[] = {"--scene",   "--response", "--balls",  "--place",      "--seed",
                                           "--game",    "--players",  "--seconds", "--shot",      "--events",
                                           "--trace",   "--speeds",   "--screenshot", "--screenshot-window",
-                                          "--check",   "--broadphase"};
+                                          "--check",   "--model",    "--broadphase"};
     for (const char *o : options)
         if (flag == o) return true;
     return false;
@@ -144,17 +151,23 @@ std::vector<std::string> fields(const std::string &text) {
 
 Shot parse_shot(const std::string &text) {
     const std::vector<std::string> f = fields(text);
-    if (f.size() != 2 && f.size() != 4)
-        fail("--shot: expected ANGLE_DEG,SPEED_MPS[,SIDE,TOPBACK], got '" + text + "'");
+    if (f.size() != 2 && f.size() != 4 && f.size() != 5)
+        fail("--shot: expected ANGLE_DEG,SPEED_MPS[,SIDE,TOPBACK[,ELEVATION_DEG]], got '" + text + "'");
     Shot s{parse_number("--shot angle", f[0]), parse_number("--shot speed", f[1])};
     if (!(s.speed > 0 && s.speed <= kMaxShotSpeed))
         fail("--shot: speed must be in (0, " + std::to_string(static_cast<int>(kMaxShotSpeed)) + "] m/s");
-    if (f.size() == 4) {
+    if (f.size() >= 4) {
         s.side = parse_number("--shot side", f[2]);
         s.topback = parse_number("--shot topback", f[3]);
         if (std::hypot(s.side, s.topback) > kMaxTipOffset)
             fail("--shot: the tip offset sqrt(SIDE^2 + TOPBACK^2) must be at most 0.5 (a miscue beyond), got '" +
                  text + "'");
+    }
+    if (f.size() == 5) {
+        s.elevation = parse_number("--shot elevation", f[4]);
+        if (!(s.elevation >= 0 && s.elevation <= kMaxElevation))
+            fail(cat("--shot: the cue's elevation must be in [0, ", std::to_string(static_cast<int>(kMaxElevation)),
+                     "] degrees, got '", f[4], "'"));
     }
     return s;
 }
@@ -276,6 +289,12 @@ Options parse(int argc, char **argv) {
             else if (v == "sample") o.config.check = CheckMode::Sample;
             else if (v == "off") o.config.check = CheckMode::Off;
             else fail("--check: unknown mode '" + v + "' (full, sample or off)");
+        } else if (flag == "--model") {
+            const std::string v = value();
+            if (v == "sphere") o.config.model.contact = ContactModel::Sphere;
+            else if (v == "sphere-alciatore") o.config.model.contact = ContactModel::SphereAlciatore;
+            else if (v == "disk") o.config.model.contact = ContactModel::Disk;
+            else fail("--model: unknown contact model '" + v + "' (sphere, sphere-alciatore or disk)");
         } else if (flag == "--broadphase") {
             const std::string v = value();
             if (v == "tree") o.config.broadphase = demo::WorldBroadphase::Tree;

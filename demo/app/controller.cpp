@@ -148,6 +148,7 @@ void Game::computer_turn(Simulation &sim) {
         aim_.angle = plan_.shot.angle_deg * M_PI / 180;
         aim_.side = plan_.shot.side;
         aim_.topback = plan_.shot.topback;
+        aim_.elevation = plan_.shot.elevation;
         aim_frames_ = 0;
     }
     aim_.power = std::min(1.0, plan_.shot.speed / kMaxPlaySpeed) * std::min(1.0, 1.5 * aim_frames_ / kComputerAimFrames);
@@ -193,7 +194,7 @@ void Game::shoot(Simulation &sim) {
     aim_.power = 0;
     if (speed < 0.02 || !can_shoot(sim)) return;
     match_.shot_started(sim.balls());
-    sim.shoot(Shot{aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback});
+    sim.shoot(Shot{aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback, aim_.elevation});
     ++shots_;
     last_speed_ = speed;
     help_ = false;
@@ -275,6 +276,10 @@ void Game::handle_key(Simulation &sim, const SDL_Keysym &key) {
     case SDLK_LEFT: aim_.side -= step; break;
     case SDLK_RIGHT: aim_.side += step; break;
     case SDLK_c: aim_.side = aim_.topback = 0; break;
+    // the cue's elevation in 5-degree steps: swerve, and masse when steep
+    case SDLK_PAGEUP: aim_.elevation = std::min(kMaxElevation, aim_.elevation + 5); break;
+    case SDLK_PAGEDOWN: aim_.elevation = std::max(0.0, aim_.elevation - 5); break;
+    case SDLK_l: aim_.elevation = 0; break;
     case SDLK_COMMA: aim_.angle += (key.mod & KMOD_SHIFT ? 1.0 : 0.1) * M_PI / 180; break;
     case SDLK_PERIOD: aim_.angle -= (key.mod & KMOD_SHIFT ? 1.0 : 0.1) * M_PI / 180; break;
     default: break;
@@ -330,6 +335,7 @@ Overlay Game::overlay(const Simulation &sim) const {
     o.panel.max_speed = kMaxPlaySpeed;
     o.panel.side = aim_.side;
     o.panel.topback = aim_.topback;
+    o.panel.elevation = aim_.elevation;
     if (match_.eight_ball()) o.banner = match_.result();
     else if (left == 0 && sim.at_rest())
         o.banner = "Table cleared in " + std::to_string(shots_) + (shots_ == 1 ? " shot" : " shots") + ". Press R to rack again.";

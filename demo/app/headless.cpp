@@ -206,6 +206,8 @@ void print_model(const Simulation &sim) {
                 m.cloth.slide, m.cloth.roll, m.cloth.spin, m.cloth.spin_deceleration(), m.ball.restitution,
                 m.ball.friction, m.ball.tangential_restitution, m.cushion.restitution, m.cushion.friction,
                 m.cushion.tangential_restitution, m.absorb_below, sim.table().length, sim.table().width);
+    std::printf(",\"contact_model\":\"%s\",\"cushion_height\":%.17g,\"squirt_end_mass\":%.17g",
+                demo::contact_model_name(m.contact), m.cushion_height, demo::kCueEndMass);
     if (c.scene == Scene::Break) {
         for (const auto &p : {std::make_pair("corner", c.table.corner), std::make_pair("side", c.table.side)})
             std::printf(",\"%s_mouth\":%.17g,\"%s_facing_angle_deg\":%.17g,\"%s_nose_radius\":%.17g,\"%s_shelf\":%.17g,"
@@ -405,8 +407,8 @@ void print_game_json(const demo::GameRecord &g, const Options &o, const Simulati
         else std::printf("\"ball_in_hand\":null,");
         std::printf("\"potted\":[");
         for (size_t k = 0; k < r.potted.size(); ++k) std::printf("%s%d", k ? "," : "", r.potted[k]);
-        std::printf("],\"foul\":\"%s\",\"keeps_turn\":%s,\"candidates\":%d}", demo::foul_name(r.foul),
-                    r.keeps_turn ? "true" : "false", r.candidates);
+        std::printf("],\"foul\":\"%s\",\"keeps_turn\":%s,\"candidates\":%d,\"elevation\":%.17g}",
+                    demo::foul_name(r.foul), r.keeps_turn ? "true" : "false", r.candidates, r.shot.elevation);
     }
     std::printf("],\"shot_count\":%zu,\"fouls\":%d,\"groups\":[\"%s\",\"%s\"],\"winner\":", g.shots.size(), g.fouls,
                 demo::group_name(g.groups[0]), demo::group_name(g.groups[1]));

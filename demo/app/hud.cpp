@@ -65,6 +65,13 @@ void draw_dial(Canvas &canvas, const Screen &layout, const PanelState &state) {
     const int w = text_width(label, scale);
     draw_text(canvas, label, static_cast<int>(d.cx) - w - static_cast<int>(d.radius * 1.2f),
               static_cast<int>(d.cy + d.radius) - text_height(scale), TextStyle{scale, kDim, false});
+    // the cue's elevation beside the dial, above the spin's name
+    char elevation[48];
+    std::snprintf(elevation, sizeof elevation, "Cue %2.0f deg%s", state.elevation,
+                  state.elevation >= 60 ? " masse" : state.elevation > 0 ? " swerve" : " level");
+    const int ew = text_width(elevation, scale);
+    draw_text(canvas, elevation, static_cast<int>(d.cx) - ew - static_cast<int>(d.radius * 1.2f),
+              static_cast<int>(d.cy + d.radius) - 2 * text_height(scale) - scale * 4, TextStyle{scale, kDim, false});
 }
 
 void draw_status(Canvas &canvas, const Screen &layout, const PanelState &state) {

@@ -24,6 +24,7 @@ struct PanelState {
     double power = 0;                // 0..1
     double max_speed = 0;            // m/s at full power
     double side = 0, topback = 0;    // tip offset, fractions of R
+    double elevation = 0;            // the cue's elevation, degrees
 };
 
 // The spin selector's circle in the panel (for mouse clicks).

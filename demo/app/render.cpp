@@ -34,6 +34,7 @@ const char *const kHelp[] = {
     "Right button      cancel the stroke",
     "Arrow keys        tip offset: up follow, down draw, sides english",
     "Click the ball    set the tip offset; C centre; wheel follow/draw",
+    "PgUp / PgDn       raise / lower the cue 5 deg (swerve, masse); L level",
     "8-ball: ball in hand - move the mouse, click to put the cue ball down",
     "M mute   H help   F12 screenshot   R rack again   Esc quit",
 };

@@ -14,6 +14,22 @@ struct Surface {
     double restitution, friction, tangential_restitution;
 };
 
+// The contact model of the pool scenes' impacts (sphere_contact.h):
+//   Sphere           balls as spheres (c2d_collide_balls, c2d_collide_cushion):
+//                    friction on the full 3-D slip (top and back spin
+//                    included), the cushion's nose above the centre; the
+//                    ball-ball friction constant (Surface::friction)
+//   SphereAlciatore  the same with Alciatore's speed-dependent ball-ball
+//                    friction mu(v) = a + b exp(-c v) (kAlciatore*)
+//   Disk             the former model: disks in the plane of the centres
+//                    (c2d_collide_rough, c2d_collide_rough_normal), wx and
+//                    wy untouched by an impact
+enum class ContactModel { Sphere, SphereAlciatore, Disk };
+// --model's name of each: sphere, sphere-alciatore, disk.
+inline const char *contact_model_name(ContactModel c) {
+    return c == ContactModel::Sphere ? "sphere" : c == ContactModel::SphereAlciatore ? "sphere-alciatore" : "disk";
+}
+
 struct Model {
     // false: the frictionless scenes.  Balls move straight at constant
     // velocity, never spin, and impacts are smooth (c2d_collide,
@@ -37,6 +53,10 @@ struct Model {
     // only takes energy away; what it changes is small (a 5 mm/s nudge would
     // move a ball at most 0.13 mm; clusters pushed slowly move together).
     double absorb_below;  // m/s
+    ContactModel contact = ContactModel::Sphere;
+    // The cushion nose's height above the cloth, m (the sphere models):
+    // 0.64 D (sim.h gives the sources).
+    double cushion_height = 1.28 * kBallRadius;
 };
 
 }  // namespace demo

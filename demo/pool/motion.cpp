@@ -104,15 +104,30 @@ double energy(const Ball &b) {
            0.5 * kBallInertia * (b.wx * b.wx + b.wy * b.wy + b.wz * b.wz);
 }
 
-Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback) {
+double squirt_angle(double side) {
+    const double across = 1 - side * side;
+    return std::atan(2.5 * side * std::sqrt(across) / (1 + kBallMass / kCueEndMass + 2.5 * across));
+}
+
+Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback, double elevation_rad) {
     Ball s = b;
     const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
-    const double w = 2.5 * speed / kBallRadius;  // 5 v / (2R)
-    s.vx = speed * dx;
-    s.vy = speed * dy;
-    s.wx = -w * topback * dy;
-    s.wy = w * topback * dx;
-    s.wz = w * side;
+    const double ce = std::cos(elevation_rad), se = std::sin(elevation_rad);
+    // the tip's contact point r / R, from the cue's frame (e_right = (dy, -dx, 0))
+    const double c = std::sqrt(std::fmax(0.0, 1 - side * side - topback * topback));
+    const double rx = side * dy + topback * se * dx - c * ce * dx;
+    const double ry = -side * dx + topback * se * dy - c * ce * dy;
+    const double rz = topback * ce + c * se;
+    // the impulse's direction: the cue's, turned left by the squirt angle
+    const double a = squirt_angle(side), sx = dx * std::cos(a) - dy * std::sin(a), sy = dy * std::cos(a) + dx * std::sin(a);
+    const double jx = ce * sx, jy = ce * sy, jz = -se;
+    const double k = 2.5 * speed / (kBallRadius * ce);  // |J| R / I, |J| = m speed / cos(elev)
+    s.vx = speed * sx;
+    s.vy = speed * sy;
+    // (+ 0: a component that cancels is +0, never -0, in the records)
+    s.wx = k * (ry * jz - rz * jy) + 0.0;
+    s.wy = k * (rz * jx - rx * jz) + 0.0;
+    s.wz = k * (rx * jy - ry * jx) + 0.0;
     s.motion = classify(s);
     return s;
 }

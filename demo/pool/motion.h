@@ -27,13 +27,33 @@
 // clamped at 0 (no event) in the others, where wz does not move the ball.
 // Between events each ball's position is therefore exactly quadratic in t.
 //
-// The strike (a level cue, no squirt or swerve): the tip meets the ball at
-// r = R (side e_right + topback z - sqrt(1 - side^2 - topback^2) d), d the
-// aim, e_right = d x z; the impulse J = m v d gives the speed v along d and
-// w = r x J / I = (5 v / 2R) (-topback d_y, topback d_x, side).  So
-// topback = 2/5 rolls at once, 0 slides (stun), < 0 draws; side > 0 (tip
-// right of centre, right english) gives wz > 0: counter-clockwise seen from
-// above, which throws the rebound off a rail to the right.
+// The strike (Leckie & Greenspan's cue model as pooltool codes it, with
+// Alciatore's squirt, technical proof A.31).  The cue, raised by elev above
+// the cloth, points along D = cos(elev) d - sin(elev) z (d the horizontal
+// aim); the tip's offsets side and topback are fractions of R in the plane
+// across the cue, so the tip meets the ball at
+//     r = R (side e_right + topback e_up - sqrt(1 - side^2 - topback^2) D),
+// e_right = d x z, e_up = sin(elev) d + cos(elev) z.  The impulse is
+// J = P D_s, D_s the cue's direction turned about the vertical by the
+// squirt angle a away from the side of the tip (right english squirts the
+// ball left):
+//     tan a = (5/2) s sqrt(1 - s^2) / (1 + m / m_e + (5/2)(1 - s^2)),
+// s = side, m_e the cue's end mass (kCueEndMass): the tip's end mass is
+// pushed aside by the offset contact, and the ball goes the other way
+// (Alciatore, TP A.31; pooltool's squirt model).  The cloth takes the
+// vertical part of J (a reaction through the centre, no moment: pooltool
+// keeps only the horizontal velocity too), so the ball leaves at
+// v = P cos(elev) / m along d turned by a: speed is the cue ball's speed
+// after the strike, P = m speed / cos(elev).  The spin is
+// w = r x J / I.  Level (elev = 0) and without squirt this is
+// w = (5 v / 2R) (-topback d_y, topback d_x, side): topback = 2/5 rolls at
+// once, 0 slides (stun), < 0 draws; side > 0 (tip right of centre, right
+// english) gives wz > 0, counter-clockwise seen from above, which throws
+// the rebound off a rail to the right.  Raised, the cue gives w a
+// horizontal component across the path (from the side offset), so the
+// cloth's slip has a sideways part and the sliding ball curves: swerve, and
+// at large elevation a masse (motion's sliding state already curves it:
+// its friction is constant along the slip u, not along v).
 #ifndef C2D_DEMO_MOTION_H
 #define C2D_DEMO_MOTION_H
 
@@ -96,9 +116,18 @@ void roll(Ball &b);
 // Kinetic energy, rotation included, J.
 double energy(const Ball &b);
 
+// The cue's end mass (kg) that squirt comes from: m / 30, 5.7 g, the end
+// mass of a typical modern shaft in Alciatore's squirt figures (5-15 g).
+constexpr double kCueEndMass = kBallMass / 30;
+
+// The squirt angle (rad, > 0 to the left of the aim) of a tip `side` (a
+// fraction of R) right of centre.
+double squirt_angle(double side);
+
 // The cue ball after a strike along angle_rad at speed v with the tip at
-// (side, topback) fractions of R; position and number kept.
-Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback);
+// (side, topback) fractions of R, the cue raised by elevation_rad;
+// position and number kept.
+Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback, double elevation_rad = 0);
 
 }  // namespace demo
 

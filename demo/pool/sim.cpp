@@ -33,7 +33,7 @@ int cue_index(const std::vector<Ball> &balls) {
 // The strike, and its event.
 Event strike_cue(Engine &engine, int cue, const Shot &shot) {
     const Ball b = strike(engine.balls()[static_cast<size_t>(cue)], shot.angle_deg * (M_PI / 180.0), shot.speed,
-                          shot.side, shot.topback);
+                          shot.side, shot.topback, shot.elevation * (M_PI / 180.0));
     engine.set_motion(cue, b);
     return Event{engine.now(), EventKind::Strike, cue, -1, -1, b.x, b.y, b.vx, b.vy, b.wx, b.wy, b.wz,
                  kBallMass * shot.speed};

@@ -28,7 +28,12 @@ struct Shot {
     double speed;        // m/s: the cue ball's speed just after the strike
     double side = 0;     // tip right (+, right english) or left (-) of centre, fraction of R
     double topback = 0;  // tip above (+, follow) or below (-, draw) centre, fraction of R
+    double elevation = 0;  // the cue's elevation above the cloth, degrees in [0, kMaxElevation]
 };
+
+// A cue raised further than this hits the ball almost straight down (a
+// masse's 80-85 degrees is the steepest players use).
+constexpr double kMaxElevation = 85.0;
 
 // Further off centre than about half a radius a chalked tip slips off the
 // ball (a miscue; Alciatore's measurements put the limit near 0.5 R).
@@ -47,14 +52,19 @@ constexpr double kMaxShotSpeed = 15.0;  // Box2D moves at most 2 units/step: 15 
 //                    that dies in a third of the time
 //   ball     e 0.95 (measured 0.92-0.98), mu 0.05 (0.03-0.08), beta 0: the
 //                    contact points stop relative to each other when the
-//                    impulse sticks (pooltool's frictional-inelastic model)
-//   cushion  e 0.8 (measured 0.6-0.9), mu 0.2, beta 0
+//                    impulse sticks (pooltool's frictional-inelastic model);
+//                    ContactModel::SphereAlciatore: mu(v) of the sliding speed
+//                    instead (sphere_contact.h)
+//   cushion  e 0.8 (measured 0.6-0.9), mu 0.2, beta 0; the nose 0.64 D =
+//                    1.28 R above the cloth (Mathavan et al. 2010 give
+//                    0.635 D for a standard table; 0.64 D is the figure of
+//                    the pooltool runs of issue 21, kept for like-for-like
+//                    comparison; docs/POOL.md)
 //   contacts approaching slower than 5 mm/s are absorbed (model.h)
-// Simplification (2-D contact): impacts are between disks in the plane of
-// the balls' centres, so only the horizontal slip at the contact point
-// (which includes R wz) sees friction; wx and wy, and the cushion's height
-// above the centre, do not enter an impact (real cushions also change
-// top and back spin; real ball-ball throw is smaller for a rolling ball).
+// Impacts are between spheres (ContactModel::Sphere, sphere_contact.h): the
+// full 3-D slip sees friction, and the cushion touches the ball above its
+// centre.  ContactModel::Disk keeps the former disks in the plane of the centres
+// for comparison (only the horizontal slip, R wz included, sees friction).
 constexpr Model kPoolModel = {true, {9.81, 0.2, 0.01, 0.0127}, {0.95, 0.05, 0.0}, {0.8, 0.2, 0.0}, 0.005};
 // The elastic, gas and cradle scenes: no losses at all, so kinetic energy checks
 // the engine.
@@ -75,9 +85,12 @@ struct SimConfig {
     // 8-ball; the gas and the cradle use the world's cells): world_engine.h
     WorldBroadphase broadphase = WorldBroadphase::Tree;
     // The scene with the physics that goes with it.
+    // (The contact model chosen is kept: it only matters with friction.)
     void set_scene(Scene s) {
         scene = s;
+        const ContactModel contact = model.contact;
         model = s == Scene::Break ? kPoolModel : kFrictionless;
+        model.contact = contact;
     }
 };
 

@@ -8,11 +8,10 @@
 // track's end (slide -> roll -> stop), set again whenever the motion
 // changes.  Contacts are resolved by the world's built-in rule in the
 // frictionless scenes (c2d_collide, a wall's normal negated) and by the
-// pool model here (the world's resolvers): c2d_collide_rough between balls
-// (disk spin = wz), c2d_collide_rough_normal against a cushion face or jaw
-// facing (an immovable wall), c2d_collide_rough against a jaw's nose (an
-// immovable disk), each with the world's effective restitution (its
-// collapse rule).  Contacts approaching slower than Model::absorb_below are
+// pool model here (the world's resolvers): sphere_contact.h's ball-ball,
+// face (cushion or jaw facing) and nose impacts in the run's contact model
+// (spheres with 3-D spin by default), each with the world's effective
+// restitution (its collapse rule).  Contacts approaching slower than Model::absorb_below are
 // absorbed rather than bounced (model.h): the velocities become the nearest
 // that approach nothing a ball touches, and pairs that their accelerations
 // press together end their slides or move on as one (on_event, which may
@@ -45,6 +44,7 @@
 
 #include "pool/broadphase.h"
 #include "pool/slow_contact.h"
+#include "pool/sphere_contact.h"
 
 extern "C" {
 #include "collide2d_world.h"
@@ -71,16 +71,6 @@ bool is_closed_box(const Table &table) {
     return table.pockets.empty() && c.size() == 4 && c[0].ay == 0 && c[0].by == 0 && c[1].ay == table.width &&
            c[2].ax == 0 && c[2].bx == 0 && c[3].ax == table.length;
 }
-
-c2d_surface surface_of(const Surface &s, double restitution) {
-    return c2d_surface{restitution, s.friction, s.tangential_restitution};
-}
-
-c2d_disk disk_of(const Ball &b) {
-    return c2d_disk{{b.x, b.y}, {b.vx, b.vy}, b.wz, kBallMass, kBallRadius, kBallInertia};
-}
-
-c2d_disk fixed_disk(double x, double y, double r) { return c2d_disk{{x, y}, {0, 0}, 0, INFINITY, r, INFINITY}; }
 
 // A static of the world, as the table knows it.
 struct Feature {
@@ -400,14 +390,12 @@ c2d_status WorldEngine::resolve_pair(const c2d_world_contact &c, c2d_body &a, c2
         r.after_a = absorbed(ia, c.time, sa, ib, &sb);
         r.after_b = absorbed(ib, c.time, sb, ia, &r.after_a);
     } else {
-        c2d_disk da = disk_of(sa), db = disk_of(sb);
-        if (c2d_collide_rough(&da, &db, surface_of(model_.ball, c.restitution)) != C2D_OK) {
+        r.after_a = sa, r.after_b = sb;
+        if (!collide_balls(model_, c.restitution, r.after_a, r.after_b)) {
+            r.after_a = r.after_b = Ball{};
             resolved_ = r;  // a graze: the world's own rule, no spin changed
             return C2D_INVALID;
         }
-        r.after_a = sa, r.after_b = sb;
-        r.after_a.vx = da.vel.x, r.after_a.vy = da.vel.y, r.after_a.wz = da.spin;
-        r.after_b.vx = db.vel.x, r.after_b.vy = db.vel.y, r.after_b.wz = db.spin;
         r.after_a.motion = motion_of(r.after_a);
         r.after_b.motion = motion_of(r.after_b);
     }
@@ -431,22 +419,13 @@ c2d_status WorldEngine::resolve_fixed(const c2d_world_contact &c, c2d_body &a) {
         r.absorbed = true;
         r.after_a = absorbed(i, c.time, sa, -1, nullptr);
     } else {
-        c2d_disk da = disk_of(sa);
-        const c2d_surface s = surface_of(model_.cushion, c.restitution);
-        c2d_status status;
-        if (f.nose) {
-            c2d_disk nose = fixed_disk(f.x, f.y, f.r);
-            status = c2d_collide_rough(&da, &nose, s);
-        } else {
-            c2d_disk wall = fixed_disk(sa.x + nx * kBallRadius, sa.y + ny * kBallRadius, 0);
-            status = c2d_collide_rough_normal(&da, &wall, c2d_vec2{nx, ny}, s);
-        }
-        if (status != C2D_OK) {
+        r.after_a = sa;
+        if (!(f.nose ? collide_nose(model_, c.restitution, r.after_a, f.x, f.y, f.r)
+                     : collide_face(model_, c.restitution, r.after_a, nx, ny))) {
+            r.after_a = Ball{};
             resolved_ = r;  // a graze: the world's own rule, no spin changed
             return C2D_INVALID;
         }
-        r.after_a = sa;
-        r.after_a.vx = da.vel.x, r.after_a.vy = da.vel.y, r.after_a.wz = da.spin;
     }
     r.after_a.motion = motion_of(r.after_a);
     a.vel = c2d_vec2{r.after_a.vx, r.after_a.vy};

@@ -128,6 +128,14 @@ bad stray-argument
 bad --shot 0,2,0.1
 bad --shot 0,2,0.4,0.4
 bad --shot 0,2,0.5,x
+bad --shot 0,2,0,0,-5
+bad --shot 0,2,0,0,86
+bad --shot 0,2,0,0,nan
+bad --shot 0,2,0,0,x
+bad --shot 0,2,0,0,10,1
+bad --model cylinder
+bad --model
+bad --model sphere --model disk
 bad --place 1,2
 bad --place 16,1,0.6
 bad --place 0,3,0.6
@@ -277,6 +285,14 @@ check "no display: our message first, none from SDL" $?
 # --- --seconds is honoured up to the 86400 the help allows (no hidden cap)
 "$BIN" --headless --place 0,1,0.6 --seconds 7300 --json > "$TMP/long.json"
 [ "$(json_get "$TMP/long.json" steps)" = 438000 ]; check "--seconds 7300 runs 438000 frames" $?
+
+# --- --model and the cue's elevation: each model by name in the JSON; the
+# elevated shot runs; the disk model's straight draw is the former contact's
+for m in sphere sphere-alciatore disk; do
+    "$BIN" --headless --model $m --place 0,0.8,0.635 --place 1,1.3,0.635 --shot 0,2,0,-0.5,30 --json > "$TMP/model.json" &&
+        grep -q "\"contact_model\":\"$m\"" "$TMP/model.json"
+    check "--model $m: named in the JSON, an elevated draw shot runs" $?
+done
 
 # --- --place, --shot with spin, --events, the JSON model and final state
 "$BIN" --headless --place 0,0.1,0.635 --shot 0,0.5 --events "$TMP/slide.csv" --json > "$TMP/slide.json"

@@ -10,7 +10,16 @@
 //             and tangential components (derived below)
 //   30 deg    a rolling ball's final direction after a cut
 //   draw, follow   straight shots come back and go through
+//   throw     a rolling cue ball's throw against cut angle: atan(mu(v) sin t)
+//             (constant mu and Alciatore's mu(v))
+//   roll-out  draw, stun and follow: the cue ball's roll-out velocity and
+//             where it starts rolling, in closed form
+//   rails     rolling into a rail at 20-70 degrees with reverse, no and
+//             running english: Han 2005's rebound and the path once rolling
+//   swerve    squirt (TP A.31) and the curve of an elevated cue's shot
 //   english   left and right english mirror each other off a rail
+// The sphere contact's figures come from the impacts solved by hand with
+// 3-vectors below (hit_balls, hit_rail, rolls_at), not from the library.
 //   random    1,000 random tables (every fourth a full rack) and shots
 //             (angles, speeds up to 12 m/s, tips): nothing tunnels or escapes, no
 //             overlap deeper than 1e-9 of a diameter, energy (rotation
@@ -24,6 +33,7 @@
 #include <vector>
 
 #include "pool/sim.h"
+#include "pool/sphere_contact.h"
 #include "tests/check.h"
 
 namespace {
@@ -84,7 +94,8 @@ void slide_and_roll(const SimConfig &c) {
 }
 
 // The cue ball's velocity right after the impact with an object ball at
-// rest (2-D rough contact, c2d_collide_rough): normal impulse Jn = m (1 + e)
+// rest, neither spinning (so the sphere contact's slip is horizontal and it
+// is the 2-D rough contact of c2d_collide_rough): normal impulse Jn = m (1 + e)
 // v cos(t) / 2; the contact points' tangential slip gt = v sin(t) (no z
 // spin), stopped by Jt = m gt / 7 (1/m_t = 2/m + 2 R^2 / I = 7/m, beta = 0)
 // unless that exceeds mu Jn.  n = line of centres at angle -t from the
@@ -137,17 +148,93 @@ void stun(const SimConfig &c) {
     }
 }
 
+// --- the sphere contact, solved by hand -----------------------------------------
+// Independent of the library's component formulas: the impact written with
+// 3-vectors from its physics (Alciatore TP A.14 for ball-ball, Han 2005 for
+// the rail), x, y the cloth, z up, per unit mass (m = 1, I = 2/5 R^2):
+//   an impulse P at r from the centre:  v += P,  w += r x P / I;
+//   the normal impulse from Newton's restitution on the contact's approach;
+//   friction against the tangential slip S of the contact points, of size
+//   min(mu Pn, |S| / A), A = the contact's tangential inverse mass (a free
+//   sphere's contact point: 1 + R^2 / I = 7/2 per ball, the same in every
+//   tangential direction, so S keeps its direction while it slides);
+//   then the cloth takes the vertical velocity (a reaction through the
+//   centre, no moment).
+struct V3 {
+    double x, y, z;
+};
+V3 operator+(const V3 &a, const V3 &b) { return V3{a.x + b.x, a.y + b.y, a.z + b.z}; }
+V3 operator-(const V3 &a, const V3 &b) { return V3{a.x - b.x, a.y - b.y, a.z - b.z}; }
+V3 operator*(double k, const V3 &a) { return V3{k * a.x, k * a.y, k * a.z}; }
+double dot(const V3 &a, const V3 &b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+V3 cross(const V3 &a, const V3 &b) { return V3{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double norm(const V3 &a) { return std::sqrt(dot(a, a)); }
+
+struct Moving {
+    V3 v, w;
+};
+
+constexpr double kInertiaPerMass = 0.4 * kBallRadius * kBallRadius;
+
+// An impulse P (per unit mass) at r from the centre, then the cloth.
+void push(Moving &b, const V3 &r, const V3 &p) {
+    b.v = b.v + p;
+    b.v.z = 0;
+    b.w = b.w + (1 / kInertiaPerMass) * cross(r, p);
+}
+
+// Ball-ball friction of sliding speed s: mu + boost exp(-decay s).
+struct Friction {
+    double mu, boost, decay;
+    double at(double s) const { return mu + boost * std::exp(-decay * s); }
+};
+
+// Ball a hits ball b, the normal n from a to b (horizontal, unit).
+void hit_balls(Moving &a, Moving &b, const V3 &n, double e, const Friction &f) {
+    const V3 ra = kBallRadius * n, rb = -1.0 * ra;
+    const V3 g = (b.v + cross(b.w, rb)) - (a.v + cross(a.w, ra));  // b's contact point past a's
+    const double pn = (1 + e) * -dot(g, n) / 2;                     // 1/m_n = 2
+    const V3 slip = g - dot(g, n) * n;
+    const double s = norm(slip), lambda = s > 0 ? std::fmin(f.at(s) * pn, s / 7) : 0;  // A = 2 (7/2)
+    const V3 on_b = pn * n - (s > 0 ? lambda / s : 0) * slip;
+    push(b, rb, on_b);
+    push(a, ra, -1.0 * on_b);
+}
+
+// A ball hits a rail whose nose is h above the cloth; n horizontal, from
+// the ball to the rail (Han 2005: the contact at R nu, nu = cos th n +
+// sin th z, sin th = h / R - 1).
+void hit_rail(Moving &b, const V3 &n, double h, double e, double mu) {
+    const double sn = h / kBallRadius - 1, cs = std::sqrt(1 - sn * sn);
+    const V3 nu = cs * n + sn * V3{0, 0, 1}, r = kBallRadius * nu;
+    const double pn = (1 + e) * dot(b.v, nu);  // inverse mass 1 along nu (r x nu = 0)
+    const V3 c = b.v + cross(b.w, r);
+    const V3 slip = c - dot(c, nu) * nu;
+    const double s = norm(slip), lambda = s > 0 ? std::fmin(mu * pn, s / 3.5) : 0;  // A = 7/2
+    push(b, r, -pn * nu - (s > 0 ? lambda / s : 0) * slip);
+}
+
+// The velocity a sliding ball rolls at: its cloth slip u = v + w x (-R z)
+// keeps its direction while friction acts (motion.h), and v changes by
+// -(2/7) u0 by then (du/dt = (7/2) dv/dt).
+V3 rolls_at(const Moving &b) {
+    const V3 u = b.v + cross(b.w, V3{0, 0, -kBallRadius});
+    return b.v - (2.0 / 7) * V3{u.x, u.y, 0};
+}
+
 // --- the 30-degree rule -------------------------------------------------------
-// A rolling cue ball (w_xy = (0, v/R)) cut at t leaves with v' (after_impact)
-// and keeps its topspin, then slides until u = 0: the final velocity is
-// v' - (2/7) u0, u0 = v' - v x: v_f = (5/7) v' + (2/7) v x.  With mu = 0 that
-// is v_f = v sin(t) t^ + k v cos(t) n^, k = (5 (1 - e)/2 + 2) / 7 =
+// A rolling cue ball (w_xy = (0, v/R)) cut at t: hit_balls, then it slides
+// until it rolls again (rolls_at).  With mu = 0 the top spin stays and
+// v_f = v sin(t) t^ + k v cos(t) n^, k = (5 (1 - e)/2 + 2) / 7 =
 // (9 - 5e)/14, so tan(deflection) = (1 - k) sin t cos t / (sin^2 t + k cos^2 t),
 // which for e = 1 (k = 2/7) is the textbook sin t cos t / (sin^2 t + 2/5).
+// With friction the vertical slip from the top spin takes some of it away
+// at the impact (the sphere model), and the cue ball turns further.
 double deflection(double cut, double e, double mu) {
-    double vx, vy;
-    after_impact(1, cut, e, mu, vx, vy);
-    return degrees(std::atan2(5.0 / 7 * vy, 5.0 / 7 * vx + 2.0 / 7));
+    Moving a{{1, 0, 0}, {0, 1 / kBallRadius, 0}}, b{{0, 0, 0}, {0, 0, 0}};
+    hit_balls(a, b, V3{std::cos(cut), -std::sin(cut), 0}, e, Friction{mu, 0, 0});
+    const V3 f = rolls_at(a);
+    return degrees(std::atan2(f.y, f.x));
 }
 
 void thirty_degree_rule(const SimConfig &c) {
@@ -190,6 +277,190 @@ void draw_and_follow(const SimConfig &c) {
         else
             check(hit && final_x > object_x + 0.1 && o.balls[0].y == y, "follow: the cue ball goes through");
     }
+}
+
+// --- throw: a rolling cue ball against cut angle ------------------------------
+// The object ball leaves the line of centres by the throw angle.  For a
+// rolling cue ball (no wz) the slip of the contact points has a horizontal
+// part v sin(t) (the cue ball's tangential velocity) and a vertical part
+// v cos(t) (its topspin, R w = v): |S| = v whatever the cut.  The ball
+// slides all through the impact when mu Pn < |S| / 7, Pn = (1 + e) v cos(t) / 2,
+// i.e. cos(t) < 2 / (7 mu (1 + e)) (always, for mu < 0.14): the friction
+// mu Pn along S^ has the horizontal part mu Pn sin(t), so
+//     tan(throw) = mu(v) sin(t),
+// mu(v) the friction at sliding speed v (Alciatore TP A.14's throw with
+// the vertical slip; constant mu, or a + b exp(-c v)).  A stun ball (|S| =
+// v sin t, no vertical part) throws by atan(mu) instead, a rolling one far
+// less at small cuts.  Checked: the engine's object ball after the impact
+// against hit_balls, and hit_balls against the closed form.
+void throw_angles(const SimConfig &c, const char *name, const Friction &f) {
+    const double v = 2.0, e = c.model.ball.restitution;
+    int ran = 0;
+    for (double deg : {10.0, 15.0, 20.0, 30.0, 40.0, 45.0, 50.0, 60.0, 70.0}) {
+        const double cut = deg * M_PI / 180;
+        const ShotOutcome o = cut_shot(c, v, cut, 0, v / kBallRadius);
+        const Event *hit = first(o, EventKind::BallBall, 1);
+        const Event *roll = hit ? first(o, EventKind::SlideToRoll, 1, hit->t) : nullptr;
+        Moving a{{v, 0, 0}, {0, v / kBallRadius, 0}}, b{{0, 0, 0}, {0, 0, 0}};
+        hit_balls(a, b, V3{std::cos(cut), -std::sin(cut), 0}, e, f);
+        const V3 later = rolls_at(b);
+        const double measured = hit ? degrees(std::atan2(hit->vy, hit->vx)) + deg : NAN;
+        const double by_hand = degrees(std::atan2(b.v.y, b.v.x)) + deg;
+        const double closed = degrees(std::atan(f.at(v) * std::sin(cut)));
+        const double rolled = roll ? degrees(std::atan2(roll->vy, roll->vx)) + deg : NAN;
+        std::printf("    %s, cut %2.0f deg: throw %.4f deg (hand %.4f, closed form %.4f); once the object ball "
+                    "rolls %.4f (hand %.4f)\n",
+                    name, deg, measured, by_hand, closed, rolled, degrees(std::atan2(later.y, later.x)) + deg);
+        check(std::fabs(measured - by_hand) < 1e-9 && std::fabs(by_hand - closed) < 1e-9 &&
+                  std::fabs(rolled - (degrees(std::atan2(later.y, later.x)) + deg)) < 1e-9,
+              std::string("rolling-ball throw, ") + name + ", cut " + std::to_string(static_cast<int>(deg)) +
+                  " deg: atan(mu(v) sin t)");
+        ++ran;
+    }
+    check(ran == 9, "throw: all 9 cuts ran");
+}
+
+// --- draw, stun and follow: the cue ball's roll-out -------------------------------
+// A straight shot (tip topback T of R, level, speed v0) at an object ball
+// at rest a distance L (centres' gap less D) ahead.  By hand:
+//   strike   R wy0 = (5/2) v0 T (motion.h); the cloth slip u0 = v0 - R wy0
+//   cloth    sliding, a = -mu_s g sign(u0), R wy changes by -(5/2) a t, until
+//            t_r = 2 |u0| / (7 mu_s g); then rolling at v0 - (2/7) u0 with
+//            -mu_r g.  Impact at the first time the path reaches L.
+//   impact   head on, n = x: the cue's contact slip is vertical, R wy_i;
+//            Pn = (1 + e) v_i / 2, friction lambda = min(mu Pn, |R wy_i| / 7)
+//            takes back spin or top spin away: R wy' = R wy_i - (5/2) lambda
+//            sign(wy_i); the cue keeps v' = (1 - e) v_i / 2.
+//   roll-out v_f = (5/7) v' + (2/7) R wy'  (rolls_at), reached after sliding
+//            x' = v' t' + a' t'^2 / 2, t' = 2 |v' - R wy'| / (7 mu_s g).
+// The disk model never changes wy at the impact (lambda = 0 for the vertical
+// slip): its draw comes back 5/2 lambda (2/7) faster.
+void roll_out(const SimConfig &c) {
+    const double v0 = 2.0, y = 0.635, cue_x = 0.8, object_x = 1.3, L = object_x - cue_x - kBallDiameter;
+    const double e = c.model.ball.restitution, mu = c.model.ball.friction;
+    const double mu_s = c.model.cloth.slide, mu_r = c.model.cloth.roll, g = c.model.cloth.gravity;
+    int ran = 0;
+    for (double topback : {-0.5, -0.25, 0.0, 0.25, 0.5}) {
+        const ShotOutcome o = demo::simulate_shot(c, {ball(0, cue_x, y), ball(1, object_x, y)}, Shot{0, v0, 0, topback});
+        const Event *hit = first(o, EventKind::BallBall, 0);
+        const Event *roll = hit ? first(o, EventKind::SlideToRoll, 0, hit->t) : nullptr;
+        // the approach
+        const double u0 = v0 - 2.5 * v0 * topback, a = -mu_s * g * (u0 > 0 ? 1 : -1);
+        const double t_r = 2 * std::fabs(u0) / (7 * mu_s * g), x_r = v0 * t_r + 0.5 * a * t_r * t_r;
+        double vi, rwi;
+        if (x_r >= L) {
+            const double t = (-v0 + std::sqrt(v0 * v0 + 2 * a * L)) / a;
+            vi = v0 + a * t;
+            rwi = 2.5 * v0 * topback - 2.5 * a * t;
+        } else {
+            const double vr = v0 - 2.0 / 7 * u0;
+            vi = rwi = std::sqrt(vr * vr - 2 * mu_r * g * (L - x_r));
+        }
+        // the impact and the slide after it
+        const double pn = (1 + e) * vi / 2, lambda = std::fmin(mu * pn, std::fabs(rwi) / 7);
+        const double v1 = (1 - e) * vi / 2, rw1 = rwi - 2.5 * lambda * (rwi > 0 ? 1 : -1);
+        const double vf = 5.0 / 7 * v1 + 2.0 / 7 * rw1, u1 = v1 - rw1;
+        const double t1 = 2 * std::fabs(u1) / (7 * mu_s * g), a1 = -mu_s * g * (u1 > 0 ? 1 : -1);
+        const double x1 = v1 * t1 + 0.5 * a1 * t1 * t1, run = std::copysign(vf * vf / (2 * mu_r * g), vf);
+        std::printf("    tip %+.2f R at %.0f m/s: impact at %.6f m/s, R wy %+.6f; rolls out at %+.6f m/s (hand %+.6f) "
+                    "%+.6f m past the impact (hand %+.6f); then %+.4f m rolling: draw/follow %+.4f m\n",
+                    topback, v0, vi, rwi, roll ? roll->vx : NAN, vf, roll && hit ? roll->x - hit->x : NAN, x1, run,
+                    x1 + run);
+        check(hit && roll && std::fabs(roll->vx - vf) < 1e-9 && std::fabs(roll->x - hit->x - x1) < 1e-9 &&
+                  roll->vy == 0,
+              "tip " + std::to_string(topback).substr(0, 5) +
+                  " R straight shot: the cue ball's roll-out velocity and where it starts rolling, by hand");
+        ++ran;
+    }
+    check(ran == 5, "roll-out: all 5 tips ran");
+}
+
+// --- rail rebound: rolling into a cushion, with english ---------------------------
+// A ball rolling at v into the foot rail (normal +x) at angle th from the
+// normal, with wz (running english: the spin a ball rolling along the rail
+// would have, wz < 0 here; reverse: wz > 0), starting 1 cm from it.  By
+// hand: the rolling approach (decelerating at mu_r g, wz decaying at the
+// spinning rate), hit_rail (Han 2005 at the model's nose height), and the
+// angle from the normal once the ball rolls again (rolls_at).
+void rails(const SimConfig &c) {
+    const double v = 1.5, gap = 0.01, h = c.model.cushion_height, e = c.model.cushion.restitution;
+    const double mu = c.model.cushion.friction, g = c.model.cloth.gravity, rate = c.model.cloth.spin_deceleration();
+    const double wz_english = 2.5 * v / kBallRadius * 0.3;  // a tip 0.3 R off centre at this speed
+    int ran = 0;
+    for (double deg : {20.0, 30.0, 40.0, 50.0, 60.0, 70.0}) {
+        for (int way = -1; way <= 1; ++way) {  // english: reverse, none, running
+            const double th = deg * M_PI / 180, wz0 = -way * wz_english;
+            const double dx = std::cos(th), dy = std::sin(th);
+            Ball b = ball(0, c.table.length - kBallRadius - gap, 0.3);
+            b.vx = v * dx, b.vy = v * dy, b.wx = -b.vy / kBallRadius, b.wy = b.vx / kBallRadius, b.wz = wz0;
+            const ShotOutcome o = demo::simulate_to_rest(c, {b});
+            const Event *hit = first(o, EventKind::Cushion, 0);
+            const Event *roll = hit ? first(o, EventKind::SlideToRoll, 0, hit->t) : nullptr;
+            const double path = gap / dx, dec = c.model.cloth.roll * g;
+            const double t = (v - std::sqrt(v * v - 2 * dec * path)) / dec, vi = v - dec * t;
+            const double wzi = std::copysign(std::fmax(0.0, std::fabs(wz0) - rate * t), wz0);
+            Moving m{{vi * dx, vi * dy, 0}, {-vi * dy / kBallRadius, vi * dx / kBallRadius, wzi}};
+            hit_rail(m, V3{1, 0, 0}, h, e, mu);
+            const V3 f = rolls_at(m);
+            const double measured = roll ? degrees(std::atan2(roll->vy, -roll->vx)) : NAN;
+            const double by_hand = degrees(std::atan2(f.y, -f.x));
+            const char *kind = way < 0 ? "reverse" : way > 0 ? "running" : "none";
+            std::printf("    %2.0f deg, english %-7s: rebounds at (%+.6f, %+.6f) m/s (hand (%+.6f, %+.6f)); rolling "
+                        "again at %.4f deg from the normal (hand %.4f), %.4f m/s\n",
+                        deg, kind, hit ? hit->vx : NAN, hit ? hit->vy : NAN, m.v.x, m.v.y, measured, by_hand,
+                        roll ? std::hypot(roll->vx, roll->vy) : NAN);
+            check(hit && roll && std::fabs(hit->vx - m.v.x) < 1e-9 && std::fabs(hit->vy - m.v.y) < 1e-9 &&
+                      std::fabs(measured - by_hand) < 1e-9,
+                  "rolling into the rail at " + std::to_string(static_cast<int>(deg)) + " deg, english " + kind +
+                      ": Han 2005's rebound and the path once rolling, by hand");
+            ++ran;
+        }
+    }
+    check(ran == 18, "rails: all 18 shots ran");
+}
+
+// --- squirt, swerve and masse ---------------------------------------------------
+// The strike by hand, with 3-vectors: the cue along D = cos(elev) x -
+// sin(elev) z (aimed at +x), the tip at r = R (side e_right + topback e_up -
+// sqrt(1 - side^2 - topback^2) D), e_right = -y, e_up = sin(elev) x +
+// cos(elev) z; the impulse along D turned left about z by the squirt angle
+// atan((5/2) s sqrt(1 - s^2) / (1 + m/m_e + (5/2)(1 - s^2))) (Alciatore TP
+// A.31, m_e = m/30), its size m speed / cos(elev) (the cloth takes the
+// vertical part); w = r x J / I.  Level, the ball leaves squirted and goes
+// straight on (w's horizontal part along v); raised, the side offset puts a
+// spin across the path, the cloth's slip gets a sideways part and the ball
+// curves towards the side of the tip (swerve; at 60 degrees and more a
+// masse) until it rolls along rolls_at.
+void swerve(const SimConfig &c) {
+    const double v = 1.0, me = demo::kBallMass / 30;
+    int ran = 0;
+    for (double elev : {0.0, 15.0, 30.0, 60.0}) {
+        for (double side : {-0.3, 0.3}) {
+            const double th = elev * M_PI / 180, topback = -0.1, cc = std::sqrt(1 - side * side - topback * topback);
+            const V3 d{std::cos(th), 0, -std::sin(th)}, right{0, -1, 0}, up{std::sin(th), 0, std::cos(th)};
+            const V3 r = kBallRadius * (side * right + topback * up - cc * d);
+            const double a = std::atan(2.5 * side * std::sqrt(1 - side * side) /
+                                       (1 + demo::kBallMass / me + 2.5 * (1 - side * side)));
+            const V3 j = (v / std::cos(th)) * V3{std::cos(th) * std::cos(a), std::cos(th) * std::sin(a), -std::sin(th)};
+            Moving m{{j.x, j.y, 0}, (1 / kInertiaPerMass) * cross(r, j)};
+            const V3 f = rolls_at(m);
+            const ShotOutcome o = demo::simulate_shot(c, {ball(0, 0.5, 0.635)}, Shot{0, v, side, topback, elev});
+            const Event *strike = first(o, EventKind::Strike, 0), *roll = first(o, EventKind::SlideToRoll, 0);
+            const double leaves = strike ? degrees(std::atan2(strike->vy, strike->vx)) : NAN;
+            const double rolls = roll ? degrees(std::atan2(roll->vy, roll->vx)) : NAN;
+            const double hand = degrees(std::atan2(f.y, f.x));
+            std::printf("    cue %2.0f deg up, tip %+.1f R side: leaves at %+.4f deg (squirt %+.4f), rolls on at %+.4f "
+                        "deg (hand %+.4f)\n",
+                        elev, side, leaves, degrees(a), rolls, hand);
+            // curving towards the tip's side: right (-y, a smaller angle) for side > 0
+            const bool curves = elev == 0 ? std::fabs(rolls - leaves) < 1e-9 : (rolls - leaves) * side < 0;
+            check(std::fabs(leaves - degrees(a)) < 1e-9 && std::fabs(rolls - hand) < 1e-9 && curves,
+                  "cue " + std::to_string(static_cast<int>(elev)) + " deg up, side " + std::to_string(side).substr(0, 4) +
+                      ": squirt (TP A.31), then " + (elev == 0 ? "straight" : "curving to the tip's side"));
+            ++ran;
+        }
+    }
+    check(ran == 8, "swerve: all 8 strikes ran");
 }
 
 // --- english off a rail ---------------------------------------------------------
@@ -334,6 +605,18 @@ int main(int argc, char **argv) {
     thirty_degree_rule(c);
     std::printf("# draw and follow\n");
     draw_and_follow(c);
+    std::printf("# throw of a rolling cue ball\n");
+    throw_angles(c, "constant mu", Friction{c.model.ball.friction, 0, 0});
+    SimConfig alciatore = c;
+    alciatore.model.contact = demo::ContactModel::SphereAlciatore;
+    throw_angles(alciatore, "Alciatore mu(v)",
+                 Friction{demo::kAlciatoreA, demo::kAlciatoreB, demo::kAlciatoreC});
+    std::printf("# draw, stun and follow: the roll-out\n");
+    roll_out(c);
+    std::printf("# rolling into a rail, with and without english\n");
+    rails(c);
+    std::printf("# squirt, swerve and masse\n");
+    swerve(c);
     std::printf("# english off a rail\n");
     english(c);
     std::printf("# integrity\n");
