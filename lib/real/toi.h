@@ -124,12 +124,149 @@ static int c2d_toi_parts(c2d_ext *parts, c2d_acc *acc)
     return n;
 }
 
+/* When the exact components of R^2 |v|^2 - (d x v)^2 do not fit the
+ * accumulator (inputs whose exact differences scatter over many exponent
+ * ranges: two thirds of the exact path's cases in the magnitude-ratio
+ * tests), the same windowed exact sum (real/arith/exact.h) is taken with
+ * the terms generated again on each pass instead of stored, in bounded
+ * memory.  (The value formed from the rounded factors that stood here kept
+ * the sign of those cases but lost a near graze's, 1 + 2^-367 against
+ * speeds of 73 and 2^-62 + 2^-911: found by the fuzzer.)
+ *   - a pass finds the largest atom not yet summed, at 2^emax, and sums
+ *     exactly every atom within C2D_R_WINDOW binades of it, scaled by
+ *     2^-emax, in bins (below); if that sum dominates the atoms left by
+ *     2^C2D_R_MARGIN, it is the value, as in c2d_exact_sum; otherwise its
+ *     exact components are carried into the next pass;
+ *   - a carried sum has cancelled by at least 2^(WINDOW - MARGIN), so its
+ *     components lie within MARGIN + MANT + 11 binades of the window's
+ *     foot, all inside the next window (WINDOW > MARGIN + MANT + 11 in both
+ *     formats): at most one window's components are carried at a time.
+ * BINS.  A scaled atom is a multiple of q = 2^-(WINDOW + MANT) below 2
+ * (its exponent within WINDOW of emax, its significand MANT + 1 bits).
+ * Bin j holds multiples of q 2^(jB), B = MANT / 2: an atom is split from
+ * the top bin down by x_j = fl(fl(s_j + x) - s_j), s_j = 1.5 2^(jB - WINDOW)
+ * (x rounded to a multiple of bin j's quantum, exact since |x| < 2^(jB -
+ * WINDOW + MANT - 1)), the remainder going lower.  At most 2 C2D_TOI_TERMS
+ * atoms and one window's carry (25 components), under 2^9 numbers each
+ * below 2, are added: each bin holds under 2^(10 + B) of its quanta and the
+ * top one under 2^(MANT + 1), so every addition is exact.  The bins, exact floating numbers, are then grown
+ * into one nonoverlapping expansion (real/arith/exact.h). */
+enum { C2D_TOI_TERMS = 2 * C2D_TOI_PARTS + C2D_TOI_PARTS * (C2D_TOI_PARTS + 1) / 2 }; /* products, at most */
+
+/* The products summed: R^2 (two parts) times each component of |v|^2, then
+ * minus each square and twice each cross product of d x v's components. */
+typedef struct c2d_toi_terms {
+    const c2d_ext *r2, *vv, *cr;
+    int nv, nc;
+} c2d_toi_terms;
+
+/* Term t's exact product as two atoms (hi and lo, signed, normalised). */
+static void c2d_toi_term(const c2d_toi_terms *q, int t, c2d_ext atom[2])
+{
+    c2d_ext x, y;
+    c2d_real hi, lo;
+    int j = t - 2 * q->nv;
+    if (j < 0) {
+        int row = 0, col = t; /* no division: a helper call on small cores */
+        if (col >= q->nv) {
+            row = 1;
+            col -= q->nv;
+        }
+        c2d_ext_copy(&x, &q->r2[row]);
+        c2d_ext_copy(&y, &q->vv[col]);
+    } else {
+        int i = 0;
+        while (j > i) { /* row i of the triangle holds j = 0..i */
+            j -= i + 1;
+            i++;
+        }
+        c2d_ext_set(&x, -q->cr[i].m, q->cr[i].e + (j < i ? 1 : 0));
+        c2d_ext_copy(&y, &q->cr[j]);
+    }
+    hi = c2d_two_prod(x.m, y.m, &lo);
+    c2d_ext_set(&atom[0], hi, x.e + y.e);
+    c2d_ext_set(&atom[1], lo, x.e + y.e);
+}
+
+/* Add x (a multiple of q, |x| < 2) to the bins exactly. */
+static void c2d_toi_bin_add(c2d_real *bin, int nbins, c2d_real x)
+{
+    const int width = C2D_R_MANT / 2;
+    c2d_real rest = x;
+    int j;
+    for (j = nbins - 1; j > 0; j--) {
+        const c2d_real s = c2d_pow2(j * width - C2D_R_WINDOW) + c2d_pow2(j * width - C2D_R_WINDOW - 1);
+        const c2d_real part = (s + rest) - s;
+        bin[j] += part;
+        rest -= part;
+    }
+    bin[0] += rest;
+}
+
+/* Whether atom a is still to be summed (below the last window's foot). */
+static int c2d_toi_pending(const c2d_ext *a, int below, int foot) { return a->m != 0 && (below == 0 || a->e < foot); }
+
+/* r = the exact sum of q's terms, as c2d_exact_sum rounds it; carry is
+ * scratch for C2D_ATOMS extended numbers (the spent accumulator's). */
+static void c2d_toi_disc_streamed(c2d_ext *r, const c2d_toi_terms *q, c2d_ext *carry)
+{
+    enum { C2D_BINS = (C2D_R_WINDOW + 9) / (C2D_R_MANT / 2) + 2 }; /* 25 double, 9 float */
+    const int nbins = C2D_BINS, nt = 2 * q->nv + q->nc * (q->nc + 1) / 2;
+    c2d_real bin[C2D_BINS];
+    c2d_ext atom[2];
+    int ncarry = 0, foot = 0, below = 0;
+    for (;;) {
+        int emax = C2D_NO_EXP, rest = 0, left = 0, k = 0, i, t;
+        c2d_real approx;
+        for (i = 0; i < ncarry; i++)
+            if (carry[i].m != 0 && carry[i].e > emax) emax = carry[i].e;
+        for (t = 0; t < nt; t++) {
+            c2d_toi_term(q, t, atom);
+            for (i = 0; i < 2; i++)
+                if (c2d_toi_pending(&atom[i], below, foot) != 0 && atom[i].e > emax) emax = atom[i].e;
+        }
+        if (emax == C2D_NO_EXP) break;
+        for (i = 0; i < nbins; i++) bin[i] = 0;
+        for (i = 0; i < ncarry; i++) {
+            if (carry[i].e >= emax - C2D_R_WINDOW) {
+                c2d_toi_bin_add(bin, nbins, c2d_scale2(carry[i].m, carry[i].e - emax));
+            } else {
+                c2d_ext_copy(&carry[rest], &carry[i]);
+                if (carry[i].m != 0) rest++;
+            }
+        }
+        for (t = 0; t < nt; t++) {
+            c2d_toi_term(q, t, atom);
+            for (i = 0; i < 2; i++) {
+                if (c2d_toi_pending(&atom[i], below, foot) == 0) continue;
+                if (atom[i].e >= emax - C2D_R_WINDOW) {
+                    c2d_toi_bin_add(bin, nbins, c2d_scale2(atom[i].m, atom[i].e - emax));
+                } else {
+                    left = 1;
+                }
+            }
+        }
+        /* In place: the expansion's k <= i components never reach bin i. */
+        for (i = 0; i < nbins; i++) k = c2d_grow(bin, k, bin[i]);
+        approx = k > 0 ? bin[0] : (c2d_real)0;
+        for (i = 1; i < k; i++) approx += bin[i];
+        if ((rest == 0 && left == 0) || (approx != 0 && c2d_ilogb(approx) > C2D_R_MARGIN - C2D_R_WINDOW)) {
+            c2d_ext_set(r, approx, emax);
+            return;
+        }
+        for (i = 0; i < k && rest < C2D_ATOMS; i++) c2d_ext_set(&carry[rest++], bin[i], emax);
+        ncarry = rest;
+        foot = emax - C2D_R_WINDOW;
+        below = 1;
+    }
+    c2d_ext_set(r, 0, 0);
+}
+
 /* r = R^2 |v|^2 - (d x v)^2 = b^2 - ac, correctly rounded, sign exact:
  * |v|^2 and d x v are compressed to their exact components first and
- * multiplied component by component.  Only if those products overflow the
- * accumulator even after compression (never seen; it needs inputs whose
- * exact differences scatter over many exponent ranges) is the value formed
- * from the rounded factors instead. */
+ * multiplied component by component.  If those products overflow the
+ * accumulator even after compression, they are summed again in bounded
+ * memory by c2d_toi_disc_streamed (same value, same exact sign). */
 static void c2d_toi_disc(c2d_ext *r, c2d_acc *acc, const c2d_toi_pair *p)
 {
     c2d_ext vv[C2D_TOI_PARTS], cr[C2D_TOI_PARTS], r2[2], twice;
@@ -156,11 +293,13 @@ static void c2d_toi_disc(c2d_ext *r, c2d_acc *acc, const c2d_toi_pair *p)
     if (acc->full == 0) {
         c2d_acc_value(r, acc);
     } else {
-        c2d_ext v2 = c2d_exact_sum(vv, nv), c = c2d_exact_sum(cr, nc), rr;
-        c2d_ext_mul(&rr, &p->r, &p->r);
-        c2d_ext_mul(&rr, &rr, &v2);
-        c2d_ext_mul(&c, &c, &c);
-        c2d_ext_add(r, &rr, &c, -1);
+        c2d_toi_terms q;
+        q.r2 = r2;
+        q.vv = vv;
+        q.cr = cr;
+        q.nv = nv;
+        q.nc = nc;
+        c2d_toi_disc_streamed(r, &q, acc->atom);
     }
 }
 
