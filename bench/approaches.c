@@ -72,6 +72,20 @@ c2d_status bench_trig(c2d_body *a, c2d_body *b, double restitution)
     return C2D_OK;
 }
 
+c2d_status bench_bare(c2d_body *a, c2d_body *b, double restitution)
+{
+    c2d_status s;
+    BENCH_BARE(double, sqrt, a, b, restitution, s);
+    return s;
+}
+
+c2d_status bench_baref(c2d_bodyf *a, c2d_bodyf *b, float restitution)
+{
+    c2d_status s;
+    BENCH_BARE(float, sqrtf, a, b, restitution, s);
+    return s;
+}
+
 c2d_status bench_noop(c2d_body *a, c2d_body *b, double restitution)
 {
     (void)a;

@@ -47,6 +47,31 @@ c2d_status bench_seed_equal_normal(c2d_body *a, c2d_body *b, double nx, double n
 c2d_status bench_seed_equal_normalf(c2d_bodyf *a, c2d_bodyf *b, float nx, float ny, float restitution);
 c2d_status bench_seed_equal_normal_v(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution);
 
+/* The bare impulse formula as a user writes it (issue 22's baseline):
+ * n = d / |d|, the normal approach g = (vb - va).n, and when approaching
+ * the impulse j = -(1 + e) g / (1/ma + 1/mb) along n; no other checks (a
+ * zero distance or a NaN gives NaN velocities, two immovable bodies too).
+ * One text for the out-of-line calls (bench_bare, bench_baref) and the pass
+ * that expands it into the loop (bench/ratio.c). */
+#define BENCH_BARE(T, SQRT, a, b, e, status)                                                      \
+    do {                                                                                         \
+        const T nx_ = (b)->pos.x - (a)->pos.x, ny_ = (b)->pos.y - (a)->pos.y;                    \
+        const T len_ = SQRT(nx_ * nx_ + ny_ * ny_);                                              \
+        const T ux_ = nx_ / len_, uy_ = ny_ / len_;                                              \
+        const T g_ = ((b)->vel.x - (a)->vel.x) * ux_ + ((b)->vel.y - (a)->vel.y) * uy_;          \
+        if (g_ < 0) {                                                                            \
+            const T ia_ = 1 / (a)->mass, ib_ = 1 / (b)->mass;                                    \
+            const T j_ = -(1 + (e)) * g_ / (ia_ + ib_);                                          \
+            (a)->vel.x -= j_ * ia_ * ux_, (a)->vel.y -= j_ * ia_ * uy_;                          \
+            (b)->vel.x += j_ * ib_ * ux_, (b)->vel.y += j_ * ib_ * uy_;                          \
+            (status) = C2D_OK;                                                                   \
+        } else {                                                                                 \
+            (status) = C2D_SEPARATING;                                                           \
+        }                                                                                        \
+    } while (0)
+c2d_status bench_bare(c2d_body *a, c2d_body *b, double restitution);
+c2d_status bench_baref(c2d_bodyf *a, c2d_bodyf *b, float restitution);
+
 /* The textbook time of impact: d = pb - pa, v = vb - va, a = v.v, b = d.v,
  * c = d.d - R^2, disc = b^2 - ac, t = (-b - sqrt(disc)) / a, with the
  * obvious early outs (b >= 0: SEPARATING; c <= 0: t = 0; disc <= 0:

@@ -851,11 +851,73 @@ static void toi_accel_table(FILE *f, const results *res)
                "arithmetic near a tie.\n\n");
 }
 
+/* Issue 22's goals on its own mixes (bench/ratio.c gen_unit, gen_break,
+ * gen_gas): the seed on unit-distance pairs, the bare impulse formula
+ * (approaches.h BENCH_BARE) inlined on break and gas pairs, the batch on
+ * the gas and the random mix against the scalar loop and a plain loop of
+ * the bare formula over the same arrays, and c2d_collide_normal's time and
+ * instructions against c2d_collide's on the same pairs. */
+static void issue22(FILE *f, const results *res)
+{
+    static const char *const mix[2] = {"break", "gas"}, *const bset[2] = {"gas", "random"};
+    static const char *const fn[2][2] = {{"c2d_collide", "c2d_collide_inline"}, {"c2d_collidef", "c2d_collidef_inline"}};
+    const ratios *r = &res->rat;
+    char b[8][64];
+    int p, m, k;
+    fprintf(f, "### Issue 22: unit-distance, break and gas pairs\n\n");
+    fprintf(f, "Pairs (%d each, e = 1, equal masses): *unit*, centres 1 apart in random directions, velocities "
+               "uniform in [-1, 1]^2, four in five separating pairs turned round; *break*, pool balls in contact "
+               "along a rack line (multiples of 30 degrees +-1), the struck one at 0.5-8 m/s within 60 degrees of "
+               "the line; *gas*, unit disks at contact with Maxwell velocities, approaching. *Bare*: the impulse "
+               "formula j = -(1 + e) g / (1/ma + 1/mb) along n = d/|d| with no checks (`BENCH_BARE`), inlined into "
+               "the loop or called. Ratios as above (median of per-round ratios, quiet rounds; quartiles; all "
+               "rounds); instructions from callgrind, per call less the empty loop's.\n\n", r->n);
+    fprintf(f, "| goal | measured | verdict |\n|---|---|---|\n");
+    for (p = 0; p < 2; p++)
+        for (k = 1; k < 3; k++) {
+            const rstat *q = &r->i22_unit[p][k];
+            fprintf(f, "| `%s` <= 0.8x the seed's method on unit-distance pairs (%s) | %s; instructions %s against "
+                       "%s | %s |\n", fn[p][k - 1], p ? "float" : "double", rq(q, b[0]), instr(ir_of(r, q, 1), b[1]),
+                    instr(ir_of(r, &r->i22_unit[p][0], 1), b[2]), verdict2(q->ratio <= 0.8, q->ratio_all <= 0.8));
+        }
+    for (m = 0; m < 2; m++)
+        for (p = 0; p < 2; p++)
+            for (k = I22_LIB; k <= I22_INLINE; k++) {
+                const rstat *g = r->i22_mix[m][p], *q = &g[k];
+                fprintf(f, "| `%s` <= 1.2x the bare formula inlined on %s pairs (%s) | %s; bare called %.2f; "
+                           "instructions %s against %s inlined, %s called | %s |\n", fn[p][k - I22_LIB], mix[m],
+                        p ? "float" : "double", rq(q, b[0]), g[I22_BARE].ratio, instr(ir_of(r, q, 1), b[1]),
+                        instr(ir_of(r, &g[I22_BARE_INLINE], 1), b[2]), instr(ir_of(r, &g[I22_BARE], 1), b[3]),
+                        verdict2(q->ratio <= 1.2, q->ratio_all <= 1.2));
+            }
+    for (m = 0; m < 2; m++)
+        for (p = 0; p < 2; p++) {
+            const rstat *g = r->i22_mix[m][p];
+            const double il = ir_of(r, &g[I22_LIB], 1), in = ir_of(r, &g[I22_NORMAL], 1);
+            fprintf(f, "| `%s` against `%s` on %s pairs (the same normal, d): time, instructions | %.2fx the time, "
+                       "%s against %s instructions (%.2fx) | reported |\n",
+                    p ? "c2d_collide_normalf" : "c2d_collide_normal", fn[p][0], mix[m],
+                    g[I22_NORMAL].ratio / g[I22_LIB].ratio, instr(in, b[0]), instr(il, b[1]),
+                    il > 0 && in > 0 ? in / il : 0.0);
+        }
+    for (m = 0; m < 2; m++)
+        for (p = 0; p < 2; p++) {
+            const rstat *g = r->i22_batch[m][p];
+            const double vs_bare = g[2].ratio / g[1].ratio;
+            fprintf(f, "| `%s` >= 2x the scalar loop and >= 1x the bare formula's loop over the same arrays (%s) | "
+                       "%s the scalar loop; %.2fx the bare loop (%.2f against %.2f ns per pair) | %s |\n",
+                    p ? "c2d_collide_batchf" : "c2d_collide_batch", bset[m], gain(&g[1], b[0]), vs_bare, g[1].ns,
+                    g[2].ns, verdict(1 / g[1].ratio >= 2 && vs_bare >= 1));
+        }
+    fprintf(f, "\n");
+}
+
 static void report(FILE *f, const results *res, const options *o)
 {
     fprintf(f, "## collide2d speed-for-accuracy benchmark (`make bench`)\n\n");
     machine(f, o);
     goals(f, res);
+    issue22(f, res);
     why(f, res);
     goal_tables(f, res);
     before_after(f, res);
@@ -947,6 +1009,18 @@ int main(int argc, char **argv)
         printf("max halves %.3f canary %.2f quiet share %.2f (b2b %.2f)\n", r.max_halves, r.canary_ns, r.quiet_share,
                r.quiet_share_b2b);
         for (v = 0; v < AX_COUNT; v++) printf("axis %d: %.2f ns (%.2f)\n", v, r.axis[v].ns, r.axis[v].ratio);
+        for (v = 0; v < 2; v++)
+            printf("i22 unit %s: seed %.2f ns, lib %.2f, inline %.2f\n", v ? "float" : "double",
+                   r.i22_unit[v][0].ns, r.i22_unit[v][1].ratio, r.i22_unit[v][2].ratio);
+        for (g = 0; g < 2; g++)
+            for (v = 0; v < 2; v++)
+                printf("i22 %s %s: bare inline %.2f ns, bare %.2f, lib %.2f, inline %.2f, normal %.2f\n",
+                       g ? "gas" : "break", v ? "float" : "double", r.i22_mix[g][v][0].ns, r.i22_mix[g][v][1].ratio,
+                       r.i22_mix[g][v][2].ratio, r.i22_mix[g][v][3].ratio, r.i22_mix[g][v][4].ratio);
+        for (g = 0; g < 2; g++)
+            for (v = 0; v < 2; v++)
+                printf("i22 batch %s %s: scalar %.2f ns, batch %.2f, bare loop %.2f\n", g ? "random" : "gas",
+                       v ? "float" : "double", r.i22_batch[g][v][0].ns, r.i22_batch[g][v][1].ns, r.i22_batch[g][v][2].ns);
         return 0;
     }
     if (argc == 2 && strcmp(argv[1], "--smoke") == 0) {

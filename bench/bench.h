@@ -132,6 +132,7 @@ enum { BS_RANDOM, BS_IMPACTS, BS_EXTREME, BS_CANCEL, BS_WALLS, BS_AXIS_SWAP, BS_
        BS_AXIS_UNEQUAL, BS_SETS };
 enum { AX_ORDINARY, AX_WALL_OBLIQUE, AX_SWAP, AX_WALL1, AX_WALL08, AX_PADDLE, AX_UNEQUAL, AX_COUNT };
 enum { RG_WALTON, RG_ROUGH, RG_ROUGHF, RG_COLLIDE, RG_COUNT };
+enum { I22_BARE_INLINE, I22_BARE, I22_LIB, I22_INLINE, I22_NORMAL, I22_MIX }; /* passes on break and gas pairs */
 
 typedef struct ratios {
     int rounds, n, have_old, as_written;
@@ -147,6 +148,9 @@ typedef struct ratios {
     rstat ba[BA_FN][BS_SETS][2];              /* [old, new] */
     rstat ba_toi[2][2][2];                    /* [double, float][ordinary, extreme][old, new] */
     rstat rough[RG_COUNT];                    /* ratios to the Walton transcription */
+    rstat i22_unit[2][3];                     /* unit-distance pairs [double, float][seed, lib, inline] */
+    rstat i22_mix[2][2][I22_MIX];             /* [break, gas][double, float], ratios to the bare formula inlined */
+    rstat i22_batch[2][2][3];                 /* [gas, random][double, float][scalar, batch, bare loop] */
     double max_halves;                        /* largest even/odd-round difference of a median */
     double canary_ns, quiet_share;            /* the canary's best; share of quiet group-rounds */
 } ratios;

@@ -213,6 +213,71 @@ PASS(p_rough, c2d_collide_rough(&s->da[i], &s->db[i], s->surf[i]))
 PASS(p_roughf, c2d_collide_roughf(&s->dfa[i], &s->dfb[i], s->surff[i]))
 PASS(p_walton, bench_walton(&s->da[i], &s->db[i], s->surf[i]))
 
+PASS(p_bare, bench_bare(&s->a[i], &s->b[i], s->e))
+PASS(p_baref, bench_baref(&s->af[i], &s->bf[i], (float)s->e))
+
+/* The bare formula expanded into the loop (approaches.h). */
+static void p_bare_inl(rset *s)
+{
+    unsigned acc = 0;
+    int i;
+    for (i = 0; i < s->n; i++) {
+        c2d_status st;
+        BENCH_BARE(double, sqrt, &s->a[i], &s->b[i], s->e, st);
+        acc += (unsigned)st;
+    }
+    ratio_sink += acc;
+}
+
+static void p_baref_inl(rset *s)
+{
+    const float e = (float)s->e;
+    unsigned acc = 0;
+    int i;
+    for (i = 0; i < s->n; i++) {
+        c2d_status st;
+        BENCH_BARE(float, sqrtf, &s->af[i], &s->bf[i], e, st);
+        acc += (unsigned)st;
+    }
+    ratio_sink += acc;
+}
+
+/* The bare formula as a plain loop over the batch's own arrays (the same
+ * fields c2d_collide_batch reads and writes, the status stored too). */
+#define BARE_SOA_LOOP(T, SQRT, F, ST, N, E)                                                                     \
+    do {                                                                                                         \
+        int i_;                                                                                                  \
+        for (i_ = 0; i_ < (N); i_++) {                                                                           \
+            const T nx_ = F[C2D_SOA_POS_BX][i_] - F[C2D_SOA_POS_AX][i_];                                         \
+            const T ny_ = F[C2D_SOA_POS_BY][i_] - F[C2D_SOA_POS_AY][i_];                                         \
+            const T len_ = SQRT(nx_ * nx_ + ny_ * ny_), ux_ = nx_ / len_, uy_ = ny_ / len_;                      \
+            const T g_ = (F[C2D_SOA_VEL_BX][i_] - F[C2D_SOA_VEL_AX][i_]) * ux_ +                                 \
+                         (F[C2D_SOA_VEL_BY][i_] - F[C2D_SOA_VEL_AY][i_]) * uy_;                                  \
+            if (g_ < 0) {                                                                                        \
+                const T ia_ = 1 / F[C2D_SOA_MASS_A][i_], ib_ = 1 / F[C2D_SOA_MASS_B][i_];                        \
+                const T j_ = -(1 + (E)) * g_ / (ia_ + ib_);                                                      \
+                F[C2D_SOA_VEL_AX][i_] -= j_ * ia_ * ux_, F[C2D_SOA_VEL_AY][i_] -= j_ * ia_ * uy_;                \
+                F[C2D_SOA_VEL_BX][i_] += j_ * ib_ * ux_, F[C2D_SOA_VEL_BY][i_] += j_ * ib_ * uy_;                \
+                ST[i_] = C2D_OK;                                                                                 \
+            } else {                                                                                             \
+                ST[i_] = C2D_SEPARATING;                                                                         \
+            }                                                                                                    \
+        }                                                                                                        \
+    } while (0)
+
+static void p_bare_soa(rset *s)
+{
+    BARE_SOA_LOOP(double, sqrt, s->soa.field, s->st, s->n, s->e);
+    ratio_sink += (double)s->st[0];
+}
+
+static void p_bare_soaf(rset *s)
+{
+    const float e = (float)s->e;
+    BARE_SOA_LOOP(float, sqrtf, s->soaf.field, s->st, s->n, e);
+    ratio_sink += (double)s->st[0];
+}
+
 static void p_seed_inl(rset *s)
 {
     int i;
@@ -474,8 +539,69 @@ static int cancels(const ref_case *c)
 
 typedef enum gen_kind {
     G_RANDOM, G_IMPACTS, G_IMPACTS_OK, G_CANCEL, G_WALLS, G_EXTREME, G_EXTREME_F,
-    G_AXIS_SWAP, G_AXIS_WALL, G_AXIS_PADDLE, G_AXIS_UNEQUAL
+    G_AXIS_SWAP, G_AXIS_WALL, G_AXIS_PADDLE, G_AXIS_UNEQUAL, G_UNIT, G_BREAK, G_GAS
 } gen_kind;
+
+static int approaching(const ref_case *c)
+{
+    return (c->vb[0] - c->va[0]) * (c->pb[0] - c->pa[0]) + (c->vb[1] - c->va[1]) * (c->pb[1] - c->pa[1]) < 0;
+}
+
+/* A standard normal deviate (Box-Muller). */
+static double gauss(c2d_rng *r)
+{
+    const double u = c2d_rng_range(r, 0x1p-53, 1), v = c2d_rng_range(r, 0, 6.283185307179586);
+    return sqrt(-2 * log(u)) * cos(v);
+}
+
+/* Issue 22's mixes.  unit: centres 1 apart in a random direction,
+ * velocities uniform in [-1, 1]^2, equal masses, e = 1; a separating pair
+ * is turned round four times in five, so most approach and some separate. */
+static void gen_unit(c2d_rng *r, ref_case *c)
+{
+    const double ang = c2d_rng_range(r, 0, 6.283185307179586);
+    int i;
+    c->pa[0] = c2d_rng_range(r, -10, 10), c->pa[1] = c2d_rng_range(r, -10, 10);
+    c->pb[0] = c->pa[0] + cos(ang), c->pb[1] = c->pa[1] + sin(ang);
+    for (i = 0; i < 2; i++) c->va[i] = c2d_rng_range(r, -1, 1), c->vb[i] = c2d_rng_range(r, -1, 1);
+    if (!approaching(c) && c2d_rng_next(r) % 5 != 0)
+        for (i = 0; i < 2; i++) c->va[i] = -c->va[i], c->vb[i] = -c->vb[i];
+    c->ma = c->mb = 1, c->e = 1;
+}
+
+/* break: pool balls (0.17 kg, R 28.575 mm) in contact along a rack line (a
+ * multiple of 30 degrees, +-1 degree) somewhere on a 9 ft table, the
+ * struck ball at 0.5-8 m/s within 60 degrees of the line of centres, the
+ * other at rest or (half the time) drifting at up to 0.3 m/s; approaching. */
+static void gen_break(c2d_rng *r, ref_case *c)
+{
+    const double deg = 0.017453292519943295, R = 0.028575;
+    do {
+        const double line = (double)(c2d_rng_next(r) % 12) * 30 * deg + c2d_rng_range(r, -1, 1) * deg;
+        const double dir = line + c2d_rng_range(r, -60, 60) * deg, speed = c2d_rng_range(r, 0.5, 8);
+        c->pa[0] = c2d_rng_range(r, 0.1, 2.44), c->pa[1] = c2d_rng_range(r, 0.1, 1.17);
+        c->pb[0] = c->pa[0] + 2 * R * cos(line), c->pb[1] = c->pa[1] + 2 * R * sin(line);
+        c->va[0] = speed * cos(dir), c->va[1] = speed * sin(dir);
+        c->vb[0] = c->vb[1] = 0;
+        if (c2d_rng_next(r) & 1) c->vb[0] = c2d_rng_range(r, -0.3, 0.3), c->vb[1] = c2d_rng_range(r, -0.3, 0.3);
+    } while (!approaching(c));
+    c->ma = c->mb = 0.17, c->e = 1;
+}
+
+/* gas: unit disks at contact (centres 1 apart in a random direction, in a
+ * box 100 wide), Maxwell-Boltzmann velocities (unit Gaussian components);
+ * approaching, as every pair a gas resolves. */
+static void gen_gas(c2d_rng *r, ref_case *c)
+{
+    do {
+        const double ang = c2d_rng_range(r, 0, 6.283185307179586);
+        int i;
+        c->pa[0] = c2d_rng_range(r, 0, 100), c->pa[1] = c2d_rng_range(r, 0, 100);
+        c->pb[0] = c->pa[0] + cos(ang), c->pb[1] = c->pa[1] + sin(ang);
+        for (i = 0; i < 2; i++) c->va[i] = gauss(r), c->vb[i] = gauss(r);
+    } while (!approaching(c));
+    c->ma = c->mb = 1, c->e = 1;
+}
 
 /* b becomes an immovable wall at rest: a's velocity taken relative to it
  * (the approach is kept). */
@@ -517,6 +643,9 @@ static void gen_one(c2d_rng *r, gen_kind g, ref_case *c)
     case G_AXIS_UNEQUAL:
         do gen_axis(r, c); while (c->ma == c->mb);
         break;
+    case G_UNIT: gen_unit(r, c); break;
+    case G_BREAK: gen_break(r, c); break;
+    case G_GAS: gen_gas(r, c); break;
     }
     c->has_normal = 0;
 }
@@ -623,7 +752,7 @@ void ratios_measure(ratios *o, int rounds, int n, int callgrind)
                                                  "axis_swap", "axis_wall", "axis_paddle", "axis_unequal"};
     const int slow = n >= 256 ? n / 4 : n; /* pairs in the sets whose calls take microseconds */
     static const char *const goal_set[GS_COUNT] = {"impacts", "random"};
-    rset *gs[GS_COUNT], *bs[BS_SETS], *ok, *ax[AX_COUNT], *toi[2], *rough;
+    rset *gs[GS_COUNT], *bs[BS_SETS], *ok, *ax[AX_COUNT], *toi[2], *rough, *i22[3];
     pass goal_pass[GV_COUNT][GS_COUNT][GP_COUNT];
     char gid[64];
     int v, s, j;
@@ -680,6 +809,43 @@ void ratios_measure(ratios *o, int rounds, int n, int callgrind)
         const pass f[2] = {{"scalar", p_collidef, ok, W_BODYF}, {"batch", p_batchf, ok, W_SOAF}};
         group("batch/double", d, 2, o->batch[0]);
         group("batch/float", f, 2, o->batch[1]);
+    }
+    /* Issue 22: the seed on unit-distance pairs; the bare formula on break
+     * and gas pairs; the batch on the gas and the random mix. */
+    i22[0] = make_set(G_UNIT, n, 7000, 1.0);
+    i22[1] = make_set(G_BREAK, n, 7001, 1.0);
+    i22[2] = make_set(G_GAS, n, 7002, 1.0);
+    {
+        const pass d[3] = {{"seed", p_seed, i22[0], W_BODY}, {"lib", p_collide, i22[0], W_BODY},
+                           {"inline", p_collide_inl, i22[0], W_BODY}};
+        const pass f[3] = {{"seed", p_seedf, i22[0], W_BODYF}, {"lib", p_collidef, i22[0], W_BODYF},
+                           {"inline", p_collidef_inl, i22[0], W_BODYF}};
+        group("i22/unit/double", d, 3, o->i22_unit[0]);
+        group("i22/unit/float", f, 3, o->i22_unit[1]);
+    }
+    for (s = 0; s < 2; s++) {
+        rset *m = i22[1 + s];
+        const pass d[I22_MIX] = {{"bare_inline", p_bare_inl, m, W_BODY}, {"bare", p_bare, m, W_BODY},
+                                 {"lib", p_collide, m, W_BODY}, {"inline", p_collide_inl, m, W_BODY},
+                                 {"normal", p_normal, m, W_BODY}};
+        const pass f[I22_MIX] = {{"bare_inline", p_baref_inl, m, W_BODYF}, {"bare", p_baref, m, W_BODYF},
+                                 {"lib", p_collidef, m, W_BODYF}, {"inline", p_collidef_inl, m, W_BODYF},
+                                 {"normal", p_normalf, m, W_BODYF}};
+        snprintf(gid, sizeof gid, "i22/%s/double", s ? "gas" : "break");
+        group(gid, d, I22_MIX, o->i22_mix[s][0]);
+        snprintf(gid, sizeof gid, "i22/%s/float", s ? "gas" : "break");
+        group(gid, f, I22_MIX, o->i22_mix[s][1]);
+    }
+    for (s = 0; s < 2; s++) {
+        rset *m = s ? gs[GS_RANDOM] : i22[2];
+        const pass d[3] = {{"scalar", p_collide, m, W_BODY}, {"batch", p_batch, m, W_SOA},
+                           {"bare_loop", p_bare_soa, m, W_SOA}};
+        const pass f[3] = {{"scalar", p_collidef, m, W_BODYF}, {"batch", p_batchf, m, W_SOAF},
+                           {"bare_loop", p_bare_soaf, m, W_SOAF}};
+        snprintf(gid, sizeof gid, "i22/batch_%s/double", s ? "random" : "gas");
+        group(gid, d, 3, o->i22_batch[s][0]);
+        snprintf(gid, sizeof gid, "i22/batch_%s/float", s ? "random" : "gas");
+        group(gid, f, 3, o->i22_batch[s][1]);
     }
     /* The axis-aligned branch against ordinary pairs. */
     ax[AX_ORDINARY] = gs[GS_IMPACTS];
@@ -771,6 +937,7 @@ void ratios_measure(ratios *o, int rounds, int n, int callgrind)
         if (s != BS_RANDOM && s != BS_IMPACTS) rset_free(bs[s]);
     for (j = 1; j < AX_COUNT; j++) rset_free(ax[j]);
     rset_free(gs[0]), rset_free(gs[1]), rset_free(ok), rset_free(toi[0]), rset_free(toi[1]), rset_free(rough);
+    rset_free(i22[0]), rset_free(i22[1]), rset_free(i22[2]);
 }
 
 /* ------------------------------------------------------------ checks */
@@ -813,6 +980,28 @@ int ratios_selfcheck(int n, int *compared)
         cmp++;
     }
     free(c);
+    /* Issue 22's baseline is the right formula: on unit, break and gas
+     * pairs the bare impulse gives the library's statuses and velocities to
+     * 1e-12 of the pair's speed. */
+    {
+        static const gen_kind mixes[3] = {G_UNIT, G_BREAK, G_GAS};
+        int m;
+        for (m = 0; m < 3; m++) {
+            ref_case *mc = gen_cases(mixes[m], n, 79 + (unsigned)m);
+            for (i = 0; i < n; i++) {
+                c2d_body a, b, a2, b2;
+                c2d_status s1, s2;
+                double scale;
+                case_to_bodies(&mc[i], &a, &b), a2 = a, b2 = b;
+                scale = fabs(a.vel.x) + fabs(a.vel.y) + fabs(b.vel.x) + fabs(b.vel.y);
+                s1 = c2d_collide(&a, &b, 1.0), s2 = bench_bare(&a2, &b2, 1.0);
+                bad += s1 != s2 || !(fabs(a.vel.x - a2.vel.x) + fabs(a.vel.y - a2.vel.y) + fabs(b.vel.x - b2.vel.x) +
+                                         fabs(b.vel.y - b2.vel.y) <= 1e-12 * scale);
+                cmp++;
+            }
+            free(mc);
+        }
+    }
     *compared = cmp;
     return bad;
 }
