@@ -43,6 +43,9 @@ const char kUsage[] =
     "                              the same with Alciatore's speed-dependent ball-ball\n"
     "                              friction; or the former disks in the plane of the\n"
     "                              centres\n"
+    "  --cue-end-mass GRAMS        the cue's end mass that squirt comes from, in\n"
+    "                              (0, 170] g (default 5.667 g, m/30: pooltool's\n"
+    "                              default; a heavier end mass squirts more)\n"
     "headless only:\n"
     "  --shot DEG,MPS[,SIDE,TOP[,ELEV]]  cue shot, may repeat, each once the table is\n"
     "                              at rest: angle (0 = +x, counter-clockwise), the cue\n"
@@ -131,7 +134,7 @@ bool takes_value(const std::string &flag) {
     static const char *const options[] = {"--scene",   "--response", "--balls",  "--place",      "--seed",
                                           "--game",    "--players",  "--seconds", "--shot",      "--events",
                                           "--trace",   "--speeds",   "--screenshot", "--screenshot-window",
-                                          "--check",   "--model",    "--broadphase"};
+                                          "--check",   "--model",    "--broadphase", "--cue-end-mass"};
     for (const char *o : options)
         if (flag == o) return true;
     return false;
@@ -295,6 +298,14 @@ Options parse(int argc, char **argv) {
             else if (v == "sphere-alciatore") o.config.model.contact = ContactModel::SphereAlciatore;
             else if (v == "disk") o.config.model.contact = ContactModel::Disk;
             else fail("--model: unknown contact model '" + v + "' (sphere, sphere-alciatore or disk)");
+        } else if (flag == "--cue-end-mass") {
+            const std::string v = value();
+            const double grams = parse_number(flag, v);
+            // m / m_e in the squirt angle needs m_e > 0; past the ball's own
+            // mass it is no cue's end mass (real shafts: a few to 15 g)
+            if (!(grams > 0 && grams <= 1000 * kBallMass))
+                fail("--cue-end-mass: must be in (0, 170] grams (at most the ball's mass), got '" + v + "'");
+            o.config.model.cue_end_mass = grams / 1000;
         } else if (flag == "--broadphase") {
             const std::string v = value();
             if (v == "tree") o.config.broadphase = demo::WorldBroadphase::Tree;

@@ -207,7 +207,7 @@ void print_model(const Simulation &sim) {
                 m.ball.friction, m.ball.tangential_restitution, m.cushion.restitution, m.cushion.friction,
                 m.cushion.tangential_restitution, m.absorb_below, sim.table().length, sim.table().width);
     std::printf(",\"contact_model\":\"%s\",\"cushion_height\":%.17g,\"squirt_end_mass\":%.17g",
-                demo::contact_model_name(m.contact), m.cushion_height, demo::kCueEndMass);
+                demo::contact_model_name(m.contact), m.cushion_height, m.cue_end_mass);
     if (c.scene == Scene::Break) {
         for (const auto &p : {std::make_pair("corner", c.table.corner), std::make_pair("side", c.table.side)})
             std::printf(",\"%s_mouth\":%.17g,\"%s_facing_angle_deg\":%.17g,\"%s_nose_radius\":%.17g,\"%s_shelf\":%.17g,"

@@ -57,6 +57,9 @@ struct Model {
     // The cushion nose's height above the cloth, m (the sphere models):
     // 0.64 D (sim.h gives the sources).
     double cushion_height = 1.28 * kBallRadius;
+    // The cue's end mass, kg, that the strike's squirt comes from (motion.h:
+    // kCueEndMass, m / 30 as pooltool's default; --cue-end-mass).
+    double cue_end_mass = kCueEndMass;
 };
 
 }  // namespace demo

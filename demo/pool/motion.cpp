@@ -104,12 +104,13 @@ double energy(const Ball &b) {
            0.5 * kBallInertia * (b.wx * b.wx + b.wy * b.wy + b.wz * b.wz);
 }
 
-double squirt_angle(double side) {
+double squirt_angle(double side, double end_mass) {
     const double across = 1 - side * side;
-    return std::atan(2.5 * side * std::sqrt(across) / (1 + kBallMass / kCueEndMass + 2.5 * across));
+    return std::atan(2.5 * side * std::sqrt(across) / (1 + kBallMass / end_mass + 2.5 * across));
 }
 
-Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback, double elevation_rad) {
+Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback, double elevation_rad,
+            double end_mass) {
     Ball s = b;
     const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
     const double ce = std::cos(elevation_rad), se = std::sin(elevation_rad);
@@ -119,7 +120,7 @@ Ball strike(const Ball &b, double angle_rad, double speed, double side, double t
     const double ry = -side * dx + topback * se * dy - c * ce * dy;
     const double rz = topback * ce + c * se;
     // the impulse's direction: the cue's, turned left by the squirt angle
-    const double a = squirt_angle(side), sx = dx * std::cos(a) - dy * std::sin(a), sy = dy * std::cos(a) + dx * std::sin(a);
+    const double a = squirt_angle(side, end_mass), sx = dx * std::cos(a) - dy * std::sin(a), sy = dy * std::cos(a) + dx * std::sin(a);
     const double jx = ce * sx, jy = ce * sy, jz = -se;
     const double k = 2.5 * speed / (kBallRadius * ce);  // |J| R / I, |J| = m speed / cos(elev)
     s.vx = speed * sx;

@@ -116,18 +116,25 @@ void roll(Ball &b);
 // Kinetic energy, rotation included, J.
 double energy(const Ball &b);
 
-// The cue's end mass (kg) that squirt comes from: m / 30, 5.7 g, the end
-// mass of a typical modern shaft in Alciatore's squirt figures (5-15 g).
+// The cue's default end mass (kg) that squirt comes from: m / 30, 5.7 g.
+// The ratio is pooltool's default (CueSpecs.default(): end_mass =
+// 0.170097 / 30 kg, its ball's 6 oz over 30, citing Alciatore's TP A.31);
+// with our 0.17 kg ball it is 5.667 g.  Alciatore's endmass FAQ: lighter
+// ends (low-deflection shafts) squirt less, added end mass alone more;
+// Model::cue_end_mass (--cue-end-mass) sets another.
 constexpr double kCueEndMass = kBallMass / 30;
 
 // The squirt angle (rad, > 0 to the left of the aim) of a tip `side` (a
-// fraction of R) right of centre.
-double squirt_angle(double side);
+// fraction of R) right of centre, for a cue of end mass end_mass (kg, > 0):
+// a heavier end mass squirts more (m / m_e, in the denominator, shrinks),
+// which is why low-squirt shafts lighten their last few inches.
+double squirt_angle(double side, double end_mass = kCueEndMass);
 
 // The cue ball after a strike along angle_rad at speed v with the tip at
-// (side, topback) fractions of R, the cue raised by elevation_rad;
-// position and number kept.
-Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback, double elevation_rad = 0);
+// (side, topback) fractions of R, the cue raised by elevation_rad, the cue's
+// end mass end_mass (kg); position and number kept.
+Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback, double elevation_rad = 0,
+            double end_mass = kCueEndMass);
 
 }  // namespace demo
 

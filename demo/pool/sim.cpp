@@ -30,10 +30,10 @@ int cue_index(const std::vector<Ball> &balls) {
     return -1;
 }
 
-// The strike, and its event.
-Event strike_cue(Engine &engine, int cue, const Shot &shot) {
+// The strike with the model's cue, and its event.
+Event strike_cue(Engine &engine, int cue, const Shot &shot, const Model &model) {
     const Ball b = strike(engine.balls()[static_cast<size_t>(cue)], shot.angle_deg * (M_PI / 180.0), shot.speed,
-                          shot.side, shot.topback, shot.elevation * (M_PI / 180.0));
+                          shot.side, shot.topback, shot.elevation * (M_PI / 180.0), model.cue_end_mass);
     engine.set_motion(cue, b);
     return Event{engine.now(), EventKind::Strike, cue, -1, -1, b.x, b.y, b.vx, b.vy, b.wx, b.wy, b.wz,
                  kBallMass * shot.speed};
@@ -64,7 +64,7 @@ bool Simulation::cue_on_table() const {
 
 void Simulation::shoot(const Shot &shot) {
     if (!cue_on_table()) return;
-    strikes_.push_back(strike_cue(*engine_, cue_index(balls()), shot));
+    strikes_.push_back(strike_cue(*engine_, cue_index(balls()), shot, config_.model));
 }
 
 bool Simulation::at_rest() const {
@@ -125,7 +125,8 @@ ShotOutcome play(const SimConfig &config, const std::vector<Ball> &balls, const 
     ShotOutcome out{};
     FrameLog log;
     const int cue = cue_index(balls);
-    if (shot && cue >= 0 && balls[static_cast<size_t>(cue)].active) out.events.push_back(strike_cue(*engine, cue, *shot));
+    if (shot && cue >= 0 && balls[static_cast<size_t>(cue)].active)
+        out.events.push_back(strike_cue(*engine, cue, *shot, config.model));
     const double start = engine->now();
     out.settled = engine->settle(3600, out.stats, log);
     out.events.insert(out.events.end(), log.events.begin(), log.events.end());

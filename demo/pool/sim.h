@@ -85,12 +85,15 @@ struct SimConfig {
     // 8-ball; the gas and the cradle use the world's cells): world_engine.h
     WorldBroadphase broadphase = WorldBroadphase::Tree;
     // The scene with the physics that goes with it.
-    // (The contact model chosen is kept: it only matters with friction.)
+    // (The contact model and the cue's end mass chosen are kept: the one only
+    // matters with friction, the other is the cue's, not the scene's.)
     void set_scene(Scene s) {
         scene = s;
         const ContactModel contact = model.contact;
+        const double end_mass = model.cue_end_mass;
         model = s == Scene::Break ? kPoolModel : kFrictionless;
         model.contact = contact;
+        model.cue_end_mass = end_mass;
     }
 };
 

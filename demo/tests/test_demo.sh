@@ -136,6 +136,16 @@ bad --shot 0,2,0,0,10,1
 bad --model cylinder
 bad --model
 bad --model sphere --model disk
+bad --cue-end-mass
+bad --cue-end-mass 0
+bad --cue-end-mass -5
+bad --cue-end-mass 171
+bad --cue-end-mass abc
+bad --cue-end-mass 5g
+bad --cue-end-mass nan
+bad --cue-end-mass 1e-400
+bad --cue-end-mass 5 --cue-end-mass 6
+bad --cue-end-mass=5
 bad --place 1,2
 bad --place 16,1,0.6
 bad --place 0,3,0.6
@@ -188,6 +198,9 @@ bad_says "empty value" --shot 0,
 bad_says "empty value" --seed ""
 bad_says "starts with a blank" --seed " -1"
 bad_says "starts with a blank" --seconds " 1"
+bad_says "(0, 170] grams" --cue-end-mass 0
+bad_says "(0, 170] grams" --cue-end-mass 170.5
+bad_says "give the value as the next argument" --cue-end-mass=5
 bad_says "negative" --seed -1
 bad_says "negative" --scene gas --balls -5
 "$BIN" --headless --seconds 0 --json > "$TMP/zero.json" && [ "$(json_get "$TMP/zero.json" steps)" = 0 ]
@@ -278,6 +291,9 @@ DISPLAY=:7777 "$BIN" --json --seconds 1 > "$TMP/out" 2> "$TMP/err"
 status=$?
 [ "$status" = 2 ] && grep -q -- "--json" "$TMP/err" && grep -q -- "--headless" "$TMP/err" && [ ! -s "$TMP/out" ]
 check "window mode refuses --json and --seconds with a message" $?
+DISPLAY=:7777 "$BIN" --cue-end-mass 8 --model disk --json > "$TMP/out" 2> "$TMP/err"
+[ $? = 2 ] && grep -q -- "--json: only" "$TMP/err" && ! grep -q -- "--cue-end-mass" "$TMP/err"
+check "window mode takes --cue-end-mass (only --json refused)" $?
 env -u DISPLAY -u WAYLAND_DISPLAY -u XDG_RUNTIME_DIR "$BIN" --seconds 1 > /dev/null 2> "$TMP/err"
 head -1 "$TMP/err" | grep -q '^billiards: no display' && ! grep -q XDG_RUNTIME_DIR "$TMP/err"
 check "no display: our message first, none from SDL" $?
@@ -293,6 +309,28 @@ for m in sphere sphere-alciatore disk; do
         grep -q "\"contact_model\":\"$m\"" "$TMP/model.json"
     check "--model $m: named in the JSON, an elevated draw shot runs" $?
 done
+
+# --- --cue-end-mass: the JSON's squirt_end_mass (kg) is the setting, m/30
+# without it; the strike's squirt is TP A.31's with that end mass (awk
+# computes it from the JSON's ball mass), and a heavier end mass squirts more
+for g in default 3 12; do
+    if [ "$g" = default ]; then set --; else set -- --cue-end-mass "$g"; fi
+    "$BIN" --headless "$@" --place 0,0.5,0.635 --shot 0,1,0.3,0 --events "$TMP/squirt_$g.csv" --json > "$TMP/squirt_$g.json"
+    me=$(json_get "$TMP/squirt_$g.json" squirt_end_mass)
+    m=$(json_get "$TMP/squirt_$g.json" ball_mass)
+    awk -F, -v g="$g" -v me="$me" -v m="$m" '$2 == "strike" {
+            want_me = g == "default" ? m / 30 : g / 1000
+            s = 0.3; a = atan2(2.5 * s * sqrt(1 - s * s), 1 + m / me + 2.5 * (1 - s * s))
+            got = atan2($8, $7)
+            printf "    --cue-end-mass %s: squirt_end_mass %s kg, leaves at %.6f deg (TP A.31 %.6f)\n", g, me, got * 45 / atan2(1, 1), a * 45 / atan2(1, 1)
+            d = got - a; ok = (me - want_me < 1e-15 && want_me - me < 1e-15 && d < 1e-12 && -d < 1e-12) }
+        END { exit !ok }' "$TMP/squirt_$g.csv"
+    check "--cue-end-mass $g: reported in the JSON, the strike squirts as TP A.31" $?
+done
+[ "$(json_get "$TMP/squirt_default.json" squirt_end_mass)" = 0.0056666666666666671 ] &&
+    awk -F, 'FNR == 2 { a[++n] = $8 / $7 } END { exit !(n == 3 && a[2] < a[1] && a[1] < a[3]) }' \
+        "$TMP/squirt_default.csv" "$TMP/squirt_3.csv" "$TMP/squirt_12.csv"
+check "--cue-end-mass: the default's bits are m/30's; 3 g squirts less, 12 g more" $?
 
 # --- --place, --shot with spin, --events, the JSON model and final state
 "$BIN" --headless --place 0,0.1,0.635 --shot 0,0.5 --events "$TMP/slide.csv" --json > "$TMP/slide.json"

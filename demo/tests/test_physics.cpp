@@ -463,6 +463,38 @@ void swerve(const SimConfig &c) {
     check(ran == 8, "swerve: all 8 strikes ran");
 }
 
+// --- squirt against the cue's end mass --------------------------------------------
+// Model::cue_end_mass (--cue-end-mass): the level strike's direction against
+// Alciatore's closed form (TP A.31), tan a = (5/2) s sqrt(1 - s^2) / (1 + m/m_e
+// + (5/2)(1 - s^2)), at the default m/30 (pooltool's CueSpecs default) and at
+// 12 g, for tips 0.1-0.5 R to either side; a heavier end mass squirts more,
+// and the default is m/30 exactly.
+void squirt_end_mass(const SimConfig &c) {
+    check(c.model.cue_end_mass == demo::kBallMass / 30, "cue end mass: the default is m/30 (pooltool's)");
+    int ran = 0;
+    for (double grams : {demo::kBallMass * 1000 / 30, 12.0}) {
+        SimConfig cue = c;
+        cue.model.cue_end_mass = grams / 1000;
+        for (double side : {-0.5, -0.3, -0.1, 0.1, 0.3, 0.5}) {
+            const double ratio = 0.17 / (grams / 1000), across = 1 - side * side;
+            const double closed = degrees(std::atan(2.5 * side * std::sqrt(across) / (1 + ratio + 2.5 * across)));
+            const ShotOutcome o = demo::simulate_shot(cue, {ball(0, 0.5, 0.635)}, Shot{0, 1, side, 0});
+            const Event *strike = first(o, EventKind::Strike, 0);
+            const double leaves = strike ? degrees(std::atan2(strike->vy, strike->vx)) : NAN;
+            if (side == 0.3)
+                std::printf("    end mass %6.3f g, tip %+.1f R: leaves at %+.6f deg (TP A.31 %+.6f)\n", grams, side,
+                            leaves, closed);
+            char name[64];
+            std::snprintf(name, sizeof name, "cue end mass %.3f g, side %+.1f R: squirt as TP A.31", grams, side);
+            check(std::fabs(leaves - closed) < 1e-9, name);
+            ++ran;
+        }
+    }
+    const double light = demo::squirt_angle(0.3, 0.004), heavy = demo::squirt_angle(0.3, 0.015);
+    check(ran == 12 && 0 < light && light < demo::squirt_angle(0.3) && demo::squirt_angle(0.3) < heavy,
+          "cue end mass: all 12 strikes ran; a heavier end mass squirts more (4 g < m/30 < 15 g)");
+}
+
 // --- english off a rail ---------------------------------------------------------
 void english(const SimConfig &c) {
     const double y = 0.635, x = 1.9;
@@ -617,6 +649,8 @@ int main(int argc, char **argv) {
     rails(c);
     std::printf("# squirt, swerve and masse\n");
     swerve(c);
+    std::printf("# squirt against the cue's end mass\n");
+    squirt_end_mass(c);
     std::printf("# english off a rail\n");
     english(c);
     std::printf("# integrity\n");
