@@ -19,7 +19,8 @@ c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution)
  * otherwise stores the argument and reloads it as one vector. */
 c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution)
 {
-    double nx = normal.x, ny = normal.y;
+    double nx = normal.x;
+    double ny = normal.y;
     C2D_IN_REGISTER(nx);
     C2D_IN_REGISTER(ny);
     return c2d_collide_normal_front(a, b, nx, ny, restitution);
