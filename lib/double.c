@@ -14,10 +14,16 @@ c2d_status c2d_collide(c2d_body *a, c2d_body *b, double restitution)
 }
 
 /* The normal as two scalars (real/collide/collide.h, c2d_collide_normal_front):
- * by address, gcc passes the 16-byte c2d_vec2 through memory. */
+ * by address, gcc passes the 16-byte c2d_vec2 through memory; and its
+ * fields taken in registers (C2D_IN_REGISTER, internal.h), since gcc -O3
+ * otherwise stores the argument and reloads it as one vector. */
 c2d_status c2d_collide_normal(c2d_body *a, c2d_body *b, c2d_vec2 normal, double restitution)
 {
-    return c2d_collide_normal_front(a, b, normal.x, normal.y, restitution);
+    double nx = normal.x;
+    double ny = normal.y;
+    C2D_IN_REGISTER(nx);
+    C2D_IN_REGISTER(ny);
+    return c2d_collide_normal_front(a, b, nx, ny, restitution);
 }
 
 c2d_status c2d_time_of_impact(const c2d_body *a, const c2d_body *b, double radius_sum, double *t)

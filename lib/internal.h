@@ -51,6 +51,21 @@ float sqrtf(float x);
 #define C2D_COLD static
 #endif
 
+/* C2D_IN_REGISTER(x): x, a double or float variable, is in an SSE register
+ * here, as far as the compiler knows computed by the (empty) asm.  A
+ * struct parameter's fields taken this way are cut from the struct's
+ * memory: gcc 12 -O3 otherwise stores a by-value c2d_vec2 argument,
+ * which arrives in two registers, to the stack as two 8-byte halves and
+ * reads it back as one 16-byte vector, a load the store buffer cannot
+ * forward (real/collide/collide.h, c2d_collide_normal_front; docs/SPEED.md).
+ * No instruction; x86-64 gcc and clang only ("x" is their SSE register
+ * constraint), elsewhere nothing. */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__)
+#define C2D_IN_REGISTER(x) __asm__("" : "+x"(x))
+#else
+#define C2D_IN_REGISTER(x) ((void)0)
+#endif
+
 /* The library's arithmetic is IEEE-754's as written: NaN fails every
  * comparison (that is how the fast path refuses NaN and Inf inputs), x - x
  * is 0 only for finite x, and the exact sums rely on every rounding being

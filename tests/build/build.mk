@@ -11,6 +11,11 @@
 #                         (tests/build/tsan.sh; skips a compiler without it)
 #   make check-fast-math  -ffast-math / -ffinite-math-only stop lib/'s build
 #                         unless C2D_ALLOW_FAST_MATH (tests/build/fast_math.sh)
+#   make check-normal-stall  no store-forwarding stall on the hot path of
+#                         c2d_collide_normal (and c2d_collide, float too)
+#                         at -O0, -O2, -O3, -O3 -march=native and -Os, gcc
+#                         and clang, read from the machine code
+#                         (tests/build/normal_stall.sh, issue 22)
 #   make check-docs       README.md at most 12,000 bytes; every relative link
 #                         and anchor of README.md, docs/*.md and
 #                         lib/real/toia/README.md resolves (tests/build/docs.sh)
@@ -19,7 +24,7 @@
 
 MAKE_TEST_DEPS := pkg-config cmake
 
-.PHONY: test-make check-tsan check-fast-math check-docs
+.PHONY: test-make check-tsan check-fast-math check-normal-stall check-docs
 ifeq ($(SANITIZE),1)
 test-make:
 	@echo "test-make: skipped under SANITIZE=1 (the Makefile, not code: the plain run covers it)"
@@ -36,8 +41,11 @@ check-tsan:
 check-fast-math:
 	@sh tests/build/fast_math.sh $(B)/check-fast-math
 
+check-normal-stall:
+	@sh tests/build/normal_stall.sh $(B)/check-normal-stall
+
 check-docs:
 	@sh scripts/deps.sh python3
 	@sh tests/build/docs.sh
 
-TEST_TARGETS += test-make check-tsan check-fast-math check-docs
+TEST_TARGETS += test-make check-tsan check-fast-math check-normal-stall check-docs

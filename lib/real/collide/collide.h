@@ -284,7 +284,12 @@ C2D_COLD c2d_status c2d_collide_normal_fallback(c2d_real_body *a, c2d_real_body 
  * normal through memory, stored as two 8-byte halves and reloaded as one
  * 16-byte vector, which the store buffer cannot forward (some 10 cycles on
  * the critical path).  Only the out-of-line tiers take it by address, each
- * from a copy made on its own branch. */
+ * from a copy made on its own branch.  At -O3 (with or without
+ * -march=native) gcc 12 did the same one level up, with the public
+ * function's by-value argument itself, until c2d_collide_normal took its
+ * fields through C2D_IN_REGISTER (lib/double.c, internal.h).
+ * tests/build/normal_stall.sh checks the compiled hot path at every
+ * optimisation level the documentation names. */
 static inline c2d_status c2d_collide_normal_front(c2d_real_body *a, c2d_real_body *b, c2d_real nx, c2d_real ny,
                                                   c2d_real restitution)
 {
