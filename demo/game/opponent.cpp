@@ -11,10 +11,18 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 namespace demo {
 
 namespace {
+
+// The calling thread's CPU time, s (wall time misleads on a shared machine).
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 constexpr double kMaxCutDeg = 75;
 constexpr double kWin = 1e6, kFoulScore = -1000, kUnsettled = -1e5;
@@ -153,10 +161,13 @@ double best_ease(const GameState &state, const Table &table, const std::vector<B
 }
 
 Opponent::Opponent(const SimConfig &config, uint64_t seed)
-    : config_(config), table_(scene_table(config.scene, config.table)), rng_(seed ^ 0x6f70706f6e656e74ULL) {}
+    : config_(config), table_(scene_table(config.scene, config.table)), rng_(seed ^ 0x6f70706f6e656e74ULL) {
+    if (config_.broadphase == WorldBroadphase::Tree) config_.broadphase = WorldBroadphase::List;
+}
 
 Plan Opponent::choose(const GameState &state, const std::vector<Ball> &balls) {
     const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = thread_cpu_seconds();
     Plan plan;
     if (state.breaking) {
         plan.shot = Shot{0, kBreakSpeed};
@@ -204,6 +215,7 @@ Plan Opponent::choose(const GameState &state, const std::vector<Ball> &balls) {
     plan.shot.angle_deg += kAngleError * (2 * rng_.uniform() - 1);
     plan.shot.speed = std::min(kMaxShotSpeed, plan.shot.speed * (1 + kSpeedError * (2 * rng_.uniform() - 1)));
     plan.think_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    plan.cpu_seconds = thread_cpu_seconds() - cpu_start;
     return plan;
 }
 

@@ -43,6 +43,7 @@ struct Plan {
     double score = 0;        // the candidate's score (before the execution error)
     int candidates = 0;      // shots simulated to choose this one
     double think_seconds = 0;  // wall time (not deterministic; for the figures only)
+    double cpu_seconds = 0;    // the thread's CPU time choosing (not deterministic; opponent_bench)
 };
 
 class Opponent {

@@ -18,9 +18,7 @@ std::unique_ptr<Engine> make_engine(const SimConfig &config, const std::vector<B
     // the pool scenes' candidates from Box2D's tree; the gas's and the
     // cradle's from the world's cells (100,000 disks: the cells are faster)
     const bool pool = config.scene != Scene::Gas && config.scene != Scene::Cradle;
-    return make_world_engine(balls, table, config.model,
-                             pool && config.broadphase == WorldBroadphase::Tree ? WorldBroadphase::Tree
-                                                                                : WorldBroadphase::Cells);
+    return make_world_engine(balls, table, config.model, pool ? config.broadphase : WorldBroadphase::Cells);
 }
 
 // The cue ball's index, or -1.

@@ -147,7 +147,8 @@ private:
     std::vector<Feature> statics_;  // by the world's static index
     std::vector<Segment> faces_;  // what a ball can lean on: the rails' cushions, the jaws' facings
     std::vector<uint64_t> memory_;  // the world's buffer (8-byte aligned)
-    const bool use_tree_;           // Box2D's tree finds the world's candidates (else its cells)
+    const bool use_tree_;           // a caller broadphase (Box2D's tree or the box list) finds the candidates, else the cells
+    const bool use_list_;           // that broadphase is the box list
     c2d_world_broadphase tree_calls_{};
     std::unique_ptr<Broadphase> tree_;  // each disk's box, tagged with its index
     std::vector<int32> proxy_;          // disk -> the tree's proxy
@@ -179,7 +180,7 @@ WorldEngine::WorldEngine(const std::vector<Ball> &balls, const Table &table, con
                          WorldBroadphase broadphase)
     : Engine(balls), model_(model), table_(table), walls_(is_closed_box(table)),
       offset_(is_closed_box(table) ? 0.0 : kMargin), faces_(table.cushions),
-      use_tree_(broadphase == WorldBroadphase::Tree) {
+      use_tree_(broadphase != WorldBroadphase::Cells), use_list_(broadphase == WorldBroadphase::List) {
     for (const Pocket &p : table.pockets)
         for (const Jaw &j : p.jaws) faces_.push_back(j.facing);
     track_.resize(balls_.size());
@@ -246,7 +247,7 @@ void WorldEngine::build() {
         d.resolve_static = &WorldEngine::resolve_static;
     }
     if (use_tree_) {
-        tree_ = make_dynamic_tree();
+        tree_ = use_list_ ? make_box_list() : make_dynamic_tree();
         proxy_.clear();
         tree_calls_ = c2d_world_broadphase{&WorldEngine::tree_insert, &WorldEngine::tree_move, &WorldEngine::tree_remove,
                                            &WorldEngine::tree_query, this, 0};
