@@ -146,48 +146,7 @@ void CellGrid::query(const b2AABB &box, std::vector<uintptr_t> &tags) {
     scan(cells_[large()], box, tags);
 }
 
-// Every box in one array by proxy, a query reading them all: for the pool
-// table's 16 balls a scan of 16 boxes (4 float compares each) costs less than
-// one descent of the tree, and a move is one store where the tree removes
-// and re-inserts a leaf and rebalances.  Tags come out in the order of the
-// proxies.
-class BoxList : public Broadphase {
-public:
-    int32 add(const b2AABB &box, uintptr_t tag) override {
-        int32 proxy;
-        if (free_.empty()) {
-            proxy = static_cast<int32>(entries_.size());
-            entries_.push_back(Entry{box, tag, true});
-        } else {
-            proxy = free_.back();
-            free_.pop_back();
-            entries_[static_cast<size_t>(proxy)] = Entry{box, tag, true};
-        }
-        return proxy;
-    }
-    void move(int32 proxy, const b2AABB &box) override { entries_[static_cast<size_t>(proxy)].box = box; }
-    void remove(int32 proxy) override {
-        entries_[static_cast<size_t>(proxy)].live = false;
-        free_.push_back(proxy);
-    }
-    void query(const b2AABB &box, std::vector<uintptr_t> &tags) override {
-        for (const Entry &e : entries_)
-            if (e.live && b2TestOverlap(e.box, box)) tags.push_back(e.tag);
-    }
-
-private:
-    struct Entry {
-        b2AABB box;
-        uintptr_t tag;
-        bool live;
-    };
-    std::vector<Entry> entries_;
-    std::vector<int32> free_;
-};
-
 }  // namespace
-
-std::unique_ptr<Broadphase> make_box_list() { return std::unique_ptr<Broadphase>(new BoxList()); }
 
 std::unique_ptr<Broadphase> make_dynamic_tree() { return std::unique_ptr<Broadphase>(new DynamicTree()); }
 

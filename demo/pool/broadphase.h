@@ -42,10 +42,6 @@ public:
 
 std::unique_ptr<Broadphase> make_dynamic_tree();
 
-// Every box in one array, a query scanning them all: O(N) a query, O(1) a
-// move; for a few dozen boxes (the pool table) the fastest of the three.
-std::unique_ptr<Broadphase> make_box_list();
-
 // A grid of square cells `cell` units wide over `region`; a box beyond the
 // region is listed in the border cells it faces, so nothing is ever missed,
 // only slower to find.
