@@ -117,16 +117,19 @@ void Simulation::step() {
 
 namespace {
 
-ShotOutcome play(const SimConfig &config, const std::vector<Ball> &balls, const Shot *shot) {
+ShotOutcome play(const SimConfig &config, const std::vector<Ball> &balls, const Shot *shot,
+                 const Engine::StopWhen *stop) {
     const Table table = scene_table(config.scene, config.table);
     std::unique_ptr<Engine> engine = make_engine(config, balls, table);
     ShotOutcome out{};
     FrameLog log;
     const int cue = cue_index(balls);
-    if (shot && cue >= 0 && balls[static_cast<size_t>(cue)].active) out.events.push_back(strike_cue(*engine, cue, *shot));
+    if (shot && cue >= 0 && balls[static_cast<size_t>(cue)].active) log.events.push_back(strike_cue(*engine, cue, *shot));
+    if (stop) engine->stop_when(*stop);
     const double start = engine->now();
     out.settled = engine->settle(3600, out.stats, log);
-    out.events.insert(out.events.end(), log.events.begin(), log.events.end());
+    out.stopped = !out.settled && stop && engine->now() - start < 3600;
+    out.events = std::move(log.events);
     out.balls = engine->balls();
     out.seconds = engine->now() - start;
     return out;
@@ -135,11 +138,16 @@ ShotOutcome play(const SimConfig &config, const std::vector<Ball> &balls, const 
 }  // namespace
 
 ShotOutcome simulate_shot(const SimConfig &config, const std::vector<Ball> &balls, const Shot &shot) {
-    return play(config, balls, &shot);
+    return play(config, balls, &shot, nullptr);
+}
+
+ShotOutcome simulate_shot(const SimConfig &config, const std::vector<Ball> &balls, const Shot &shot,
+                          const Engine::StopWhen &stop) {
+    return play(config, balls, &shot, &stop);
 }
 
 ShotOutcome simulate_to_rest(const SimConfig &config, const std::vector<Ball> &balls) {
-    return play(config, balls, nullptr);
+    return play(config, balls, nullptr, nullptr);
 }
 
 void run(Simulation &sim, Driver &driver) {

@@ -885,13 +885,18 @@ void WorldEngine::step(double dt, Stats &stats, FrameLog &log) {
     advance(world_now_ + dt, stats, log, true);
 }
 
-// Runs a second of the world at a time until every ball stands still (the
-// last event's time is then the run's end) or max_seconds are over; the
-// world's frame independence makes the chunks the same as one advance.
+// Runs a second of the world at a time (a quarter with a stop question,
+// asked after each) until every ball stands still (the last event's time
+// is then the run's end), max_seconds are over or the question says stop;
+// the world's frame independence makes the chunks the same as one advance.
 bool WorldEngine::settle(double max_seconds, Stats &stats, FrameLog &log) {
     const double end = world_now_ + max_seconds;
     last_event_ = world_now_;
-    while (moving() && world_now_ < end) advance(std::min(end, world_now_ + 1.0), stats, log, false);
+    const double stretch = stop_ ? kStopStretch : 1.0;
+    while (moving() && world_now_ < end) {
+        advance(std::min(end, world_now_ + stretch), stats, log, false);
+        if (stop_ && moving() && stop_(log.events)) break;
+    }
     settled_ = !moving();
     return settled_;
 }
