@@ -19,6 +19,7 @@
 #   demo/tests/  test_physics (pool), test_game (game), check.h (their
 #                tally), test_demo.sh (the program, and the layering),
 #                png_check
+#                opponent_bench (the opponent's time per turn; not a test)
 #   demo/tools/  plots.sh (make demo-plots)
 # Includes name their layer (-Idemo: #include "pool/sim.h"), so a layer's
 # dependencies show in its include lines; test_demo.sh checks them.  Header
@@ -35,7 +36,8 @@ DEMO_APP_SRC := $(wildcard demo/app/*.cpp)
 DEMO_POOL_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_POOL_SRC))
 DEMO_GAME_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_GAME_SRC))
 DEMO_APP_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_APP_SRC))
-DEMO_TEST_OBJ := $(B)/demo/tests/test_physics.o $(B)/demo/tests/test_game.o $(B)/demo/tests/png_check.o
+DEMO_TEST_OBJ := $(B)/demo/tests/test_physics.o $(B)/demo/tests/test_game.o $(B)/demo/tests/png_check.o \
+                 $(B)/demo/tests/opponent_bench.o
 DEMO_POOL_LIB := $(B)/demo/libpool.a
 DEMO_GAME_LIB := $(B)/demo/libgame.a
 DEMO_BIN := $(B)/billiards
@@ -94,6 +96,11 @@ $(B)/test_physics: $(B)/demo/tests/test_physics.o $(DEMO_POOL_LIB) $(STATIC)
 
 # 8-ball: the rules on constructed shots, and computer-versus-computer games
 $(B)/test_game: $(B)/demo/tests/test_game.o $(DEMO_GAME_LIB) $(DEMO_POOL_LIB) $(STATIC)
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lbox2d -lm
+
+# The opponent's thinking time per turn (CPU medians, a digest of the shots
+# chosen); a measurement, not a test: demo/tests/opponent_bench.cpp
+$(B)/opponent_bench: $(B)/demo/tests/opponent_bench.o $(DEMO_GAME_LIB) $(DEMO_POOL_LIB) $(STATIC)
 	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lbox2d -lm
 
 test-demo: $(DEMO_BIN) $(B)/png_check $(B)/test_physics $(B)/test_game | demo-test-deps

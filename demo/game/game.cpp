@@ -33,6 +33,7 @@ GameRecord play_computer_game(const SimConfig &config, uint64_t seed) {
         r.cue = plan.cue;
         r.candidates = plan.candidates;
         r.think_seconds = plan.think_seconds;
+        r.cpu_seconds = plan.cpu_seconds;
         const ShotOutcome out = simulate_shot(config, balls, plan.shot);
         const ShotFacts facts = shot_facts(out.events, balls);
         const Verdict v = apply_shot(state, facts, balls);

@@ -27,6 +27,7 @@ struct ShotRecord {
     bool keeps_turn = false;
     int candidates = 0;       // shots the computer simulated to choose it
     double think_seconds = 0; // wall time (not deterministic)
+    double cpu_seconds = 0;   // CPU time of the choosing (not deterministic)
 };
 
 struct GameRecord {

@@ -11,10 +11,18 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 namespace demo {
 
 namespace {
+
+// The calling thread's CPU time, s (wall time misleads on a shared machine).
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 constexpr double kMaxCutDeg = 75;
 constexpr double kWin = 1e6, kFoulScore = -1000, kUnsettled = -1e5;
@@ -142,6 +150,32 @@ std::vector<Ball> with_cue_at(const std::vector<Ball> &balls, Point p) {
     return out;
 }
 
+// Whether the events of a shot so far (the strike first; from: the table
+// before it) already make it a foul or a loss, whatever else happens: the
+// cue ball pocketed (a scratch), its first contact with a ball not
+// `state`'s shooter may hit first, the 8 pocketed before the group is
+// cleared (rules.cpp: foul_of, apply_shot).  Each such shot scores
+// kFoulScore or less (a loss, a foul, or unsettled below that).  (8: the
+// eight ball, rules.cpp's kEight.)  `seen`
+// carries the events already read and the first contact across calls.
+struct Doom {
+    size_t seen = 0;
+    bool hit = false;
+    bool check(const GameState &state, const std::vector<Ball> &from, const std::vector<Event> &events) {
+        const bool on_the_eight = group_cleared(state, from);
+        for (; seen < events.size(); ++seen) {
+            const Event &e = events[seen];
+            const int n = from[static_cast<size_t>(e.ball)].number;
+            if (e.kind == EventKind::Pocket && (n == 0 || (n == 8 && !on_the_eight))) return true;
+            if (e.kind == EventKind::BallBall && n == 0 && !hit) {
+                hit = true;
+                if (!legal_target(state, from[static_cast<size_t>(e.other)].number, from)) return true;
+            }
+        }
+        return false;
+    }
+};
+
 }  // namespace
 
 double best_ease(const GameState &state, const Table &table, const std::vector<Ball> &balls) {
@@ -153,10 +187,13 @@ double best_ease(const GameState &state, const Table &table, const std::vector<B
 }
 
 Opponent::Opponent(const SimConfig &config, uint64_t seed)
-    : config_(config), table_(scene_table(config.scene, config.table)), rng_(seed ^ 0x6f70706f6e656e74ULL) {}
+    : config_(config), table_(scene_table(config.scene, config.table)), rng_(seed ^ 0x6f70706f6e656e74ULL) {
+    if (config_.broadphase == WorldBroadphase::Tree) config_.broadphase = WorldBroadphase::List;
+}
 
 Plan Opponent::choose(const GameState &state, const std::vector<Ball> &balls) {
     const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = thread_cpu_seconds();
     Plan plan;
     if (state.breaking) {
         plan.shot = Shot{0, kBreakSpeed};
@@ -180,9 +217,20 @@ Plan Opponent::choose(const GameState &state, const std::vector<Ball> &balls) {
         plan.place_cue = state.ball_in_hand;
         plan.cue = spot;
         double best = -INFINITY;
+        // Two cuts that never change the choice (a later candidate replaces
+        // the best only with a strictly higher score): once a win is found
+        // nothing can beat it, and once a shot scoring kFoulScore or more is
+        // found a run bound to foul or lose (Doom) is ended at once.
         for (const Candidate &c : cands) {
+            if (best >= kWin) break;
             const std::vector<Ball> from = c.place_cue ? with_cue_at(balls, c.cue) : balls;
-            const ShotOutcome out = simulate_shot(config_, from, c.shot);
+            Doom doom;
+            const ShotOutcome out =
+                best >= kFoulScore
+                    ? simulate_shot(config_, from, c.shot,
+                                    [&](const std::vector<Event> &events) { return doom.check(state, from, events); })
+                    : simulate_shot(config_, from, c.shot);
+            if (out.stopped) continue;
             GameState next = state;
             const Verdict v = apply_shot(next, shot_facts(out.events, from), from);
             double score;
@@ -204,6 +252,7 @@ Plan Opponent::choose(const GameState &state, const std::vector<Ball> &balls) {
     plan.shot.angle_deg += kAngleError * (2 * rng_.uniform() - 1);
     plan.shot.speed = std::min(kMaxShotSpeed, plan.shot.speed * (1 + kSpeedError * (2 * rng_.uniform() - 1)));
     plan.think_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    plan.cpu_seconds = thread_cpu_seconds() - cpu_start;
     return plan;
 }
 

@@ -8,6 +8,7 @@
 #define C2D_DEMO_ENGINE_H
 
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -84,10 +85,20 @@ public:
     // The simulated time, s.
     virtual double now() const = 0;
     const std::vector<Ball> &balls() const { return balls_; }
+    // A question settle asks between stretches of the run (kStopStretch
+    // simulated seconds each) with log.events so far: true ends the run
+    // there, not at rest (settle returns false).  For a caller that knows
+    // early that it has seen enough (the opponent, of a shot that fouls);
+    // the stretches change nothing else (the world's frame independence).
+    // The world engine asks it; Box2D's ignores it.
+    using StopWhen = std::function<bool(const std::vector<Event> &)>;
+    static constexpr double kStopStretch = 0.25;
+    void stop_when(StopWhen stop) { stop_ = std::move(stop); }
 
 protected:
     explicit Engine(const std::vector<Ball> &balls) : balls_(balls) {}
     std::vector<Ball> balls_;
+    StopWhen stop_;
 };
 
 }  // namespace demo

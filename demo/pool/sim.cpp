@@ -18,9 +18,7 @@ std::unique_ptr<Engine> make_engine(const SimConfig &config, const std::vector<B
     // the pool scenes' candidates from Box2D's tree; the gas's and the
     // cradle's from the world's cells (100,000 disks: the cells are faster)
     const bool pool = config.scene != Scene::Gas && config.scene != Scene::Cradle;
-    return make_world_engine(balls, table, config.model,
-                             pool && config.broadphase == WorldBroadphase::Tree ? WorldBroadphase::Tree
-                                                                                : WorldBroadphase::Cells);
+    return make_world_engine(balls, table, config.model, pool ? config.broadphase : WorldBroadphase::Cells);
 }
 
 // The cue ball's index, or -1.
@@ -119,17 +117,20 @@ void Simulation::step() {
 
 namespace {
 
-ShotOutcome play(const SimConfig &config, const std::vector<Ball> &balls, const Shot *shot) {
+ShotOutcome play(const SimConfig &config, const std::vector<Ball> &balls, const Shot *shot,
+                 const Engine::StopWhen *stop) {
     const Table table = scene_table(config.scene, config.table);
     std::unique_ptr<Engine> engine = make_engine(config, balls, table);
     ShotOutcome out{};
     FrameLog log;
     const int cue = cue_index(balls);
     if (shot && cue >= 0 && balls[static_cast<size_t>(cue)].active)
-        out.events.push_back(strike_cue(*engine, cue, *shot, config.model));
+        log.events.push_back(strike_cue(*engine, cue, *shot, config.model));
+    if (stop) engine->stop_when(*stop);
     const double start = engine->now();
     out.settled = engine->settle(3600, out.stats, log);
-    out.events.insert(out.events.end(), log.events.begin(), log.events.end());
+    out.stopped = !out.settled && stop && engine->now() - start < 3600;
+    out.events = std::move(log.events);
     out.balls = engine->balls();
     out.seconds = engine->now() - start;
     return out;
@@ -138,11 +139,16 @@ ShotOutcome play(const SimConfig &config, const std::vector<Ball> &balls, const 
 }  // namespace
 
 ShotOutcome simulate_shot(const SimConfig &config, const std::vector<Ball> &balls, const Shot &shot) {
-    return play(config, balls, &shot);
+    return play(config, balls, &shot, nullptr);
+}
+
+ShotOutcome simulate_shot(const SimConfig &config, const std::vector<Ball> &balls, const Shot &shot,
+                          const Engine::StopWhen &stop) {
+    return play(config, balls, &shot, &stop);
 }
 
 ShotOutcome simulate_to_rest(const SimConfig &config, const std::vector<Ball> &balls) {
-    return play(config, balls, nullptr);
+    return play(config, balls, nullptr, nullptr);
 }
 
 void run(Simulation &sim, Driver &driver) {

@@ -156,8 +156,13 @@ struct ShotOutcome {
     Stats stats;                // collisions, pocketed (object balls), scratches
     double seconds;             // from the strike until the last ball stopped
     bool settled;               // false: not at rest after an hour, or the event budget ran out
+    bool stopped = false;       // ended early by the caller's question (not settled either)
 };
 ShotOutcome simulate_shot(const SimConfig &config, const std::vector<Ball> &balls, const Shot &shot);
+// The same, ending early once stop (asked every Engine::kStopStretch
+// simulated seconds with the events so far, the strike first) says so.
+ShotOutcome simulate_shot(const SimConfig &config, const std::vector<Ball> &balls, const Shot &shot,
+                          const Engine::StopWhen &stop);
 // The same from a table already in motion (balls with velocities and spins;
 // each ball's motion state is worked out from them), without a strike.
 ShotOutcome simulate_to_rest(const SimConfig &config, const std::vector<Ball> &balls);

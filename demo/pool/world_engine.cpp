@@ -95,6 +95,10 @@ private:
     static void tree_insert(void *user, size_t disk, const c2d_world_box *box);
     static void tree_move(void *user, size_t disk, const c2d_world_box *box);
     static void tree_remove(void *user, size_t disk);
+    static void list_insert(void *user, size_t disk, const c2d_world_box *box);
+    static void list_move(void *user, size_t disk, const c2d_world_box *box);
+    static void list_remove(void *user, size_t disk);
+    static void list_query(void *user, const c2d_world_box *box, c2d_world_report report, void *context);
     static void tree_query(void *user, const c2d_world_box *box, c2d_world_report report, void *context);
     static c2d_status resolve_impact(void *user, const c2d_world_contact *c, c2d_body *a, c2d_body *b);
     static c2d_status resolve_static(void *user, const c2d_world_contact *c, c2d_body *a, c2d_body *b);
@@ -147,11 +151,16 @@ private:
     std::vector<Feature> statics_;  // by the world's static index
     std::vector<Segment> faces_;  // what a ball can lean on: the rails' cushions, the jaws' facings
     std::vector<uint64_t> memory_;  // the world's buffer (8-byte aligned)
-    const bool use_tree_;           // Box2D's tree finds the world's candidates (else its cells)
+    const bool use_tree_;           // a caller broadphase (Box2D's tree or the box list) finds the candidates, else the cells
+    const bool use_list_;           // that broadphase is the box list
     c2d_world_broadphase tree_calls_{};
     std::unique_ptr<Broadphase> tree_;  // each disk's box, tagged with its index
     std::vector<int32> proxy_;          // disk -> the tree's proxy
     std::vector<uintptr_t> found_;      // a query's tags
+    // the list: each disk's box by disk, in double (no rounding to the
+    // tree's floats), and whether it is in the world
+    std::vector<c2d_world_box> boxes_;
+    std::vector<unsigned char> listed_;
     c2d_world *world_ = nullptr;
     std::vector<size_t> world_index_;  // ball -> disk, kNoDisk off the table
     std::vector<int> ball_of_;         // disk -> ball
@@ -179,7 +188,7 @@ WorldEngine::WorldEngine(const std::vector<Ball> &balls, const Table &table, con
                          WorldBroadphase broadphase)
     : Engine(balls), model_(model), table_(table), walls_(is_closed_box(table)),
       offset_(is_closed_box(table) ? 0.0 : kMargin), faces_(table.cushions),
-      use_tree_(broadphase == WorldBroadphase::Tree) {
+      use_tree_(broadphase != WorldBroadphase::Cells), use_list_(broadphase == WorldBroadphase::List) {
     for (const Pocket &p : table.pockets)
         for (const Jaw &j : p.jaws) faces_.push_back(j.facing);
     track_.resize(balls_.size());
@@ -246,10 +255,17 @@ void WorldEngine::build() {
         d.resolve_static = &WorldEngine::resolve_static;
     }
     if (use_tree_) {
-        tree_ = make_dynamic_tree();
-        proxy_.clear();
-        tree_calls_ = c2d_world_broadphase{&WorldEngine::tree_insert, &WorldEngine::tree_move, &WorldEngine::tree_remove,
-                                           &WorldEngine::tree_query, this, 0};
+        if (use_list_) {
+            boxes_.clear();
+            listed_.clear();
+            tree_calls_ = c2d_world_broadphase{&WorldEngine::list_insert, &WorldEngine::list_move,
+                                               &WorldEngine::list_remove, &WorldEngine::list_query, this, 0};
+        } else {
+            tree_ = make_dynamic_tree();
+            proxy_.clear();
+            tree_calls_ = c2d_world_broadphase{&WorldEngine::tree_insert, &WorldEngine::tree_move,
+                                               &WorldEngine::tree_remove, &WorldEngine::tree_query, this, 0};
+        }
         d.broadphase = &tree_calls_;
     }
     add_statics(d.statics, false);
@@ -621,6 +637,40 @@ void WorldEngine::tree_query(void *user, const c2d_world_box *box, c2d_world_rep
     for (uintptr_t tag : w.found_) report(context, static_cast<size_t>(tag));
 }
 
+// --- a plain list as the world's broadphase -----------------------------
+
+// Every disk's box in an array by disk, a query comparing it with each: on
+// the pool table's 16 balls 16 comparisons of doubles cost less than one
+// descent of the tree, a move is one store (the tree removes, re-inserts and
+// rebalances a leaf), and no box is rounded to float.  Touching counts (as
+// the tree's b2TestOverlap); the world's results are the same bits whatever
+// broadphase finds the candidates.
+void WorldEngine::list_insert(void *user, size_t disk, const c2d_world_box *box) {
+    WorldEngine &w = *static_cast<WorldEngine *>(user);
+    if (w.boxes_.size() <= disk) {
+        w.boxes_.resize(disk + 1);
+        w.listed_.resize(disk + 1, 0);
+    }
+    w.boxes_[disk] = *box;
+    w.listed_[disk] = 1;
+}
+
+void WorldEngine::list_move(void *user, size_t disk, const c2d_world_box *box) {
+    static_cast<WorldEngine *>(user)->boxes_[disk] = *box;
+}
+
+void WorldEngine::list_remove(void *user, size_t disk) { static_cast<WorldEngine *>(user)->listed_[disk] = 0; }
+
+void WorldEngine::list_query(void *user, const c2d_world_box *box, c2d_world_report report, void *context) {
+    const WorldEngine &w = *static_cast<const WorldEngine *>(user);
+    const c2d_world_box q = *box;
+    for (size_t disk = 0; disk < w.boxes_.size(); ++disk) {
+        const c2d_world_box &b = w.boxes_[disk];
+        if (w.listed_[disk] && b.lo.x <= q.hi.x && q.lo.x <= b.hi.x && b.lo.y <= q.hi.y && q.lo.y <= b.hi.y)
+            report(context, disk);
+    }
+}
+
 // --- events ------------------------------------------------------------
 
 void WorldEngine::on_event(void *user, const c2d_world_event *event) {
@@ -835,13 +885,18 @@ void WorldEngine::step(double dt, Stats &stats, FrameLog &log) {
     advance(world_now_ + dt, stats, log, true);
 }
 
-// Runs a second of the world at a time until every ball stands still (the
-// last event's time is then the run's end) or max_seconds are over; the
-// world's frame independence makes the chunks the same as one advance.
+// Runs a second of the world at a time (a quarter with a stop question,
+// asked after each) until every ball stands still (the last event's time
+// is then the run's end), max_seconds are over or the question says stop;
+// the world's frame independence makes the chunks the same as one advance.
 bool WorldEngine::settle(double max_seconds, Stats &stats, FrameLog &log) {
     const double end = world_now_ + max_seconds;
     last_event_ = world_now_;
-    while (moving() && world_now_ < end) advance(std::min(end, world_now_ + 1.0), stats, log, false);
+    const double stretch = stop_ ? kStopStretch : 1.0;
+    while (moving() && world_now_ < end) {
+        advance(std::min(end, world_now_ + stretch), stats, log, false);
+        if (stop_ && moving() && stop_(log.events)) break;
+    }
     settled_ = !moving();
     return settled_;
 }

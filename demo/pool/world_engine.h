@@ -20,7 +20,10 @@ namespace demo {
 // candidates, the library resolves), or the world's built-in cells.  The
 // events and states are the same bits either way (the world's contract);
 // only the time differs.
-enum class WorldBroadphase { Tree, Cells };
+// List: a caller broadphase that compares the query with every disk's box
+// (in double), which the computer opponent uses for its many short runs on
+// a table of 16 balls: cheaper than the tree there.
+enum class WorldBroadphase { Tree, Cells, List };
 
 std::unique_ptr<Engine> make_world_engine(const std::vector<Ball> &balls, const Table &table, const Model &model,
                                           WorldBroadphase broadphase = WorldBroadphase::Cells);
