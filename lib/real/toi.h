@@ -338,6 +338,74 @@ C2D_COLD c2d_status c2d_toi_exact(const c2d_real_body *a, const c2d_real_body *b
 /* A decision the fast path can take: |x - y| clears the error bound. */
 static int c2d_clear_of(c2d_real x, c2d_real y, c2d_real bound) { return c2d_abs(x - y) > bound; }
 
+/* Every input 0 or of magnitude within [2^-W, 2^W] (W = C2D_R_TOI_WINDOW:
+ * 100 double, 12 float).  Then the power-of-two scaling cannot matter: d's
+ * and v's parts, their products and every later quantity stay far inside
+ * the normal range with or without it (the smallest nonzero part is an ulp
+ * of an input, 2^-(W + MANT); products of two such are still normal, and
+ * the filters' 2^(EMIN + 4) floor stays below half an ulp of the bounds it
+ * is added to), so each operation rounds the same scaled or not: the
+ * scaling is skipped, with the same bits. */
+static int c2d_toi_in_window(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum)
+{
+    const c2d_real lo = c2d_pow2(-C2D_R_TOI_WINDOW), hi = c2d_pow2(C2D_R_TOI_WINDOW);
+    c2d_real x[9];
+    int i, in = 1;
+    x[0] = a->pos.x, x[1] = a->pos.y, x[2] = b->pos.x, x[3] = b->pos.y;
+    x[4] = a->vel.x, x[5] = a->vel.y, x[6] = b->vel.x, x[7] = b->vel.y, x[8] = radius_sum;
+    for (i = 0; i < 9; i++) {
+        const c2d_real m = c2d_abs(x[i]);
+        in &= (int)(m == 0) | ((int)(m >= lo) & (int)(m <= hi));
+    }
+    return in;
+}
+
+/* The exact sign of |d|^2 - R^2 for d = h + l given exactly (a TwoSum per
+ * component).  Expanded, (hx + lx)^2 + (hy + ly)^2 - R^2 is a sum of seven
+ * products, h^2, 2hl and l^2 per axis and -R^2, each split by TwoProduct
+ * into two floating numbers; the fourteen are summed exactly by
+ * GROW-EXPANSION (real/arith/exact.h), whose largest component carries the
+ * sign.  Exact when every product and its rounding error is normal: inputs
+ * in the window (below) make every part a multiple of 2^-(W + MANT), so
+ * every nonzero product error is at least 2^-2(W + MANT), far above the
+ * normal range's floor, and no product exceeds 2^(2W + 4). */
+static int c2d_toi_gap_sign(const c2d_real *h, const c2d_real *l, c2d_real r)
+{
+    c2d_real ex[14], p[7], e[7];
+    int i, k = 0;
+    p[0] = c2d_two_prod(h[0], h[0], &e[0]);
+    p[1] = c2d_two_prod(2 * h[0], l[0], &e[1]);
+    p[2] = c2d_two_prod(l[0], l[0], &e[2]);
+    p[3] = c2d_two_prod(h[1], h[1], &e[3]);
+    p[4] = c2d_two_prod(2 * h[1], l[1], &e[4]);
+    p[5] = c2d_two_prod(l[1], l[1], &e[5]);
+    p[6] = c2d_two_prod(-r, r, &e[6]);
+    for (i = 0; i < 7; i++) {
+        k = c2d_grow(ex, k, e[i]);
+        k = c2d_grow(ex, k, p[i]);
+    }
+    return k == 0 ? 0 : (ex[k - 1] > 0 ? 1 : -1);
+}
+
+/* A touching pair (|d| = R to rounding, so the plain filter on |d|^2 - R^2
+ * cannot decide), approaching (d.v < 0, decided): two pool balls resting in
+ * contact, one rolling into the other.  The exact sign of |d|^2 - R^2
+ * decides, as it does in c2d_toi_exact: at most 0 is a hit now, t = 0;
+ * above 0 the time is c2d_toi_exact's and this returns 0 for the careful
+ * path.  Only for inputs in the window, where c2d_toi_gap_sign is exact. */
+C2D_COLD int c2d_toi_touching(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, c2d_real *t,
+                            c2d_status *status)
+{
+    c2d_real h[2], l[2];
+    if (c2d_toi_in_window(a, b, radius_sum) == 0) return 0;
+    h[0] = c2d_two_sum(b->pos.x, -a->pos.x, &l[0]);
+    h[1] = c2d_two_sum(b->pos.y, -a->pos.y, &l[1]);
+    if (c2d_toi_gap_sign(h, l, radius_sum) > 0) return 0;
+    *t = 0;
+    *status = C2D_OK;
+    return 1;
+}
+
 /* ------------------------------------------------------------ plain path
  * In plain arithmetic, for pairs whose differences are moderate.  With d, v
  * the rounded differences (each component within u of its exact value,
@@ -358,8 +426,10 @@ static int c2d_clear_of(c2d_real x, c2d_real y, c2d_real bound) { return c2d_abs
  * (a few u) pass to t unamplified; c's absolute error, about u |d|^2, is the
  * time one rounding of |d| is worth at the approach speed; the cross
  * product's error moves sqrt(disc) by at most 2h/R of that unit
- * (docs/METHOD.md).  Measured worst: docs/ACCURACY.md.  Returns 0 when it
- * cannot decide. */
+ * (docs/METHOD.md).  Measured worst: docs/ACCURACY.md.  Returns 1 when it
+ * decided, 0 when it cannot, 2 when it cannot because |d| = R to rounding
+ * with d.v < 0 decided (for c2d_toi_touching: returned rather than called
+ * from here, which costs the ordinary pair registers). */
 static inline int c2d_toi_plain(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, c2d_real *t,
                                 c2d_status *status)
 {
@@ -393,7 +463,7 @@ static inline int c2d_toi_plain(const c2d_real_body *a, const c2d_real_body *b, 
      * (cross's error 4u k', so its square's 8u |d x v| k' + ...). */
     q = dx * dx + dy * dy;
     r2 = r * r;
-    if (!c2d_clear_of(q, r2, u16 * (q > r2 ? q : r2))) return 0;
+    if (!c2d_clear_of(q, r2, u16 * (q > r2 ? q : r2))) return 2; /* touching: c2d_toi_touching */
     if (q < r2) {
         *t = 0;
         *status = C2D_OK;
@@ -413,28 +483,6 @@ static inline int c2d_toi_plain(const c2d_real_body *a, const c2d_real_body *b, 
     *t = (dist - r) * (dist + r) / (speed * C2D_R_SQRT((r - h) * (r + h)) - dv);
     *status = C2D_OK;
     return 1;
-}
-
-/* Every input 0 or of magnitude within [2^-W, 2^W] (W = C2D_R_TOI_WINDOW:
- * 100 double, 12 float).  Then the power-of-two scaling cannot matter: d's
- * and v's parts, their products and every later quantity stay far inside
- * the normal range with or without it (the smallest nonzero part is an ulp
- * of an input, 2^-(W + MANT); products of two such are still normal, and
- * the filters' 2^(EMIN + 4) floor stays below half an ulp of the bounds it
- * is added to), so each operation rounds the same scaled or not: the
- * scaling is skipped, with the same bits. */
-static int c2d_toi_in_window(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum)
-{
-    const c2d_real lo = c2d_pow2(-C2D_R_TOI_WINDOW), hi = c2d_pow2(C2D_R_TOI_WINDOW);
-    c2d_real x[9];
-    int i, in = 1;
-    x[0] = a->pos.x, x[1] = a->pos.y, x[2] = b->pos.x, x[3] = b->pos.y;
-    x[4] = a->vel.x, x[5] = a->vel.y, x[6] = b->vel.x, x[7] = b->vel.y, x[8] = radius_sum;
-    for (i = 0; i < 9; i++) {
-        const c2d_real m = c2d_abs(x[i]);
-        in &= (int)(m == 0) | ((int)(m >= lo) & (int)(m <= hi));
-    }
-    return in;
 }
 
 /* Everything the plain path left: validation, then the double-double path
@@ -506,7 +554,15 @@ static c2d_status c2d_real_time_of_impact(const c2d_real_body *a, const c2d_real
 {
     c2d_status plain;
     if (a == NULL || b == NULL || t == NULL) return C2D_INVALID;
-    if (c2d_toi_plain(a, b, radius_sum, t, &plain) != 0) return plain;
+    switch (c2d_toi_plain(a, b, radius_sum, t, &plain)) {
+    case 1:
+        return plain;
+    case 2:
+        if (c2d_toi_touching(a, b, radius_sum, t, &plain) != 0) return plain;
+        break;
+    default:
+        break;
+    }
     return c2d_toi_careful(a, b, radius_sum, t);
 }
 
