@@ -58,10 +58,12 @@ typedef struct c2d_toia_values {
  * vanish there, which the error floors cover), nonzero[k] = the vector is
  * not zero, and the radius R.  The exact paths take the parts as extended
  * numbers straight from the inputs kept here (c2d_toia_part), each vector's
- * formed once, on first use, in *parts (an ordinary pair never asks). */
+ * formed once, on first use, in *parts (an ordinary pair never asks), as
+ * are the four exact sums of products the splits ask for again and again. */
 typedef struct c2d_toia_parts {
     c2d_ext x[3][2][2]; /* [vector][axis][hi, lo] */
-    int ready[3];
+    c2d_dd dot[4];      /* the exact sums of c2d_toia_dot_inputs, likewise */
+    unsigned ready;     /* bit k: x[k] formed; bit 3 + s: dot[s] formed */
 } c2d_toia_parts;
 
 typedef struct c2d_toia_ctx {
