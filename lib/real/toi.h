@@ -371,15 +371,30 @@ static int c2d_toi_in_window(const c2d_real_body *a, const c2d_real_body *b, c2d
  * normal range's floor, and no product exceeds 2^(2W + 4). */
 static int c2d_toi_gap_sign(const c2d_real *h, const c2d_real *l, c2d_real r)
 {
-    c2d_real ex[14], p[7], e[7];
+    const c2d_real u16 = c2d_pow2(-C2D_R_MANT + 3); /* 16u */
+    c2d_real ex[14], p[7], e[7], s1, t1, s2, t2, x0, x1, v, m;
     int i, k = 0;
+    /* The filter: the large terms' cancellation exactly (hx^2 + hy^2 - R^2
+     * by TwoProduct and TwoSum: s2 + t1 + t2 + e0 + e1 + e6), the small
+     * rest in plain arithmetic.  Ten terms summed in order (error 9u (1 +
+     * 9u) of their magnitudes), four of them rounded products (u each): a
+     * value beyond 16u of the magnitudes has the exact sign. */
     p[0] = c2d_two_prod(h[0], h[0], &e[0]);
+    p[3] = c2d_two_prod(h[1], h[1], &e[3]);
+    p[6] = c2d_two_prod(-r, r, &e[6]);
+    s1 = c2d_two_sum(p[0], p[3], &t1);
+    s2 = c2d_two_sum(s1, p[6], &t2);
+    x0 = 2 * h[0] * l[0];
+    x1 = 2 * h[1] * l[1];
+    v = s2 + t1 + t2 + e[0] + e[3] + e[6] + x0 + x1 + l[0] * l[0] + l[1] * l[1];
+    m = c2d_abs(s2) + c2d_abs(t1) + c2d_abs(t2) + c2d_abs(e[0]) + c2d_abs(e[3]) + c2d_abs(e[6]) + c2d_abs(x0) +
+        c2d_abs(x1) + l[0] * l[0] + l[1] * l[1];
+    if (c2d_abs(v) > u16 * m) return v > 0 ? 1 : -1;
+    /* Else the exact sum. */
     p[1] = c2d_two_prod(2 * h[0], l[0], &e[1]);
     p[2] = c2d_two_prod(l[0], l[0], &e[2]);
-    p[3] = c2d_two_prod(h[1], h[1], &e[3]);
     p[4] = c2d_two_prod(2 * h[1], l[1], &e[4]);
     p[5] = c2d_two_prod(l[1], l[1], &e[5]);
-    p[6] = c2d_two_prod(-r, r, &e[6]);
     for (i = 0; i < 7; i++) {
         k = c2d_grow(ex, k, e[i]);
         k = c2d_grow(ex, k, p[i]);

@@ -385,9 +385,9 @@ static void test_float_statuses_exact_at_any_magnitude_ratio(void **state)
  * |d|^2 - R^2 cannot decide these; approaching ones are taken by
  * c2d_toi_touching (real/toi.h): |d| <= R exactly (from that sign's exact
  * TwoProduct expansion) is a hit now, |d| > R a hit later whose time is
- * c2d_toi_exact's, computed by c2d_toi_mirror in double where its window
- * allows (about a third of the double cases), else by the careful and
- * exact paths; receding ones by the plain path's sign of d.v.  Part of
+ * c2d_toi_exact's (computed by c2d_toi_mirror in double where its window
+ * allows and the careful path would call the exact one) or the careful
+ * path's; receding ones by the plain path's sign of d.v.  Part of
  * the cases are scaled by 2^k so that some leave the window where the
  * expansion is exact (they must take the careful path).  Statuses and
  * times against the referee; the counts (hits now, later, separating) are
