@@ -217,7 +217,7 @@ c2d_status c2d_time_of_impact(const c2d_body *a, const c2d_body *b, double radiu
  *                  tie (exact evaluation): 9,000-22,000 instructions for
  *                  touching pool balls (side by side, pressed together,
  *                  rolling apart); stack up to ~3 KB (x86-64 double),
- *                  1.6 KB (Cortex-M4F float). */
+ *                  1.8 KB (Cortex-M4F float). */
 c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a, const c2d_body *b, c2d_vec2 acc_b,
                                     double radius_sum, double horizon, double *t);
 
