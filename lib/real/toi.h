@@ -403,7 +403,8 @@ static int c2d_toi_gap_sign(const c2d_real *h, const c2d_real *l, c2d_real r)
 }
 
 /* c2d_toi_exact's arithmetic, step for step, in plain floating point, for
- * inputs 0 or within [2^-N, 2^N], N = C2D_TOI_NARROW (47 in double; float's
+ * inputs 0 or within [2^-N, 2^N], N = (C2D_R_WINDOW - 4 MANT - 9) / 8 (47
+ * in double; float's
  * exact-sum window is too narrow for any N, so it always takes the exact
  * path).  There every part of d and v, R and every exact component is a
  * multiple of 2^-(N + MANT) (degree 1), 2^-2(N + MANT) (degree 2) or
@@ -416,7 +417,6 @@ static int c2d_toi_gap_sign(const c2d_real *h, const c2d_real *l, c2d_real r)
  * expansions, the same rounded sums and, with c2d_ext_sqrt, c2d_ext_add and
  * c2d_ext_div correctly rounded like the operations here, the same t. */
 #if (C2D_R_WINDOW - 4 * C2D_R_MANT - 9) / 8 > 0
-enum { C2D_TOI_NARROW = (C2D_R_WINDOW - 4 * C2D_R_MANT - 9) / 8 };
 
 typedef struct c2d_toi_macc {
     c2d_real atom[C2D_ATOMS];
@@ -444,7 +444,7 @@ static int c2d_toi_mcompress(c2d_real *atom, int n)
 /* c2d_exact_sum in one window: the components added smallest first. */
 static c2d_real c2d_toi_mvalue(const c2d_toi_macc *acc)
 {
-    c2d_real ex[C2D_ATOMS], approx = 0;
+    c2d_real ex[C2D_ATOMS], approx = (c2d_real)0;
     int i, k = c2d_toi_mgrow(ex, acc->atom, acc->n);
     for (i = 0; i < k; i++) approx += ex[i];
     return approx;
@@ -460,8 +460,9 @@ static void c2d_toi_mproduct(c2d_toi_macc *acc, c2d_real x, c2d_real y, int sign
         return;
     }
     hi = c2d_two_prod(sign < 0 ? -x : x, y, &lo);
-    acc->atom[acc->n++] = hi;
-    acc->atom[acc->n++] = lo;
+    acc->atom[acc->n] = hi;
+    acc->atom[acc->n + 1] = lo;
+    acc->n += 2;
 }
 
 /* c2d_acc_pair_product: (x[0] + x[1]) (y[0] + y[1]), four products. */
@@ -473,32 +474,31 @@ static void c2d_toi_mpair(c2d_toi_macc *acc, const c2d_real *x, const c2d_real *
 }
 
 /* The rest of c2d_toi_exact for an approaching pair (d.v < 0) with
- * |d|^2 > R^2, both decided; d and v as hi + lo pairs per axis ([axis][0]
- * hi, [axis][1] lo).  Returns 0 when the discriminant's products fill the
+ * |d|^2 > R^2, both decided; d and v as hi + lo pairs per axis (x hi, x lo,
+ * y hi, y lo).  Returns 0 when the discriminant's products fill the
  * accumulator (c2d_toi_exact then sums them in bounded memory). */
-static int c2d_toi_mirror(const c2d_real (*d)[2], const c2d_real (*v)[2], c2d_real r, c2d_real *t,
-                          c2d_status *status)
+static int c2d_toi_mirror(const c2d_real *d, const c2d_real *v, c2d_real r, c2d_real *t, c2d_status *status)
 {
     c2d_toi_macc acc;
     c2d_real vv[C2D_ATOMS], cr[C2D_ATOMS], r2[2], dv, gap, disc, tt;
     int i, j, nv, nc;
     acc.n = 0, acc.full = 0;
-    c2d_toi_mpair(&acc, d[0], v[0], 1);
-    c2d_toi_mpair(&acc, d[1], v[1], 1);
+    c2d_toi_mpair(&acc, &d[0], &v[0], 1);
+    c2d_toi_mpair(&acc, &d[2], &v[2], 1);
     dv = c2d_toi_mvalue(&acc);
     acc.n = 0;
-    c2d_toi_mpair(&acc, d[0], d[0], 1);
-    c2d_toi_mpair(&acc, d[1], d[1], 1);
+    c2d_toi_mpair(&acc, &d[0], &d[0], 1);
+    c2d_toi_mpair(&acc, &d[2], &d[2], 1);
     c2d_toi_mproduct(&acc, r, r, -1);
     gap = c2d_toi_mvalue(&acc);
     acc.n = 0;
-    c2d_toi_mpair(&acc, v[0], v[0], 1);
-    c2d_toi_mpair(&acc, v[1], v[1], 1);
+    c2d_toi_mpair(&acc, &v[0], &v[0], 1);
+    c2d_toi_mpair(&acc, &v[2], &v[2], 1);
     nv = c2d_toi_mcompress(acc.atom, acc.n);
     for (i = 0; i < nv; i++) vv[i] = acc.atom[i];
     acc.n = 0;
-    c2d_toi_mpair(&acc, d[0], v[1], 1);
-    c2d_toi_mpair(&acc, d[1], v[0], -1);
+    c2d_toi_mpair(&acc, &d[0], &v[2], 1);
+    c2d_toi_mpair(&acc, &d[2], &v[0], -1);
     nc = c2d_toi_mcompress(acc.atom, acc.n);
     for (i = 0; i < nc; i++) cr[i] = acc.atom[i];
     r2[0] = c2d_two_prod(r, r, &r2[1]);
@@ -546,8 +546,8 @@ C2D_COLD int c2d_toi_touching(const c2d_real_body *a, const c2d_real_body *b, c2
          * double-length time stands. */
         const c2d_real rel = c2d_pow2(-C2D_R_MANT + 2), rel2 = c2d_pow2(-2 * C2D_R_MANT + 4);
         const c2d_real tiny = c2d_pow2(C2D_R_EMIN + 4);
-        c2d_real d[2][2], v[2][2], vh[2], vl[2], dv, k, dist;
-        if (c2d_toi_in_window(a, b, radius_sum, C2D_TOI_NARROW) == 0) return 0;
+        c2d_real d[4], v[4], vh[2], vl[2], dv, k, dist;
+        if (c2d_toi_in_window(a, b, radius_sum, (C2D_R_WINDOW - 4 * C2D_R_MANT - 9) / 8) == 0) return 0;
         vh[0] = c2d_two_sum(b->vel.x, -a->vel.x, &vl[0]);
         vh[1] = c2d_two_sum(b->vel.y, -a->vel.y, &vl[1]);
         dv = c2d_dot_dd(h, l, vh, vl);
@@ -556,9 +556,9 @@ C2D_COLD int c2d_toi_touching(const c2d_real_body *a, const c2d_real_body *b, c2
         if (c2d_abs(dv) > rel2 * k + tiny &&
             c2d_clear_of(dist, radius_sum, rel * (dist > radius_sum ? dist : radius_sum)))
             return 0;
-        d[0][0] = h[0], d[0][1] = l[0], d[1][0] = h[1], d[1][1] = l[1];
-        v[0][0] = vh[0], v[0][1] = vl[0], v[1][0] = vh[1], v[1][1] = vl[1];
-        return c2d_toi_mirror((const c2d_real (*)[2])d, (const c2d_real (*)[2])v, radius_sum, t, status);
+        d[0] = h[0], d[1] = l[0], d[2] = h[1], d[3] = l[1];
+        v[0] = vh[0], v[1] = vl[0], v[2] = vh[1], v[3] = vl[1];
+        return c2d_toi_mirror(d, v, radius_sum, t, status);
 #else
         return 0;
 #endif

@@ -390,7 +390,10 @@ static void c2d_toia_dot_inputs(c2d_toia_ctx *c, int kx, int ky, int kz, int kw,
         c2d_toia_parts *p = c->parts;
         int slot = -1;
         if (kz < 0 && kx == 2 && ky == 2 && sgn > 0) slot = 0;
-        if (kz < 0 && kx == 1 && ky == 2) slot = sgn < 0 ? 1 : 2;
+        if (kz < 0 && kx == 1 && ky == 2) {
+            slot = 2;
+            if (sgn < 0) slot = 1;
+        }
         if (kz == 0 && kw == 2 && kx == 1 && ky == 1 && sgn > 0) slot = 3;
         if (slot < 0) {
             c2d_toia_dot_exact(c, kx, ky, kz, kw, sgn, r);
