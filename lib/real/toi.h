@@ -338,6 +338,236 @@ C2D_COLD c2d_status c2d_toi_exact(const c2d_real_body *a, const c2d_real_body *b
 /* A decision the fast path can take: |x - y| clears the error bound. */
 static int c2d_clear_of(c2d_real x, c2d_real y, c2d_real bound) { return c2d_abs(x - y) > bound; }
 
+/* Every input 0 or of magnitude within [2^-w, 2^w].  With w = W =
+ * C2D_R_TOI_WINDOW (100 double, 12 float):  Then the power-of-two scaling cannot matter: d's
+ * and v's parts, their products and every later quantity stay far inside
+ * the normal range with or without it (the smallest nonzero part is an ulp
+ * of an input, 2^-(W + MANT); products of two such are still normal, and
+ * the filters' 2^(EMIN + 4) floor stays below half an ulp of the bounds it
+ * is added to), so each operation rounds the same scaled or not: the
+ * scaling is skipped, with the same bits. */
+static int c2d_toi_in_window(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, int w)
+{
+    const c2d_real lo = c2d_pow2(-w), hi = c2d_pow2(w);
+    c2d_real x[9];
+    int i, in = 1;
+    x[0] = a->pos.x, x[1] = a->pos.y, x[2] = b->pos.x, x[3] = b->pos.y;
+    x[4] = a->vel.x, x[5] = a->vel.y, x[6] = b->vel.x, x[7] = b->vel.y, x[8] = radius_sum;
+    for (i = 0; i < 9; i++) {
+        const c2d_real m = c2d_abs(x[i]);
+        in &= (int)(m == 0) | ((int)(m >= lo) & (int)(m <= hi));
+    }
+    return in;
+}
+
+/* The exact sign of |d|^2 - R^2 for d = h + l given exactly (a TwoSum per
+ * component).  Expanded, (hx + lx)^2 + (hy + ly)^2 - R^2 is a sum of seven
+ * products, h^2, 2hl and l^2 per axis and -R^2, each split by TwoProduct
+ * into two floating numbers; the fourteen are summed exactly by
+ * GROW-EXPANSION (real/arith/exact.h), whose largest component carries the
+ * sign.  Exact when every product and its rounding error is normal: inputs
+ * in the window (below) make every part a multiple of 2^-(W + MANT), so
+ * every nonzero product error is at least 2^-2(W + MANT), far above the
+ * normal range's floor, and no product exceeds 2^(2W + 4). */
+static int c2d_toi_gap_sign(const c2d_real *h, const c2d_real *l, c2d_real r)
+{
+    const c2d_real u16 = c2d_pow2(-C2D_R_MANT + 3); /* 16u */
+    c2d_real ex[14], p[7], e[7], s1, t1, s2, t2, x0, x1, v, m;
+    int i, k = 0;
+    /* The filter: the large terms' cancellation exactly (hx^2 + hy^2 - R^2
+     * by TwoProduct and TwoSum: s2 + t1 + t2 + e0 + e1 + e6), the small
+     * rest in plain arithmetic.  Ten terms summed in order (error 9u (1 +
+     * 9u) of their magnitudes), four of them rounded products (u each): a
+     * value beyond 16u of the magnitudes has the exact sign. */
+    p[0] = c2d_two_prod(h[0], h[0], &e[0]);
+    p[3] = c2d_two_prod(h[1], h[1], &e[3]);
+    p[6] = c2d_two_prod(-r, r, &e[6]);
+    s1 = c2d_two_sum(p[0], p[3], &t1);
+    s2 = c2d_two_sum(s1, p[6], &t2);
+    x0 = 2 * h[0] * l[0];
+    x1 = 2 * h[1] * l[1];
+    v = s2 + t1 + t2 + e[0] + e[3] + e[6] + x0 + x1 + l[0] * l[0] + l[1] * l[1];
+    m = c2d_abs(s2) + c2d_abs(t1) + c2d_abs(t2) + c2d_abs(e[0]) + c2d_abs(e[3]) + c2d_abs(e[6]) + c2d_abs(x0) +
+        c2d_abs(x1) + l[0] * l[0] + l[1] * l[1];
+    if (c2d_abs(v) > u16 * m) return v > 0 ? 1 : -1;
+    /* Else the exact sum. */
+    p[1] = c2d_two_prod(2 * h[0], l[0], &e[1]);
+    p[2] = c2d_two_prod(l[0], l[0], &e[2]);
+    p[4] = c2d_two_prod(2 * h[1], l[1], &e[4]);
+    p[5] = c2d_two_prod(l[1], l[1], &e[5]);
+    for (i = 0; i < 7; i++) {
+        k = c2d_grow(ex, k, e[i]);
+        k = c2d_grow(ex, k, p[i]);
+    }
+    return k == 0 ? 0 : (ex[k - 1] > 0 ? 1 : -1);
+}
+
+/* c2d_toi_exact's arithmetic, step for step, in plain floating point, for
+ * inputs 0 or within [2^-N, 2^N], N = (C2D_R_WINDOW - 4 MANT - 9) / 8 (47
+ * in double; float's
+ * exact-sum window is too narrow for any N, so it always takes the exact
+ * path).  There every part of d and v, R and every exact component is a
+ * multiple of 2^-(N + MANT) (degree 1), 2^-2(N + MANT) (degree 2) or
+ * 2^-4(N + MANT) (degree 4, the discriminant's products), and none exceeds
+ * 2^(4N + 9): every atom is normal and all of a sum's lie within
+ * 8N + 4 MANT + 9 <= C2D_R_WINDOW binades of the largest, so each of
+ * c2d_exact_sum's and c2d_compress's sums is one window, whose scaling by
+ * 2^-emax changes no rounding.  The same atoms in the same order (zeros
+ * kept in the count, skipped in the sums, as there) give the same
+ * expansions, the same rounded sums and, with c2d_ext_sqrt, c2d_ext_add and
+ * c2d_ext_div correctly rounded like the operations here, the same t. */
+#if (C2D_R_WINDOW - 4 * C2D_R_MANT - 9) / 8 > 0
+
+typedef struct c2d_toi_macc {
+    c2d_real atom[C2D_ATOMS];
+    int n, full;
+} c2d_toi_macc;
+
+/* The expansion of atom[0..n)'s nonzero atoms, grown in order; its length. */
+static int c2d_toi_mgrow(c2d_real *ex, const c2d_real *atom, int n)
+{
+    int i, k = 0;
+    for (i = 0; i < n; i++)
+        if (atom[i] != 0) k = c2d_grow(ex, k, atom[i]);
+    return k;
+}
+
+/* c2d_compress in one window: the components, largest first. */
+static int c2d_toi_mcompress(c2d_real *atom, int n)
+{
+    c2d_real ex[C2D_ATOMS];
+    int i, k = c2d_toi_mgrow(ex, atom, n);
+    for (i = 0; i < k; i++) atom[i] = ex[k - 1 - i];
+    return k;
+}
+
+/* c2d_exact_sum in one window: the components added smallest first. */
+static c2d_real c2d_toi_mvalue(const c2d_toi_macc *acc)
+{
+    c2d_real ex[C2D_ATOMS], approx = (c2d_real)0;
+    int i, k = c2d_toi_mgrow(ex, acc->atom, acc->n);
+    for (i = 0; i < k; i++) approx += ex[i];
+    return approx;
+}
+
+/* c2d_acc_product: sign x y as two atoms, compressing when full. */
+static void c2d_toi_mproduct(c2d_toi_macc *acc, c2d_real x, c2d_real y, int sign)
+{
+    c2d_real lo, hi;
+    if (acc->n + 2 > C2D_ATOMS) acc->n = c2d_toi_mcompress(acc->atom, acc->n);
+    if (acc->n + 2 > C2D_ATOMS) {
+        acc->full = 1;
+        return;
+    }
+    hi = c2d_two_prod(sign < 0 ? -x : x, y, &lo);
+    acc->atom[acc->n] = hi;
+    acc->atom[acc->n + 1] = lo;
+    acc->n += 2;
+}
+
+/* c2d_acc_pair_product: (x[0] + x[1]) (y[0] + y[1]), four products. */
+static void c2d_toi_mpair(c2d_toi_macc *acc, const c2d_real *x, const c2d_real *y, int sign)
+{
+    int i, j;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) c2d_toi_mproduct(acc, x[i], y[j], sign);
+}
+
+/* The rest of c2d_toi_exact for an approaching pair (d.v < 0) with
+ * |d|^2 > R^2, both decided; d and v as hi + lo pairs per axis (x hi, x lo,
+ * y hi, y lo).  Returns 0 when the discriminant's products fill the
+ * accumulator (c2d_toi_exact then sums them in bounded memory). */
+static int c2d_toi_mirror(const c2d_real *d, const c2d_real *v, c2d_real r, c2d_real *t, c2d_status *status)
+{
+    c2d_toi_macc acc;
+    c2d_real vv[C2D_ATOMS], cr[C2D_ATOMS], r2[2], dv, gap, disc, tt;
+    int i, j, nv, nc;
+    acc.n = 0, acc.full = 0;
+    c2d_toi_mpair(&acc, &d[0], &v[0], 1);
+    c2d_toi_mpair(&acc, &d[2], &v[2], 1);
+    dv = c2d_toi_mvalue(&acc);
+    acc.n = 0;
+    c2d_toi_mpair(&acc, &d[0], &d[0], 1);
+    c2d_toi_mpair(&acc, &d[2], &d[2], 1);
+    c2d_toi_mproduct(&acc, r, r, -1);
+    gap = c2d_toi_mvalue(&acc);
+    acc.n = 0;
+    c2d_toi_mpair(&acc, &v[0], &v[0], 1);
+    c2d_toi_mpair(&acc, &v[2], &v[2], 1);
+    nv = c2d_toi_mcompress(acc.atom, acc.n);
+    for (i = 0; i < nv; i++) vv[i] = acc.atom[i];
+    acc.n = 0;
+    c2d_toi_mpair(&acc, &d[0], &v[2], 1);
+    c2d_toi_mpair(&acc, &d[2], &v[0], -1);
+    nc = c2d_toi_mcompress(acc.atom, acc.n);
+    for (i = 0; i < nc; i++) cr[i] = acc.atom[i];
+    r2[0] = c2d_two_prod(r, r, &r2[1]);
+    acc.n = 0;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < nv; j++) c2d_toi_mproduct(&acc, r2[i], vv[j], 1);
+    for (i = 0; i < nc; i++) {
+        for (j = 0; j < i; j++) c2d_toi_mproduct(&acc, cr[i], 2 * cr[j], -1);
+        c2d_toi_mproduct(&acc, cr[i], cr[i], -1);
+    }
+    if (acc.full != 0) return 0;
+    disc = c2d_toi_mvalue(&acc);
+    if (!(disc > 0)) {
+        *status = C2D_SEPARATING; /* misses, or grazes */
+        return 1;
+    }
+    tt = gap / (C2D_R_SQRT(disc) - dv);
+    if (!(tt <= C2D_R_MAX)) {
+        *status = C2D_RANGE;
+        return 1;
+    }
+    *t = tt;
+    *status = C2D_OK;
+    return 1;
+}
+#endif
+
+/* A touching pair (|d| = R to rounding, so the plain filter on |d|^2 - R^2
+ * cannot decide), approaching (d.v < 0, decided): two pool balls resting in
+ * contact, one rolling into the other.  The exact sign of |d|^2 - R^2
+ * decides, as it does in c2d_toi_exact: at most 0 is a hit now, t = 0;
+ * above 0 the time is c2d_toi_exact's and this returns 0 for the careful
+ * path.  Only for inputs in the window, where c2d_toi_gap_sign is exact. */
+C2D_COLD int c2d_toi_touching(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, c2d_real *t,
+                            c2d_status *status)
+{
+    c2d_real h[2], l[2];
+    if (c2d_toi_in_window(a, b, radius_sum, C2D_R_TOI_WINDOW) == 0) return 0;
+    h[0] = c2d_two_sum(b->pos.x, -a->pos.x, &l[0]);
+    h[1] = c2d_two_sum(b->pos.y, -a->pos.y, &l[1]);
+    if (c2d_toi_gap_sign(h, l, radius_sum) > 0) {
+#if (C2D_R_WINDOW - 4 * C2D_R_MANT - 9) / 8 > 0
+        /* Only where c2d_toi_careful would call c2d_toi_exact (its first
+         * two filters, the same expressions): where they pass, its own
+         * double-length time stands. */
+        const c2d_real rel = c2d_pow2(-C2D_R_MANT + 2), rel2 = c2d_pow2(-2 * C2D_R_MANT + 4);
+        const c2d_real tiny = c2d_pow2(C2D_R_EMIN + 4);
+        c2d_real d[4], v[4], vh[2], vl[2], dv, k, dist;
+        if (c2d_toi_in_window(a, b, radius_sum, (C2D_R_WINDOW - 4 * C2D_R_MANT - 9) / 8) == 0) return 0;
+        vh[0] = c2d_two_sum(b->vel.x, -a->vel.x, &vl[0]);
+        vh[1] = c2d_two_sum(b->vel.y, -a->vel.y, &vl[1]);
+        dv = c2d_dot_dd(h, l, vh, vl);
+        k = c2d_abs(h[0] * vh[0]) + c2d_abs(h[1] * vh[1]);
+        dist = C2D_R_SQRT(h[0] * h[0] + h[1] * h[1] + 2 * (h[0] * l[0] + h[1] * l[1]));
+        if (c2d_abs(dv) > rel2 * k + tiny &&
+            c2d_clear_of(dist, radius_sum, rel * (dist > radius_sum ? dist : radius_sum)))
+            return 0;
+        d[0] = h[0], d[1] = l[0], d[2] = h[1], d[3] = l[1];
+        v[0] = vh[0], v[1] = vl[0], v[2] = vh[1], v[3] = vl[1];
+        return c2d_toi_mirror(d, v, radius_sum, t, status);
+#else
+        return 0;
+#endif
+    }
+    *t = 0;
+    *status = C2D_OK;
+    return 1;
+}
+
 /* ------------------------------------------------------------ plain path
  * In plain arithmetic, for pairs whose differences are moderate.  With d, v
  * the rounded differences (each component within u of its exact value,
@@ -358,8 +588,10 @@ static int c2d_clear_of(c2d_real x, c2d_real y, c2d_real bound) { return c2d_abs
  * (a few u) pass to t unamplified; c's absolute error, about u |d|^2, is the
  * time one rounding of |d| is worth at the approach speed; the cross
  * product's error moves sqrt(disc) by at most 2h/R of that unit
- * (docs/METHOD.md).  Measured worst: docs/ACCURACY.md.  Returns 0 when it
- * cannot decide. */
+ * (docs/METHOD.md).  Measured worst: docs/ACCURACY.md.  Returns 1 when it
+ * decided, 0 when it cannot, 2 when it cannot because |d| = R to rounding
+ * with d.v < 0 decided (for c2d_toi_touching: returned rather than called
+ * from here, which costs the ordinary pair registers). */
 static inline int c2d_toi_plain(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, c2d_real *t,
                                 c2d_status *status)
 {
@@ -393,7 +625,7 @@ static inline int c2d_toi_plain(const c2d_real_body *a, const c2d_real_body *b, 
      * (cross's error 4u k', so its square's 8u |d x v| k' + ...). */
     q = dx * dx + dy * dy;
     r2 = r * r;
-    if (!c2d_clear_of(q, r2, u16 * (q > r2 ? q : r2))) return 0;
+    if (!c2d_clear_of(q, r2, u16 * (q > r2 ? q : r2))) return 2; /* touching: c2d_toi_touching */
     if (q < r2) {
         *t = 0;
         *status = C2D_OK;
@@ -415,28 +647,6 @@ static inline int c2d_toi_plain(const c2d_real_body *a, const c2d_real_body *b, 
     return 1;
 }
 
-/* Every input 0 or of magnitude within [2^-W, 2^W] (W = C2D_R_TOI_WINDOW:
- * 100 double, 12 float).  Then the power-of-two scaling cannot matter: d's
- * and v's parts, their products and every later quantity stay far inside
- * the normal range with or without it (the smallest nonzero part is an ulp
- * of an input, 2^-(W + MANT); products of two such are still normal, and
- * the filters' 2^(EMIN + 4) floor stays below half an ulp of the bounds it
- * is added to), so each operation rounds the same scaled or not: the
- * scaling is skipped, with the same bits. */
-static int c2d_toi_in_window(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum)
-{
-    const c2d_real lo = c2d_pow2(-C2D_R_TOI_WINDOW), hi = c2d_pow2(C2D_R_TOI_WINDOW);
-    c2d_real x[9];
-    int i, in = 1;
-    x[0] = a->pos.x, x[1] = a->pos.y, x[2] = b->pos.x, x[3] = b->pos.y;
-    x[4] = a->vel.x, x[5] = a->vel.y, x[6] = b->vel.x, x[7] = b->vel.y, x[8] = radius_sum;
-    for (i = 0; i < 9; i++) {
-        const c2d_real m = c2d_abs(x[i]);
-        in &= (int)(m == 0) | ((int)(m >= lo) & (int)(m <= hi));
-    }
-    return in;
-}
-
 /* Everything the plain path left: validation, then the double-double path
  * (scaled unless inside the window), then the exact path. */
 C2D_COLD c2d_status c2d_toi_careful(const c2d_real_body *a, const c2d_real_body *b, c2d_real radius_sum, c2d_real *t)
@@ -449,7 +659,7 @@ C2D_COLD c2d_status c2d_toi_careful(const c2d_real_body *a, const c2d_real_body 
     if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y) || !c2d_finite4(a->vel.x, a->vel.y, b->vel.x, b->vel.y) ||
         !(radius_sum >= 0 && radius_sum <= C2D_R_MAX))
         return C2D_INVALID;
-    if (c2d_toi_in_window(a, b, radius_sum) != 0) {
+    if (c2d_toi_in_window(a, b, radius_sum, C2D_R_TOI_WINDOW) != 0) {
         vh[0] = c2d_two_sum(b->vel.x, -a->vel.x, &vl[0]);
         vh[1] = c2d_two_sum(b->vel.y, -a->vel.y, &vl[1]);
         dh[0] = c2d_two_sum(b->pos.x, -a->pos.x, &dl[0]);
@@ -506,7 +716,15 @@ static c2d_status c2d_real_time_of_impact(const c2d_real_body *a, const c2d_real
 {
     c2d_status plain;
     if (a == NULL || b == NULL || t == NULL) return C2D_INVALID;
-    if (c2d_toi_plain(a, b, radius_sum, t, &plain) != 0) return plain;
+    switch (c2d_toi_plain(a, b, radius_sum, t, &plain)) {
+    case 1:
+        return plain;
+    case 2:
+        if (c2d_toi_touching(a, b, radius_sum, t, &plain) != 0) return plain;
+        break;
+    default:
+        break;
+    }
     return c2d_toi_careful(a, b, radius_sum, t);
 }
 

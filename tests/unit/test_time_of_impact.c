@@ -378,6 +378,97 @@ static void test_float_statuses_exact_at_any_magnitude_ratio(void **state)
     run_random(1, 2, 206, 8281);
 }
 
+/* Pool balls resting in contact, as a game places them: b.pos = a.pos +
+ * R (cos t, sin t) rounded, so |d| = R to rounding and |d|^2 - R^2 has
+ * either sign; a at rest or rolling, b rolling at 0.01-3 m/s in any
+ * direction (into a, away from it, along it).  The plain path's filter on
+ * |d|^2 - R^2 cannot decide these; approaching ones are taken by
+ * c2d_toi_touching (real/toi.h): |d| <= R exactly (from that sign's exact
+ * TwoProduct expansion) is a hit now, |d| > R a hit later whose time is
+ * c2d_toi_exact's (computed by c2d_toi_mirror in double where its window
+ * allows and the careful path would call the exact one) or the careful
+ * path's; receding ones by the plain path's sign of d.v.  Part of
+ * the cases are scaled by 2^k so that some leave the window where the
+ * expansion is exact (they must take the careful path).  Statuses and
+ * times against the referee; the counts (hits now, later, separating) are
+ * those of the seeded stream. */
+static void run_touching(int is_float, uint64_t seed, int want_now, int want_later, int want_sep)
+{
+    c2d_rng r;
+    int i, now = 0, later = 0, sep = 0, prec = is_float ? 24 : 53, emin = is_float ? -126 : -1022;
+    const int span = is_float ? 16 : 120; /* beyond the window (12, 100) either side */
+    double worst = 0;
+    r.s = seed;
+    for (i = 0; i < CASES / 10; i++) {
+        ref_case c;
+        double ang = c2d_rng_range(&r, 0, 6.283185307179586), aim, speed, radius = 2 * 0.028575, want = 0, unit = 0;
+        double t = -1, err, s;
+        int k = c2d_rng_next(&r) % 4 == 0 ? (int)(c2d_rng_next(&r) % (uint64_t)(2 * span + 1)) - span : 0;
+        c2d_status got, exp_st;
+        s = ldexp(1.0, k);
+        if (is_float) radius = (float)radius;
+        c.pa[0] = c2d_rng_range(&r, 0.03, 2.5), c.pa[1] = c2d_rng_range(&r, 0.03, 1.24);
+        if (is_float) c.pa[0] = (float)c.pa[0], c.pa[1] = (float)c.pa[1];
+        c.pb[0] = c.pa[0] + radius * cos(ang), c.pb[1] = c.pa[1] + radius * sin(ang);
+        c.va[0] = c.va[1] = 0;
+        if (c2d_rng_next(&r) % 3 == 0) {
+            speed = c2d_rng_range(&r, 0.01, 3), aim = c2d_rng_range(&r, 0, 6.283185307179586);
+            c.va[0] = speed * cos(aim), c.va[1] = speed * sin(aim);
+        }
+        speed = c2d_rng_range(&r, 0.01, 3), aim = ang + 3.141592653589793 + c2d_rng_range(&r, -2.0, 2.0);
+        c.vb[0] = speed * cos(aim), c.vb[1] = speed * sin(aim);
+        c.pa[0] *= s, c.pa[1] *= s, c.pb[0] *= s, c.pb[1] *= s, radius *= s;
+        c.ma = c.mb = 1, c.n[0] = c.n[1] = 0, c.has_normal = 0, c.e = 0;
+        if (is_float) {
+            c2d_bodyf a, b;
+            float tf = -1;
+            case_to_float(&c);
+            case_to_bodiesf(&c, &a, &b);
+            got = c2d_time_of_impactf(&a, &b, (float)radius, &tf);
+            t = tf;
+        } else {
+            c2d_body a, b;
+            case_to_bodies(&c, &a, &b);
+            got = c2d_time_of_impact(&a, &b, radius, &t);
+        }
+        exp_st = ref_time_of_impact(&c, radius, &want, &unit, prec, emin);
+        if (got != exp_st) {
+            print_error("pa=(%a,%a) pb=(%a,%a) va=(%a,%a) vb=(%a,%a) R=%a\n", c.pa[0], c.pa[1], c.pb[0], c.pb[1],
+                        c.va[0], c.va[1], c.vb[0], c.vb[1], radius);
+            assert_status(got, exp_st);
+        }
+        if (got != C2D_OK) {
+            sep++;
+            continue;
+        }
+        if (t == 0) now++;
+        else later++;
+        err = fabs(t - want) / unit;
+        if (!(err <= BOUND_UNITS)) {
+            print_error("t=%a want %a err %.2f units\n", t, want, err);
+            fail();
+        }
+        if (err > worst) worst = err;
+    }
+    print_message("%s touching pairs: %d hit now, %d later, %d separating, worst %.2f units\n",
+                  is_float ? "float " : "double", now, later, sep, worst);
+    assert_cases_checked(now, want_now);
+    assert_cases_checked(later, want_later);
+    assert_cases_checked(sep, want_sep);
+}
+
+static void test_double_touching_pairs_match_referee(void **state)
+{
+    (void)state;
+    run_touching(0, 209, 1093, 1113, 794);
+}
+
+static void test_float_touching_pairs_match_referee(void **state)
+{
+    (void)state;
+    run_touching(1, 210, 1140, 1081, 779);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -400,6 +491,8 @@ int main(void)
         cmocka_unit_test(test_float_statuses_exact_at_any_magnitude_ratio),
         cmocka_unit_test(test_double_near_grazes_scattered_over_the_range_are_exact),
         cmocka_unit_test(test_float_near_grazes_scattered_over_the_range_are_exact),
+        cmocka_unit_test(test_double_touching_pairs_match_referee),
+        cmocka_unit_test(test_float_touching_pairs_match_referee),
     };
     return c2d_run_tests("time_of_impact", tests);
 }

@@ -57,13 +57,22 @@ typedef struct c2d_toia_values {
  * 2^exp[k] (largest hi component in [1, 2); a part far below may round or
  * vanish there, which the error floors cover), nonzero[k] = the vector is
  * not zero, and the radius R.  The exact paths take the parts as extended
- * numbers straight from the inputs kept here (c2d_toia_part). */
+ * numbers straight from the inputs kept here (c2d_toia_part), each vector's
+ * formed once, on first use, in *parts (an ordinary pair never asks), as
+ * are the four exact sums of products the splits ask for again and again. */
+typedef struct c2d_toia_parts {
+    c2d_ext x[3][2][2]; /* [vector][axis][hi, lo] */
+    c2d_dd dot[4];      /* the exact sums of c2d_toia_dot_inputs, likewise */
+    unsigned ready;     /* bit k: x[k] formed; bit 3 + s: dot[s] formed */
+} c2d_toia_parts;
+
 typedef struct c2d_toia_ctx {
     c2d_real hi[3][2], lo[3][2];
     int exp[3], nonzero[3];
     c2d_ext radius;
     const c2d_real_body *body_a, *body_b;
     const c2d_real_vec *acc_a, *acc_b;
+    c2d_toia_parts *parts;
 } c2d_toia_ctx;
 
 /* A local frame for plain-arithmetic Newton iterations on an interval

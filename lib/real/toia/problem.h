@@ -9,21 +9,35 @@
 /* The problem                                                           */
 /* ===================================================================== */
 
-/* The exact part (hi: j = 0, lo: j = 1) of input difference k (0
- * position, 1 velocity, 2 acceleration) along axis i, as an extended number. */
-C2D_COLD void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_ext *x)
+/* Form vector k's exact parts (c2d_toia_part) in c->parts. */
+C2D_COLD void c2d_toia_parts_fill(const c2d_toia_ctx *c, int k)
 {
-    c2d_ext hi, lo;
-    if (k == 0) {
-        c2d_exact_diff(i == 0 ? c->body_b->pos.x : c->body_b->pos.y, i == 0 ? c->body_a->pos.x : c->body_a->pos.y,
-                       &hi, &lo);
-    } else if (k == 1) {
-        c2d_exact_diff(i == 0 ? c->body_b->vel.x : c->body_b->vel.y, i == 0 ? c->body_a->vel.x : c->body_a->vel.y,
-                       &hi, &lo);
-    } else {
-        c2d_exact_diff(i == 0 ? c->acc_b->x : c->acc_b->y, i == 0 ? c->acc_a->x : c->acc_a->y, &hi, &lo);
+    c2d_toia_parts *p = c->parts;
+    int ax;
+    for (ax = 0; ax < 2; ax++) {
+        if (k == 0) {
+            c2d_exact_diff(ax == 0 ? c->body_b->pos.x : c->body_b->pos.y, ax == 0 ? c->body_a->pos.x : c->body_a->pos.y,
+                           &p->x[k][ax][0], &p->x[k][ax][1]);
+        } else if (k == 1) {
+            c2d_exact_diff(ax == 0 ? c->body_b->vel.x : c->body_b->vel.y, ax == 0 ? c->body_a->vel.x : c->body_a->vel.y,
+                           &p->x[k][ax][0], &p->x[k][ax][1]);
+        } else {
+            c2d_exact_diff(ax == 0 ? c->acc_b->x : c->acc_b->y, ax == 0 ? c->acc_a->x : c->acc_a->y, &p->x[k][ax][0],
+                           &p->x[k][ax][1]);
+        }
     }
-    c2d_ext_copy(x, j == 0 ? &hi : &lo);
+    p->ready |= 1U << (unsigned)k;
+}
+
+/* The exact part (hi: j = 0, lo: j = 1) of input difference k (0
+ * position, 1 velocity, 2 acceleration) along axis i, as an extended number.
+ * The exact sums ask for the same parts over and over (a touching pair's
+ * exact retries: thousands of instructions recomputing them), so vector
+ * k's four are formed on its first use and kept: the same numbers. */
+static inline void c2d_toia_part(const c2d_toia_ctx *c, int k, int i, int j, c2d_ext *x)
+{
+    if ((c->parts->ready & (1U << (unsigned)k)) == 0U) c2d_toia_parts_fill(c, k);
+    c2d_ext_copy(x, &c->parts->x[k][i][j]);
 }
 
 /* One vector's exact difference x1 - x0 (per axis hi + lo, halved first
@@ -66,8 +80,10 @@ static void c2d_toia_load_vec(c2d_toia_ctx *c, int k, c2d_real x1, c2d_real x0, 
 }
 
 static void c2d_toia_load(c2d_toia_ctx *c, const c2d_real_body *a, const c2d_real_vec *aa, const c2d_real_body *b,
-                          const c2d_real_vec *ab, c2d_real radius_sum)
+                          const c2d_real_vec *ab, c2d_real radius_sum, c2d_toia_parts *parts)
 {
+    c->parts = parts;
+    parts->ready = 0U;
     c->body_a = a;
     c->body_b = b;
     c->acc_a = aa;

@@ -240,6 +240,7 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
                                  const c2d_real_vec *acc_b, c2d_real radius_sum, c2d_real horizon, c2d_real *t)
 {
     c2d_toia_ctx c;
+    c2d_toia_parts parts;
     c2d_dd T, out;
     int s0[4], sg0, eb, t_is_h;
     if (a == NULL || b == NULL || acc_a == NULL || acc_b == NULL || t == NULL) return C2D_INVALID;
@@ -247,7 +248,7 @@ static c2d_status c2d_toia_solve(const c2d_real_body *a, const c2d_real_vec *acc
         !c2d_finite4(acc_a->x, acc_a->y, acc_b->x, acc_b->y) || !(radius_sum >= 0 && radius_sum <= C2D_R_MAX) ||
         !(horizon >= 0))
         return C2D_INVALID;
-    c2d_toia_load(&c, a, acc_a, b, acc_b, radius_sum);
+    c2d_toia_load(&c, a, acc_a, b, acc_b, radius_sum, &parts);
     if (c.nonzero[1] == 0 && c.nonzero[2] == 0) return C2D_SEPARATING; /* constant distance: never approaching */
     if (radius_sum == 0) return C2D_SEPARATING;              /* f >= 0: never overlapping */
     c2d_toia_signs_at0(&c, s0);

@@ -373,13 +373,38 @@ static void c2d_toia_exact_sum_dd(c2d_dd *r, c2d_real *m, int *e, int n)
     c2d_dd_set(r, hi, lo, ex);
 }
 
+/* x.y (+ z.w) as the exact sum of the exact products, to double length. */
+static void c2d_toia_dot_exact(const c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, c2d_dd *r)
+{
+    c2d_real m[C2D_TOIA_ATOMS];
+    int e[C2D_TOIA_ATOMS], n = c2d_toia_push_dot(c, m, e, 0, kx, ky, sgn);
+    if (kz >= 0) n = c2d_toia_push_dot(c, m, e, n, kz, kw, sgn);
+    c2d_toia_exact_sum_dd(r, m, e, n);
+}
+
 static void c2d_toia_dot_inputs(c2d_toia_ctx *c, int kx, int ky, int kz, int kw, int sgn, int exact, c2d_dd *r)
 {
     if (exact != 0) {
-        c2d_real m[C2D_TOIA_ATOMS];
-        int e[C2D_TOIA_ATOMS], n = c2d_toia_push_dot(c, m, e, 0, kx, ky, sgn);
-        if (kz >= 0) n = c2d_toia_push_dot(c, m, e, n, kz, kw, sgn);
-        c2d_toia_exact_sum_dd(r, m, e, n);
+        /* |a|^2, -v.a, v.a and |v|^2 + d0.a (the sums the splits ask for,
+         * again and again) are kept; any other is formed each time */
+        c2d_toia_parts *p = c->parts;
+        int slot = -1;
+        if (kz < 0 && kx == 2 && ky == 2 && sgn > 0) slot = 0;
+        if (kz < 0 && kx == 1 && ky == 2) {
+            slot = 2;
+            if (sgn < 0) slot = 1;
+        }
+        if (kz == 0 && kw == 2 && kx == 1 && ky == 1 && sgn > 0) slot = 3;
+        if (slot < 0) {
+            c2d_toia_dot_exact(c, kx, ky, kz, kw, sgn, r);
+        } else {
+            const unsigned bit = 1U << (unsigned)(3 + slot);
+            if ((p->ready & bit) == 0U) {
+                c2d_toia_dot_exact(c, kx, ky, kz, kw, sgn, &p->dot[slot]);
+                p->ready |= bit;
+            }
+            c2d_dd_copy(r, &p->dot[slot]);
+        }
     } else {
         c2d_dd p, q;
         c2d_dd_set(&p, c->nonzero[kx] * c->nonzero[ky] != 0 ? (c2d_real)sgn * (c->hi[kx][0] * c->hi[ky][0] + c->hi[kx][1] * c->hi[ky][1]) : 0,
