@@ -229,11 +229,12 @@ static c2d_real c2d_sphere_keep_sign(c2d_real x, int k)
     return v;
 }
 
-/* The scaling lost no bits (a component far below the largest did not
- * underflow). */
-static int c2d_sphere_scaled_exact(const c2d_real_vec *scaled, const c2d_real_vec *v, int k)
+/* The scaling by a power of two lost no bits: it can only where a nonzero
+ * component lands below the normal range. */
+static int c2d_sphere_scaled_exact(const c2d_real_vec *scaled, const c2d_real_vec *v)
 {
-    return c2d_scale2(scaled->x, k) == v->x && c2d_scale2(scaled->y, k) == v->y;
+    return (c2d_abs(scaled->x) >= c2d_pow2(C2D_R_EMIN) || v->x == 0) &&
+           (c2d_abs(scaled->y) >= c2d_pow2(C2D_R_EMIN) || v->y == 0);
 }
 
 /* (vb - va).n / |n|, n = dh + dl, from exact sums with extended exponents
@@ -286,8 +287,8 @@ static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl,
     c2d_sphere_scale_vec(&l, dl, -kn);
     c2d_sphere_scale_vec(&a, va, -kv);
     c2d_sphere_scale_vec(&b, vb, -kv);
-    if (!c2d_sphere_scaled_exact(&h, dh, kn) || !c2d_sphere_scaled_exact(&l, dl, kn) ||
-        !c2d_sphere_scaled_exact(&a, va, kv) || !c2d_sphere_scaled_exact(&b, vb, kv))
+    if (!c2d_sphere_scaled_exact(&h, dh) || !c2d_sphere_scaled_exact(&l, dl) || !c2d_sphere_scaled_exact(&a, va) ||
+        !c2d_sphere_scaled_exact(&b, vb))
         return c2d_normal_speed_dd(dh, dl, va, vb);
     /* a subnormal |n| (c2d_unit_normal's l m) has lost bits: from h again */
     len = len < c2d_pow2(C2D_R_EMIN) ? C2D_R_SQRT(h.x * h.x + h.y * h.y) : c2d_scale2(len, -kn);
@@ -354,6 +355,43 @@ static void c2d_ball_friction_apply(c2d_ball_out *o, const c2d_real_vec *v_norma
 static int c2d_sphere_fine(c2d_real p, c2d_real x, c2d_real y)
 {
     return c2d_finite4(p, 0, 0, 0) && (p == 0 ? (x == 0 || y == 0) : c2d_abs(p) >= c2d_pow2(C2D_R_EMIN));
+}
+
+/* The fast test that makes the checks below unnecessary: every nonzero
+ * magnitude in x within 2^+-W, W = EMAX / 16 (double 63, float 7).  Each
+ * quantity the plain path forms is then a product or quotient of at most
+ * ten of them, or a cancelling sum of such (at least a product of two
+ * input ulps when nonzero): within 2^+-(10 W + 2 MANT + 8), inside the
+ * normal range, so no step over- or underflows.  Infinite masses and
+ * inertias fail it (the checks then decide). */
+#define C2D_SPHERE_WINDOW (C2D_R_EMAX / 16)
+
+static int c2d_sphere_ordinary(const c2d_real *x, int n)
+{
+    c2d_real lo = 1, hi = 1;
+    int i;
+    for (i = 0; i < n; i++) {
+        c2d_real t = c2d_abs(x[i]);
+        if (t != 0) {
+            lo = t < lo ? t : lo;
+            hi = t > hi ? t : hi;
+        }
+    }
+    return lo >= c2d_pow2(-C2D_SPHERE_WINDOW) && hi <= c2d_pow2(C2D_SPHERE_WINDOW);
+}
+
+/* mu in the window (or 0, or INFINITY, which is never multiplied). */
+static int c2d_sphere_mu_ordinary(c2d_real mu)
+{
+    return mu == 0 || mu > C2D_R_MAX || (mu >= c2d_pow2(-C2D_SPHERE_WINDOW) && mu <= c2d_pow2(C2D_SPHERE_WINDOW));
+}
+
+static int c2d_balls_ordinary(const c2d_real_ball *a, const c2d_real_ball *b, const c2d_real_vec *dh)
+{
+    const c2d_real x[18] = {a->mass,    a->radius,  a->inertia, a->vel.x,   a->vel.y,   a->spin[0],
+                            a->spin[1], a->spin[2], b->mass,    b->radius,  b->inertia, b->vel.x,
+                            b->vel.y,   b->spin[0], b->spin[1], b->spin[2], dh->x,      dh->y};
+    return c2d_sphere_ordinary(x, 18);
 }
 
 /* A subnormal spin loses bits in every product the plain path takes of it,
@@ -536,7 +574,7 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     c2d_real dvx = b->vel.x - a->vel.x, dvy = b->vel.y - a->vel.y;
     c2d_real_vec dh, dl;
     c2d_ball_out oa, ob;
-    int fine;
+    int fine, fast;
     dh.x = c2d_two_sum(b->pos.x, -a->pos.x, &dl.x);
     dh.y = c2d_two_sum(b->pos.y, -a->pos.y, &dl.y);
     if (!c2d_finite4(dh.x, dh.y, 0, 0)) { /* the same direction, halved */
@@ -559,23 +597,27 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     gz = -(a->radius * (a->spin[0] * ny - a->spin[1] * nx) + b->radius * (b->spin[0] * ny - b->spin[1] * nx));
     g = c2d_sphere_length(gt, gz);
     jn = gn < 0 ? -(1 + s->restitution) * gn / inv_mn : 0;
-    fine = c2d_sphere_fine(ia, ia, 1) && c2d_sphere_fine(ib, ib, 1) && c2d_sphere_fine(qa, a->radius, ia) &&
+    fast = c2d_balls_ordinary(a, b, &dh);
+    fine = fast || (c2d_sphere_fine(ia, ia, 1) && c2d_sphere_fine(ib, ib, 1) && c2d_sphere_fine(qa, a->radius, ia) &&
            c2d_sphere_fine(qb, b->radius, ib) && c2d_sphere_fine(ima, ima, 1) && c2d_sphere_fine(imb, imb, 1) &&
            c2d_sphere_fine(ka, a->radius, qa) && c2d_sphere_fine(kb, b->radius, qb) &&
            c2d_finite4(inv_mt, g, 0, 0) && c2d_sphere_fine(gn, 1, 1) && c2d_sphere_fine(jn, 1, 1) &&
-           c2d_ball_spin_fine(a) && c2d_ball_spin_fine(b);
+           c2d_ball_spin_fine(a) && c2d_ball_spin_fine(b));
     f = 0;
     if (fine && g != 0) {
         mu = c2d_ball_friction(s, g);
         cone = mu > C2D_R_MAX ? 1 : mu * jn;
         stop = g / inv_mt;
         f = c2d_friction_size(mu, jn, stop) / g;
-        fine = c2d_sphere_fine(cone, mu, jn) && c2d_sphere_fine(stop, 1, 1) && c2d_sphere_fine(f, mu, 1);
+        fast = fast && c2d_sphere_mu_ordinary(mu);
+        fine = fast ||
+               (c2d_sphere_fine(cone, mu, jn) && c2d_sphere_fine(stop, 1, 1) && c2d_sphere_fine(f, mu, 1));
     }
     jt = -f * gt;
     jz = -f * gz;
-    fine = fine && c2d_sphere_fine(jt, f, gt) && c2d_sphere_fine(jz, f, gz) && c2d_sphere_fine(qa * jt, qa, jt) &&
-           c2d_sphere_fine(qa * jz, qa, jz) && c2d_sphere_fine(qb * jt, qb, jt) && c2d_sphere_fine(qb * jz, qb, jz);
+    fine = fine && (fast || (c2d_sphere_fine(jt, f, gt) && c2d_sphere_fine(jz, f, gz) &&
+                             c2d_sphere_fine(qa * jt, qa, jt) && c2d_sphere_fine(qa * jz, qa, jz) &&
+                             c2d_sphere_fine(qb * jt, qb, jt) && c2d_sphere_fine(qb * jz, qb, jz)));
     c2d_ball_friction_apply(&oa, &ta->vel, a, ima, qa, nx, ny, jt, jz, -1);
     c2d_ball_friction_apply(&ob, &tb->vel, b, imb, qb, nx, ny, jt, jz, 1);
     fine = fine && c2d_ball_out_finite(&oa) && c2d_ball_out_finite(&ob);
@@ -741,7 +783,7 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     c2d_real nx, ny, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, f, len, im, ii, rr, k, a, stop, u, q, f1, f2, qf;
     c2d_real_vec zero = {0, 0};
     c2d_ball_out o;
-    int fine;
+    int fine, fast;
     if (d == NULL || !c2d_ball_valid(d) || !c2d_cushion_valid(c, d)) return C2D_INVALID;
     if (c->normal.x == 0 && c->normal.y == 0) return C2D_DEGENERATE;
     len = c2d_unit_normal(&nx, &ny, c->normal.x, c->normal.y);
@@ -761,23 +803,29 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     rr = d->radius * d->radius;
     k = rr * ii;
     q = d->radius * ii;
-    fine = c2d_sphere_fine(vn, 1, 1) && c2d_sphere_fine(u, 1, 1) && c2d_sphere_fine(pn, 1, 1) &&
-           c2d_finite4(sl, 0, 0, 0) && c2d_sphere_fine(im, 1, 1) && c2d_sphere_fine(ii, ii, 1) &&
-           c2d_sphere_fine(rr, 1, 1) && c2d_sphere_fine(k, ii, 1) && c2d_sphere_fine(q, ii, 1) &&
-           c2d_ball_spin_fine(d);
+    {
+        const c2d_real x[11] = {d->mass,    d->radius,  d->inertia,  d->vel.x,    d->vel.y, d->spin[0],
+                                d->spin[1], d->spin[2], c->normal.x, c->normal.y, cs};
+        fast = c2d_sphere_ordinary(x, 11) && c2d_sphere_mu_ordinary(c->friction);
+    }
+    fine = fast || (c2d_sphere_fine(vn, 1, 1) && c2d_sphere_fine(u, 1, 1) && c2d_sphere_fine(pn, 1, 1) &&
+                    c2d_finite4(sl, 0, 0, 0) && c2d_sphere_fine(im, 1, 1) && c2d_sphere_fine(ii, ii, 1) &&
+                    c2d_sphere_fine(rr, 1, 1) && c2d_sphere_fine(k, ii, 1) && c2d_sphere_fine(q, ii, 1) &&
+                    c2d_ball_spin_fine(d));
     f = 0;
     if (fine && sl != 0) {
         a = im + k;
         stop = sl / a;
         f = c2d_friction_size(c->friction, pn, stop) / sl;
-        fine = c2d_sphere_fine(stop, 1, 1) && c2d_sphere_fine(f, c->friction, 1) &&
-               (c->friction > C2D_R_MAX || c2d_sphere_fine(c->friction * pn, c->friction, 1));
+        fine = fast || (c2d_sphere_fine(stop, 1, 1) && c2d_sphere_fine(f, c->friction, 1) &&
+                        (c->friction > C2D_R_MAX || c2d_sphere_fine(c->friction * pn, c->friction, 1)));
     }
     f1 = -f * s1;
     f2 = -f * s2;
     qf = q * f1;
-    fine = fine && c2d_sphere_fine(f1, f, s1) && c2d_sphere_fine(f2, f, s2) && c2d_sphere_fine(qf, q, f1) &&
-           c2d_sphere_fine(q * f2, q, f2) && c2d_sphere_fine(pn * cs, 1, 1) && c2d_sphere_fine(f2 * sn, f2, sn);
+    fine = fine && (fast || (c2d_sphere_fine(f1, f, s1) && c2d_sphere_fine(f2, f, s2) && c2d_sphere_fine(qf, q, f1) &&
+                             c2d_sphere_fine(q * f2, q, f2) && c2d_sphere_fine(pn * cs, 1, 1) &&
+                             c2d_sphere_fine(f2 * sn, f2, sn)));
     c2d_cushion_apply(&o, d, nx, ny, sn, cs, pn, f1, f2);
     if (!fine || !c2d_ball_out_finite(&o)) return c2d_cushion_dd(d, c);
     c2d_ball_write(d, &o);
