@@ -100,7 +100,28 @@
  *   referee (tests/unit/test_sphere.c): 8.3 ulp at worst for two balls, all
  *   parts included, 9.3 for a cushion; pool pairs 4.4 (double), 5.0 (float);
  *   over 2^+-300 (float 2^+-30) in every magnitude 5.5 and 9.7 (float 6.0,
- *   7.9).
+ *   7.9); over the whole range, every field at its own exponent, 3.5 and
+ *   5.3 (float 4.2, 4.1).
+ *
+ * THE WHOLE RANGE (the slow path)
+ *   Each plain step is a product or quotient whose error stays relative
+ *   only while it is normal: with masses, inertias and radii anywhere in the
+ *   range, an impulse (mass x speed), R^2/I or R w may overflow, or a
+ *   product underflow to a subnormal or to zero (a light ball's impulse,
+ *   then divided by its tiny mass; a subnormal spin's product, which R
+ *   makes count).  So the plain path is taken only where c2d_sphere_ordinary
+ *   (every input within 2^+-EMAX/16) or the step-by-step check
+ *   (c2d_sphere_fine: every impulse, inverse mass, R/I, R^2/I, slip and
+ *   spin change finite and normal, or exactly zero from a zero factor)
+ *   says no step left the normal range; elsewhere the same equations run
+ *   in double length with an extended exponent (real/arith/dd.h) and each
+ *   output is rounded once on top of its start: C2D_RANGE only when an
+ *   output itself overflows.  Everywhere else, bit for bit the plain path.
+ *   The glancing normal speed's scaled exact products fall back to exact
+ *   sums with extended exponents (c2d_normal_speed_dd) where the scaling
+ *   would lose a component far below the largest, and a speed too small
+ *   for the format stays an approach (the smallest subnormal, then the
+ *   slow path).
  *   exp(-x): c2d_exp_neg below.
  */
 #ifndef C2D_REAL_SPHERE_H
