@@ -590,7 +590,7 @@ C2D_COLD c2d_status c2d_balls_friction_dd(c2d_real_ball *a, c2d_real_ball *b, co
 static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_body *ta,
                                      const c2d_real_body *tb, const c2d_real_ball_surface *s)
 {
-    c2d_real nx, ny, gn, gt, gz, g, qa, qb, ia, ib, ka, kb, ima, imb, inv_mn, inv_mt, len, jn, f, mu, cone, stop;
+    c2d_real nx, ny, gn, gt, gz, g, qa, qb, ia, ib, ka, kb, ima, imb, inv_mn, inv_mt, len, jn, f;
     c2d_real jt, jz;
     c2d_real dvx = b->vel.x - a->vel.x, dvy = b->vel.y - a->vel.y;
     c2d_real_vec dh, dl;
@@ -626,9 +626,7 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
            c2d_ball_spin_fine(a) && c2d_ball_spin_fine(b));
     f = 0;
     if (fine && g != 0) {
-        mu = c2d_ball_friction(s, g);
-        cone = mu > C2D_R_MAX ? 1 : mu * jn;
-        stop = g / inv_mt;
+        const c2d_real mu = c2d_ball_friction(s, g), cone = mu > C2D_R_MAX ? 1 : mu * jn, stop = g / inv_mt;
         f = c2d_friction_size(mu, jn, stop) / g;
         fast = fast && c2d_sphere_mu_ordinary(mu);
         fine = fast ||
@@ -801,7 +799,7 @@ C2D_COLD c2d_status c2d_cushion_dd(c2d_real_ball *d, const c2d_real_cushion *c)
  * normal range sends the impact to c2d_cushion_dd. */
 static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cushion *c)
 {
-    c2d_real nx, ny, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, f, len, im, ii, rr, k, a, stop, u, q, f1, f2, qf;
+    c2d_real nx, ny, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, f, len, im, ii, rr, k, u, q, f1, f2, qf;
     c2d_real_vec zero = {0, 0};
     c2d_ball_out o;
     int fine, fast;
@@ -835,8 +833,7 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
                     c2d_ball_spin_fine(d));
     f = 0;
     if (fine && sl != 0) {
-        a = im + k;
-        stop = sl / a;
+        const c2d_real stop = sl / (im + k);
         f = c2d_friction_size(c->friction, pn, stop) / sl;
         fine = fast || (c2d_sphere_fine(stop, 1, 1) && c2d_sphere_fine(f, c->friction, 1) &&
                         (c->friction > C2D_R_MAX || c2d_sphere_fine(c->friction * pn, c->friction, 1)));
