@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* c2d_collide_balls(f) and c2d_collide_cushion(f): pool balls as spheres.
- * Accuracy against the MPFR referee (referee/ref_sphere.c) in ulp of the
- * pair's scale, the identities with the rough-disk model, throw against
+ * Accuracy and statuses against the MPFR referee (referee/ref_sphere.c) in
+ * ulp of the pair's scale, at unit scale and over the whole range, the
+ * identities with the rough-disk model, throw against
  * Alciatore's closed form, energy and momenta over random cases, statuses
  * and untouched bodies, and exp(-x) against MPFR. */
 #include "check.h"
