@@ -328,10 +328,11 @@ typedef struct c2d_ball_surface { double restitution, friction, friction_boost, 
  *   returns      C2D_OK; C2D_SEPARATING, C2D_DEGENERATE and C2D_RANGE for the
  *                normal part exactly as c2d_collide; C2D_INVALID also for a
  *                NaN/Inf spin or radius, radius < 0, inertia <= 0 or NaN, a
- *                surface field outside its range; C2D_RANGE also when a
- *                slip speed, normal impulse, R/I, R^2/I or an output is
- *                beyond DBL_MAX (the friction part is plain arithmetic), or
- *                would be NaN from such an overflow.  Same
+ *                surface field outside its range; C2D_RANGE also when an
+ *                output would exceed DBL_MAX (allowed from DBL_MAX / 8 of
+ *                an exact output or change, as c2d_collide's); an impulse,
+ *                slip, R/I or R^2/I beyond the format is no RANGE (a
+ *                double-length slow path takes such pairs).  Same
  *                priority; a == b is C2D_DEGENERATE; nothing is written
  *                unless C2D_OK.
  *   identities   friction = friction_boost = 0: c2d_collide's velocities bit
@@ -347,17 +348,24 @@ typedef struct c2d_ball_surface { double restitution, friction, friction_boost, 
  *                largest |vx|, |vy|, |R w| of both balls before and after;
  *                measured against a 512-bit MPFR referee, all parts in,
  *                tests/unit/test_sphere.c: worst 8.3 ulp double, 7.1 float
- *                at unit scale (pool pairs 4.4, 5.0); 5.5 and 6.0 with
- *                masses, radii, speeds and spins each anywhere in 2^+-300
- *                (float 2^+-30), sliding and sticking).  Nearer the
- *                format's ends only the statuses, finiteness and
- *                conservation are checked (fuzzed).  The friction part is plain arithmetic: a light
- *                ball brushed by a much faster one gets an error of the fast
- *                one's scale.
+ *                at unit scale (pool pairs 4.4, 5.0); 5.5 and 6.0 over
+ *                2^+-300 (float 2^+-30); over the whole range, every
+ *                position, velocity and spin component, mass, radius and
+ *                inertia at its own exponent from the smallest subnormal
+ *                to the largest binade, 3.5 double, 4.2 float; sliding and
+ *                sticking).  A spin whose exact value is subnormal while
+ *                R w is not is held to its own rounding (no format value
+ *                does better).  The friction part is plain arithmetic
+ *                where no step leaves the normal range (double length
+ *                otherwise): a light ball brushed by a much faster one
+ *                gets an error of the fast one's scale.
  *   cost         c2d_collide's plus ~100 floating-point operations (exp
- *                adds ~40 when friction_boost != 0), exact products for a
- *                glancing normal speed only: 716 instructions per pool pair
- *                against 248 for a plain transcription (make bench-sphere). */
+ *                adds ~40 when friction_boost != 0) and a range test of
+ *                the inputs, exact products for a glancing normal speed
+ *                only, double length where a step over- or underflows:
+ *                1,132 instructions per pool pair against 248 for a plain
+ *                transcription (make bench-sphere; 833 before the range
+ *                test, in the same build). */
 c2d_status c2d_collide_balls(c2d_ball *a, c2d_ball *b, c2d_ball_surface s);
 
 /* A cushion (rail): normal = any finite non-zero horizontal vector from the
@@ -379,9 +387,10 @@ typedef struct c2d_cushion { c2d_vec2 normal; double height, restitution, fricti
  *                infinite mass or radius 0), a NaN/Inf normal, height outside
  *                [R, 2R], restitution or friction outside its range;
  *                C2D_DEGENERATE for a zero normal; C2D_SEPARATING when
- *                v.n^ <= 0 (or height = 2R); C2D_RANGE when the normal
- *                impulse, the slip, R/I or an output is beyond DBL_MAX (or
- *                NaN from such an overflow).  Priority
+ *                v.n^ <= 0 exactly (or height = 2R); C2D_RANGE when an
+ *                output would exceed DBL_MAX (allowed from DBL_MAX / 8 of
+ *                an exact output); an impulse, slip or R/I beyond the
+ *                format is no RANGE (double length then).  Priority
  *                INVALID > DEGENERATE > SEPARATING > RANGE > OK; nothing is
  *                written unless C2D_OK.
  *   identities   height = R and wx = wy = 0: c2d_collide_rough_normal against
@@ -393,8 +402,12 @@ typedef struct c2d_cushion { c2d_vec2 normal; double height, restitution, fricti
  *                |vy|, |R w| before and after; plain arithmetic, cos(th)
  *                from h's distance to 2R so it keeps a few u near the top;
  *                measured against the MPFR referee: worst 9.3 double, 9.0
- *                float at unit scale, 9.7 and 7.9 over 2^+-300 / 2^+-30).
- *   cost         ~70 floating-point operations, two square roots. */
+ *                float at unit scale, 9.7 and 7.9 over 2^+-300 / 2^+-30,
+ *                5.3 and 4.1 over the whole range, every field at its own
+ *                exponent; a subnormal exact spin as for two balls).
+ *   cost         ~70 floating-point operations, two square roots, a range
+ *                test of the inputs; double length where a step over- or
+ *                underflows. */
 c2d_status c2d_collide_cushion(c2d_ball *ball, c2d_cushion c);
 #endif
 

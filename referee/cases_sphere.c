@@ -143,6 +143,83 @@ void gen_wide_cushion(c2d_rng *r, ref_cushion_case *c, int span)
     if (c->a.vel[0] * c->n[0] + c->a.vel[1] * c->n[1] <= 0) c->a.vel[0] += cos(th) * fabs(wide(r, span));
 }
 
+/* Over the whole range: a magnitude 2^k (1 + u) at prec bits, k uniform
+ * from the smallest subnormal's exponent to emax - 1, a random sign. */
+static double whole(c2d_rng *r, int prec, int emin, int emax)
+{
+    int k = emin - prec + 1 + (int)(c2d_rng_next(r) % (uint64_t)(emax - emin + prec - 1));
+    double v = ldexp(1 + c2d_rng_unit(r), k);
+    if (prec < 53) v = (double)(float)v;
+    return c2d_rng_next(r) & 1 ? -v : v;
+}
+
+/* 0 in one case in 8, else anywhere. */
+static double whole_or_zero(c2d_rng *r, int prec, int emin, int emax)
+{
+    return c2d_rng_next(r) % 8 == 0 ? 0 : whole(r, prec, emin, emax);
+}
+
+/* Every field at its own exponent: mass (one in 8 INFINITY), radius (one
+ * in 8 zero), inertia (one in 8 INFINITY), each velocity and spin
+ * component (one in 8 zero), the position. */
+static void whole_ball(c2d_rng *r, ref_ball *d, int prec, int emin, int emax)
+{
+    int i;
+    d->m = c2d_rng_next(r) % 8 == 0 ? INFINITY : fabs(whole(r, prec, emin, emax));
+    d->r = c2d_rng_next(r) % 8 == 0 ? 0 : fabs(whole(r, prec, emin, emax));
+    d->inertia = c2d_rng_next(r) % 8 == 0 ? INFINITY : fabs(whole(r, prec, emin, emax));
+    for (i = 0; i < 2; i++) d->vel[i] = whole_or_zero(r, prec, emin, emax);
+    for (i = 0; i < 3; i++) d->w[i] = whole_or_zero(r, prec, emin, emax);
+    for (i = 0; i < 2; i++) d->pos[i] = whole_or_zero(r, prec, emin, emax);
+}
+
+static double to_prec(double x, int prec) { return prec < 53 ? (double)(float)x : x; }
+
+/* (x, y) . (u, v) > 0, its sign from scaled terms (no overflow). */
+static int dot_positive(double x, double y, double u, double v)
+{
+    double m1 = fmax(fabs(x), fabs(y)), m2 = fmax(fabs(u), fabs(v));
+    if (m1 == 0 || m2 == 0 || !isfinite(m1) || !isfinite(m2)) return 0;
+    return (x / m1) * (u / m2) + (y / m1) * (v / m2) > 0;
+}
+
+void gen_whole_balls(c2d_rng *r, ref_balls_case *c, int prec, int emin, int emax)
+{
+    double th = c2d_rng_range(r, 0, 6.283185307179586), len = fabs(whole(r, prec, emin, emax));
+    int i;
+    whole_ball(r, &c->a, prec, emin, emax), whole_ball(r, &c->b, prec, emin, emax);
+    /* b at a random offset of any length from a, or anywhere (one in 4) */
+    if (c2d_rng_next(r) % 4 != 0) {
+        c->b.pos[0] = to_prec(c->a.pos[0] + len * cos(th), prec);
+        c->b.pos[1] = to_prec(c->a.pos[1] + len * sin(th), prec);
+        if (!isfinite(c->b.pos[0]) || !isfinite(c->b.pos[1])) c->b.pos[0] = c->a.pos[0], c->b.pos[1] = -c->a.pos[1];
+    }
+    c->e = c2d_rng_next(r) % 4 == 0 ? 1 : to_prec(c2d_rng_unit(r), prec);
+    c->mu = kWideMu[c2d_rng_next(r) % 6];
+    c->boost = c2d_rng_next(r) % 2 ? 0 : to_prec(c2d_rng_range(r, 0, 0.5), prec);
+    c->decay = c2d_rng_next(r) % 4 == 0 ? to_prec(1.088, prec) : fabs(whole_or_zero(r, prec, emin, emax));
+    /* approaching (to the sign's rounding: the referee decides) */
+    if (dot_positive(c->b.vel[0] - c->a.vel[0], c->b.vel[1] - c->a.vel[1], c->b.pos[0] - c->a.pos[0],
+                     c->b.pos[1] - c->a.pos[1]))
+        for (i = 0; i < 2; i++) c->a.vel[i] = -c->a.vel[i], c->b.vel[i] = -c->b.vel[i];
+}
+
+void gen_whole_cushion(c2d_rng *r, ref_cushion_case *c, int prec, int emin, int emax)
+{
+    uint64_t k = c2d_rng_next(r) % 4;
+    whole_ball(r, &c->a, prec, emin, emax);
+    if (isinf(c->a.m)) c->a.m = fabs(whole(r, prec, emin, emax));
+    if (c->a.r == 0) c->a.r = fabs(whole(r, prec, emin, emax));
+    c->n[0] = whole_or_zero(r, prec, emin, emax), c->n[1] = whole_or_zero(r, prec, emin, emax);
+    if (c->n[0] == 0 && c->n[1] == 0) c->n[0] = whole(r, prec, emin, emax);
+    /* the centre's height, the table's 0.635 D, or anywhere up to 2R: each
+     * rounding monotonic, so within [R, 2R] */
+    c->h = k == 0 ? c->a.r : to_prec(k == 1 ? 1.27 * c->a.r : c->a.r * (1 + c2d_rng_unit(r)), prec);
+    c->e = c2d_rng_next(r) % 4 == 0 ? 1 : to_prec(c2d_rng_unit(r), prec);
+    c->mu = kWideMu[c2d_rng_next(r) % 6];
+    if (!dot_positive(c->a.vel[0], c->a.vel[1], c->n[0], c->n[1])) c->a.vel[0] = -c->a.vel[0], c->a.vel[1] = -c->a.vel[1];
+}
+
 /* Field by field through a list of addresses: gcc 12.2's vectoriser at -O2
  * dropped the last two of ten straight-line conversions here (r, inertia). */
 static void ball_to_float(ref_ball *d)

@@ -31,6 +31,16 @@ void gen_cushion(c2d_rng *r, ref_cushion_case *c);
 void gen_wide_balls(c2d_rng *r, ref_balls_case *c, int span);
 void gen_wide_cushion(c2d_rng *r, ref_cushion_case *c, int span);
 
+/* Over the whole range (prec, emin, emax: 53, -1022, 1023 double; 24,
+ * -126, 127 float): every position, velocity and spin component, mass,
+ * radius and inertia at its own exponent, uniform from the smallest
+ * subnormal to the largest binade (zeros, immovable balls and infinite
+ * inertias one in 8 each), mu from 0 to INFINITY, constant or Alciatore's
+ * form with any decay.  Mostly approaching; the referee decides every
+ * status.  The cushion: a finite mass, R > 0, a normal of any length. */
+void gen_whole_balls(c2d_rng *r, ref_balls_case *c, int prec, int emin, int emax);
+void gen_whole_cushion(c2d_rng *r, ref_cushion_case *c, int prec, int emin, int emax);
+
 void balls_case_to_float(ref_balls_case *c);
 void cushion_case_to_float(ref_cushion_case *c);
 

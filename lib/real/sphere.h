@@ -100,7 +100,28 @@
  *   referee (tests/unit/test_sphere.c): 8.3 ulp at worst for two balls, all
  *   parts included, 9.3 for a cushion; pool pairs 4.4 (double), 5.0 (float);
  *   over 2^+-300 (float 2^+-30) in every magnitude 5.5 and 9.7 (float 6.0,
- *   7.9).
+ *   7.9); over the whole range, every field at its own exponent, 3.5 and
+ *   5.3 (float 4.2, 4.1).
+ *
+ * THE WHOLE RANGE (the slow path)
+ *   Each plain step is a product or quotient whose error stays relative
+ *   only while it is normal: with masses, inertias and radii anywhere in the
+ *   range, an impulse (mass x speed), R^2/I or R w may overflow, or a
+ *   product underflow to a subnormal or to zero (a light ball's impulse,
+ *   then divided by its tiny mass; a subnormal spin's product, which R
+ *   makes count).  So the plain path is taken only where c2d_sphere_ordinary
+ *   (every input within 2^+-EMAX/16) or the step-by-step check
+ *   (c2d_sphere_fine: every impulse, inverse mass, R/I, R^2/I, slip and
+ *   spin change finite and normal, or exactly zero from a zero factor)
+ *   says no step left the normal range; elsewhere the same equations run
+ *   in double length with an extended exponent (real/arith/dd.h) and each
+ *   output is rounded once on top of its start: C2D_RANGE only when an
+ *   output itself overflows.  Everywhere else, bit for bit the plain path.
+ *   The glancing normal speed's scaled exact products fall back to exact
+ *   sums with extended exponents (c2d_normal_speed_dd) where the scaling
+ *   would lose a component far below the largest, and a speed too small
+ *   for the format stays an approach (the smallest subnormal, then the
+ *   slow path).
  *   exp(-x): c2d_exp_neg below.
  */
 #ifndef C2D_REAL_SPHERE_H
@@ -220,6 +241,53 @@ static void c2d_sphere_scale_vec(c2d_real_vec *out, const c2d_real_vec *v, int k
     out->y = c2d_scale2(v->y, k);
 }
 
+/* x 2^k, or the smallest subnormal of x's sign where that underflows to
+ * zero: an impact stays one (the callers' checks take the slow path). */
+static c2d_real c2d_sphere_keep_sign(c2d_real x, int k)
+{
+    c2d_real v = c2d_scale2(x, k), tiny = c2d_scale2(1, C2D_R_EMIN - C2D_R_MANT);
+    if (v == 0 && x != 0) v = x > 0 ? tiny : -tiny;
+    return v;
+}
+
+/* The scaling by a power of two lost no bits: it can only where a nonzero
+ * component lands below the normal range. */
+static int c2d_sphere_scaled_exact(const c2d_real_vec *scaled, const c2d_real_vec *v)
+{
+    return (c2d_abs(scaled->x) >= c2d_pow2(C2D_R_EMIN) || v->x == 0) &&
+           (c2d_abs(scaled->y) >= c2d_pow2(C2D_R_EMIN) || v->y == 0);
+}
+
+/* (vb - va).n / |n|, n = dh + dl, from exact sums with extended exponents
+ * (real/arith/sign.h), rounded once; a nonzero value too small for the
+ * format comes back as the smallest subnormal of its sign (the callers'
+ * checks then take their slow paths).  For components so far apart that
+ * scaling them to the largest would lose the smaller. */
+C2D_COLD c2d_real c2d_normal_speed_dd(const c2d_real_vec *dh, const c2d_real_vec *dl, const c2d_real_vec *va,
+                                      const c2d_real_vec *vb)
+{
+    c2d_ext n[2][2], r[2][2];
+    c2d_acc acc;
+    c2d_dd len, x;
+    c2d_ext_set(&n[0][0], dh->x, 0);
+    c2d_ext_set(&n[0][1], dl->x, 0);
+    c2d_ext_set(&n[1][0], dh->y, 0);
+    c2d_ext_set(&n[1][1], dl->y, 0);
+    c2d_exact_diff(vb->x, va->x, &r[0][0], &r[0][1]);
+    c2d_exact_diff(vb->y, va->y, &r[1][0], &r[1][1]);
+    c2d_acc_clear(&acc);
+    c2d_acc_pair_product(&acc, n[0], n[0], 1);
+    c2d_acc_pair_product(&acc, n[1], n[1], 1);
+    c2d_dd_of_acc(&x, &acc);
+    c2d_dd_sqrt(&len, &x);
+    c2d_acc_clear(&acc);
+    c2d_acc_pair_product(&acc, r[0], n[0], 1);
+    c2d_acc_pair_product(&acc, r[1], n[1], 1);
+    c2d_dd_of_acc(&x, &acc);
+    c2d_dd_div(&x, &x, &len);
+    return c2d_sphere_keep_sign(x.h + x.l, x.e);
+}
+
 /* The exact products assume no overflow (Veltkamp's split overflows
  * beyond 2^996, a product beyond the range), and the inputs here come from
  * anywhere in it: the normal and the velocities are scaled by powers of
@@ -240,7 +308,12 @@ static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl,
     c2d_sphere_scale_vec(&l, dl, -kn);
     c2d_sphere_scale_vec(&a, va, -kv);
     c2d_sphere_scale_vec(&b, vb, -kv);
-    return c2d_scale2(c2d_dot2(&h, &l, &a, &b) / c2d_scale2(len, -kn), kv);
+    if (!c2d_sphere_scaled_exact(&h, dh) || !c2d_sphere_scaled_exact(&l, dl) || !c2d_sphere_scaled_exact(&a, va) ||
+        !c2d_sphere_scaled_exact(&b, vb))
+        return c2d_normal_speed_dd(dh, dl, va, vb);
+    /* a subnormal |n| (c2d_unit_normal's l m) has lost bits: from h again */
+    len = len < c2d_pow2(C2D_R_EMIN) ? C2D_R_SQRT(h.x * h.x + h.y * h.y) : c2d_scale2(len, -kn);
+    return c2d_sphere_keep_sign(c2d_dot2(&h, &l, &a, &b) / len, kv);
 }
 
 /* |(x, y)|: plainly, or scaled by a power of two where the squares would
@@ -298,14 +371,231 @@ static void c2d_ball_friction_apply(c2d_ball_out *o, const c2d_real_vec *v_norma
     o->w[2] = d->spin[2] - q * jt;
 }
 
-/* The friction of two balls on top of c2d_collide's normal result (ta, tb). */
+/* x is finite and neither subnormal nor an underflow to zero of a product
+ * of nonzero factors (p = x * y, or x alone with y = 1). */
+static int c2d_sphere_fine(c2d_real p, c2d_real x, c2d_real y)
+{
+    return c2d_finite4(p, 0, 0, 0) && (p == 0 ? (x == 0 || y == 0) : c2d_abs(p) >= c2d_pow2(C2D_R_EMIN));
+}
+
+/* The fast test that makes the checks below unnecessary: every nonzero
+ * magnitude in x within 2^+-W, W = EMAX / 16 (double 63, float 7).  Each
+ * quantity the plain path forms is then a product or quotient of at most
+ * ten of them, or a cancelling sum of such (at least a product of two
+ * input ulps when nonzero): within 2^+-(10 W + 2 MANT + 8), inside the
+ * normal range, so no step over- or underflows.  Infinite masses and
+ * inertias fail it (the checks then decide). */
+#define C2D_SPHERE_WINDOW (C2D_R_EMAX / 16)
+
+static int c2d_sphere_ordinary(const c2d_real *x, int n)
+{
+    c2d_real lo = 1, hi = 1;
+    int i;
+    for (i = 0; i < n; i++) {
+        c2d_real t = c2d_abs(x[i]);
+        if (t != 0) {
+            lo = t < lo ? t : lo;
+            hi = t > hi ? t : hi;
+        }
+    }
+    return lo >= c2d_pow2(-C2D_SPHERE_WINDOW) && hi <= c2d_pow2(C2D_SPHERE_WINDOW);
+}
+
+/* mu in the window (or 0, or INFINITY, which is never multiplied). */
+static int c2d_sphere_mu_ordinary(c2d_real mu)
+{
+    return mu == 0 || mu > C2D_R_MAX || (mu >= c2d_pow2(-C2D_SPHERE_WINDOW) && mu <= c2d_pow2(C2D_SPHERE_WINDOW));
+}
+
+static int c2d_balls_ordinary(const c2d_real_ball *a, const c2d_real_ball *b, const c2d_real_vec *dh)
+{
+    const c2d_real x[18] = {a->mass,    a->radius,  a->inertia, a->vel.x,   a->vel.y,   a->spin[0],
+                            a->spin[1], a->spin[2], b->mass,    b->radius,  b->inertia, b->vel.x,
+                            b->vel.y,   b->spin[0], b->spin[1], b->spin[2], dh->x,      dh->y};
+    return c2d_sphere_ordinary(x, 18);
+}
+
+/* A subnormal spin loses bits in every product the plain path takes of it,
+ * and R may make them count: such a ball takes the slow path. */
+static int c2d_ball_spin_fine(const c2d_real_ball *d)
+{
+    return c2d_sphere_fine(d->spin[0], d->spin[0], 1) && c2d_sphere_fine(d->spin[1], d->spin[1], 1) &&
+           c2d_sphere_fine(d->spin[2], d->spin[2], 1);
+}
+
+/* The slow path of both contacts: the same equations in double length with
+ * an extended exponent (real/arith/dd.h), each output rounded once on top
+ * of its start, so nothing over- or underflows on the way (masses,
+ * inertias, radii, speeds and spins each anywhere in the range, an impulse
+ * or R^2/I beyond it).  Taken only where the plain path's check (below)
+ * finds a value out of the format's normal range: bit for bit the plain
+ * path everywhere else. */
+typedef struct c2d_dd_vec { c2d_dd x, y; } c2d_dd_vec;
+
+/* r = x * k for a dd x and a working k. */
+static void c2d_sphere_dd_times(c2d_dd *r, const c2d_dd *x, c2d_real k)
+{
+    c2d_dd dk;
+    c2d_dd_of(&dk, k);
+    c2d_dd_mul(r, x, &dk);
+}
+
+/* r = x * y of two working numbers, exactly. */
+static void c2d_sphere_dd_prod(c2d_dd *r, c2d_real x, c2d_real y)
+{
+    c2d_dd dx;
+    c2d_dd_of(&dx, x);
+    c2d_sphere_dd_times(r, &dx, y);
+}
+
+/* r = a x + b y (dd t, working a and b). */
+static void c2d_sphere_dd_dot(c2d_dd *r, const c2d_dd_vec *t, c2d_real a, c2d_real b)
+{
+    c2d_dd x, y;
+    c2d_sphere_dd_times(&x, &t->x, a);
+    c2d_sphere_dd_times(&y, &t->y, b);
+    c2d_dd_add(r, &x, &y, 1);
+}
+
+/* |(x, y)| in dd. */
+static void c2d_sphere_dd_hypot(c2d_dd *r, const c2d_dd *x, const c2d_dd *y)
+{
+    c2d_dd xx, yy;
+    c2d_dd_mul(&xx, x, x);
+    c2d_dd_mul(&yy, y, y);
+    c2d_dd_add(&xx, &xx, &yy, 1);
+    c2d_dd_sqrt(r, &xx);
+}
+
+/* 1/x and R^2/I style ratios: n / x, 0 for an infinite x. */
+static void c2d_sphere_dd_over(c2d_dd *r, const c2d_dd *n, c2d_real x) { c2d_dd_ratio(r, n, x); }
+
+/* The friction's size in dd: min(mu Jn, stop) (mu INFINITY: stop). */
+static void c2d_sphere_dd_size(c2d_dd *lambda, c2d_real mu, const c2d_dd *normal_impulse, const c2d_dd *stop)
+{
+    c2d_dd cone;
+    if (mu > C2D_R_MAX) {
+        c2d_dd_copy(lambda, stop);
+        return;
+    }
+    c2d_sphere_dd_times(&cone, normal_impulse, mu);
+    c2d_dd_copy(lambda, c2d_dd_abs_greater(&cone, stop) ? stop : &cone);
+}
+
+/* mu(|g|) for a dd slip: c |g| in dd, saturated at C2D_R_MAX (where
+ * exp(-c |g|) is 0). */
+static c2d_real c2d_sphere_dd_mu(const c2d_real_ball_surface *s, const c2d_dd *g)
+{
+    c2d_dd x;
+    if (s->friction_boost == 0) return s->friction;
+    c2d_sphere_dd_times(&x, g, s->friction_decay);
+    return s->friction +
+           s->friction_boost * c2d_exp_neg(x.e >= C2D_R_EMAX ? (c2d_real)C2D_R_MAX : c2d_dd_value(&x));
+}
+
+/* One ball's outputs in dd: v += sign Jt t^ / m, w += R (Jz t^ - Jt z^) / I
+ * (q = R / I), each rounded once on top of the normal result v0. */
+static void c2d_ball_friction_apply_dd(c2d_ball_out *o, const c2d_real_vec *v0, const c2d_real_ball *d,
+                                       const c2d_dd_vec *t, const c2d_dd *jt, const c2d_dd *jz, int sign)
+{
+    c2d_dd dv, q, x, one;
+    c2d_dd_ratio(&dv, jt, d->mass);
+    if (sign < 0) c2d_dd_negate(&dv);
+    c2d_dd_mul(&x, &dv, &t->x);
+    o->v[0] = c2d_plus(v0->x, &x);
+    c2d_dd_mul(&x, &dv, &t->y);
+    o->v[1] = c2d_plus(v0->y, &x);
+    c2d_dd_of(&one, d->radius);
+    c2d_sphere_dd_over(&q, &one, d->inertia);
+    c2d_dd_mul(&dv, &q, jz);
+    c2d_dd_mul(&x, &dv, &t->x);
+    o->w[0] = c2d_plus(d->spin[0], &x);
+    c2d_dd_mul(&x, &dv, &t->y);
+    o->w[1] = c2d_plus(d->spin[1], &x);
+    c2d_dd_mul(&x, &q, jt);
+    c2d_dd_negate(&x);
+    o->w[2] = c2d_plus(d->spin[2], &x);
+}
+
+/* The disk c2d_rough_contact_of reads: the spin about z (field by field:
+ * no memcpy on small cores). */
+static void c2d_ball_disk(c2d_real_disk *r, const c2d_real_ball *d)
+{
+    r->pos.x = d->pos.x;
+    r->pos.y = d->pos.y;
+    r->vel.x = d->vel.x;
+    r->vel.y = d->vel.y;
+    r->spin = d->spin[2];
+    r->mass = d->mass;
+    r->radius = d->radius;
+    r->inertia = d->inertia;
+}
+
+/* Two balls' friction in dd (the slow path): the contact's geometry, gn and
+ * gt as c2d_collide_rough takes them (exact sums, real/rough.h), gz from
+ * the dd tangent t^ = (-n^y, n^x): gz = Ra (wxa tx + wya ty) + Rb (...). */
+C2D_COLD c2d_status c2d_balls_friction_dd(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_body *ta,
+                                          const c2d_real_body *tb, const c2d_real_ball_surface *s)
+{
+    c2d_real_disk da, db;
+    c2d_rough_contact c;
+    c2d_dd_vec t;
+    c2d_dd gz, x, g, one, ima, imb, inv_mn, inv_mt, jn, stop, lambda, f, jt, jz;
+    c2d_ball_out oa, ob;
+    c2d_ball_disk(&da, a);
+    c2d_ball_disk(&db, b);
+    c2d_rough_contact_of(&c, &da, &db, NULL);
+    c2d_dd_copy(&t.x, &c.t[0]);
+    c2d_dd_copy(&t.y, &c.t[1]);
+    c2d_sphere_dd_dot(&gz, &t, a->spin[0], a->spin[1]);
+    c2d_sphere_dd_times(&gz, &gz, a->radius);
+    c2d_sphere_dd_dot(&x, &t, b->spin[0], b->spin[1]);
+    c2d_sphere_dd_times(&x, &x, b->radius);
+    c2d_dd_add(&gz, &gz, &x, 1);
+    c2d_sphere_dd_hypot(&g, &c.gt, &gz);
+    c2d_dd_of(&one, 1);
+    c2d_sphere_dd_over(&ima, &one, a->mass);
+    c2d_sphere_dd_over(&imb, &one, b->mass);
+    c2d_dd_add(&inv_mn, &ima, &imb, 1);
+    c2d_sphere_dd_prod(&x, a->radius, a->radius);
+    c2d_sphere_dd_over(&x, &x, a->inertia);
+    c2d_dd_add(&inv_mt, &inv_mn, &x, 1);
+    c2d_sphere_dd_prod(&x, b->radius, b->radius);
+    c2d_sphere_dd_over(&x, &x, b->inertia);
+    c2d_dd_add(&inv_mt, &inv_mt, &x, 1);
+    c2d_dd_of(&f, 0);
+    if (g.h != 0 && c2d_dd_sign(&c.gn) < 0) {
+        c2d_sphere_dd_times(&jn, &c.gn, -(1 + s->restitution)); /* Jn = -(1 + e) gn mn */
+        c2d_dd_div(&jn, &jn, &inv_mn);
+        c2d_dd_div(&stop, &g, &inv_mt);
+        c2d_sphere_dd_size(&lambda, c2d_sphere_dd_mu(s, &g), &jn, &stop);
+        c2d_dd_div(&f, &lambda, &g);
+    }
+    c2d_dd_mul(&jt, &f, &c.gt);
+    c2d_dd_negate(&jt);
+    c2d_dd_mul(&jz, &f, &gz);
+    c2d_dd_negate(&jz);
+    c2d_ball_friction_apply_dd(&oa, &ta->vel, a, &t, &jt, &jz, -1);
+    c2d_ball_friction_apply_dd(&ob, &tb->vel, b, &t, &jt, &jz, 1);
+    if (!c2d_ball_out_finite(&oa) || !c2d_ball_out_finite(&ob)) return C2D_RANGE;
+    c2d_ball_write(a, &oa);
+    c2d_ball_write(b, &ob);
+    return C2D_OK;
+}
+
+/* The friction of two balls on top of c2d_collide's normal result (ta, tb):
+ * plainly, each step checked (c2d_sphere_fine) for an overflow, a
+ * subnormal or an underflow to zero, which would cost the result its
+ * bound; any such sends the pair to the slow path. */
 static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_body *ta,
                                      const c2d_real_body *tb, const c2d_real_ball_surface *s)
 {
-    c2d_real nx, ny, gn, gt, gz, g, qa, qb, ima, imb, inv_mn, inv_mt, len, jn, f;
+    c2d_real nx, ny, gn, gt, gz, g, qa, qb, ia, ib, ka, kb, ima, imb, inv_mn, inv_mt, len, jn, f;
+    c2d_real jt, jz;
     c2d_real dvx = b->vel.x - a->vel.x, dvy = b->vel.y - a->vel.y;
     c2d_real_vec dh, dl;
     c2d_ball_out oa, ob;
+    int fine, fast;
     dh.x = c2d_two_sum(b->pos.x, -a->pos.x, &dl.x);
     dh.y = c2d_two_sum(b->pos.y, -a->pos.y, &dl.y);
     if (!c2d_finite4(dh.x, dh.y, 0, 0)) { /* the same direction, halved */
@@ -313,26 +603,44 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
         dh.y = c2d_two_sum(b->pos.y * (c2d_real)0.5, -a->pos.y * (c2d_real)0.5, &dl.y);
     }
     len = c2d_unit_normal(&nx, &ny, dh.x, dh.y);
-    qa = a->radius * c2d_sphere_inverse(a->inertia);
-    qb = b->radius * c2d_sphere_inverse(b->inertia);
+    ia = c2d_sphere_inverse(a->inertia);
+    ib = c2d_sphere_inverse(b->inertia);
+    qa = a->radius * ia;
+    qb = b->radius * ib;
     ima = c2d_sphere_inverse(a->mass);
     imb = c2d_sphere_inverse(b->mass);
     inv_mn = ima + imb;
-    inv_mt = inv_mn + a->radius * qa + b->radius * qb;
+    ka = a->radius * qa;
+    kb = b->radius * qb;
+    inv_mt = inv_mn + ka + kb;
     gn = c2d_normal_speed(&dh, &dl, len, nx, ny, &a->vel, &b->vel);
     gt = (dvy * nx - dvx * ny) - (a->radius * a->spin[2] + b->radius * b->spin[2]);
     gz = -(a->radius * (a->spin[0] * ny - a->spin[1] * nx) + b->radius * (b->spin[0] * ny - b->spin[1] * nx));
     g = c2d_sphere_length(gt, gz);
     jn = gn < 0 ? -(1 + s->restitution) * gn / inv_mn : 0;
-    if (!c2d_finite4(g, jn, inv_mt, 0)) return C2D_RANGE;
-    if (g == 0 || jn == 0) {
-        f = 0;
-    } else {
-        f = c2d_friction_size(c2d_ball_friction(s, g), jn, g / inv_mt) / g;
+    fast = c2d_balls_ordinary(a, b, &dh);
+    fine = fast || (c2d_sphere_fine(ia, ia, 1) && c2d_sphere_fine(ib, ib, 1) && c2d_sphere_fine(qa, a->radius, ia) &&
+           c2d_sphere_fine(qb, b->radius, ib) && c2d_sphere_fine(ima, ima, 1) && c2d_sphere_fine(imb, imb, 1) &&
+           c2d_sphere_fine(ka, a->radius, qa) && c2d_sphere_fine(kb, b->radius, qb) &&
+           c2d_finite4(inv_mt, g, 0, 0) && c2d_sphere_fine(gn, 1, 1) && c2d_sphere_fine(jn, 1, 1) &&
+           c2d_ball_spin_fine(a) && c2d_ball_spin_fine(b));
+    f = 0;
+    if (fine && g != 0) {
+        const c2d_real mu = c2d_ball_friction(s, g), cone = mu > C2D_R_MAX ? 1 : mu * jn, stop = g / inv_mt;
+        f = c2d_friction_size(mu, jn, stop) / g;
+        fast = fast && c2d_sphere_mu_ordinary(mu);
+        fine = fast ||
+               (c2d_sphere_fine(cone, mu, jn) && c2d_sphere_fine(stop, 1, 1) && c2d_sphere_fine(f, mu, 1));
     }
-    c2d_ball_friction_apply(&oa, &ta->vel, a, ima, qa, nx, ny, -f * gt, -f * gz, -1);
-    c2d_ball_friction_apply(&ob, &tb->vel, b, imb, qb, nx, ny, -f * gt, -f * gz, 1);
-    if (!c2d_ball_out_finite(&oa) || !c2d_ball_out_finite(&ob)) return C2D_RANGE;
+    jt = -f * gt;
+    jz = -f * gz;
+    fine = fine && (fast || (c2d_sphere_fine(jt, f, gt) && c2d_sphere_fine(jz, f, gz) &&
+                             c2d_sphere_fine(qa * jt, qa, jt) && c2d_sphere_fine(qa * jz, qa, jz) &&
+                             c2d_sphere_fine(qb * jt, qb, jt) && c2d_sphere_fine(qb * jz, qb, jz)));
+    c2d_ball_friction_apply(&oa, &ta->vel, a, ima, qa, nx, ny, jt, jz, -1);
+    c2d_ball_friction_apply(&ob, &tb->vel, b, imb, qb, nx, ny, jt, jz, 1);
+    fine = fine && c2d_ball_out_finite(&oa) && c2d_ball_out_finite(&ob);
+    if (!fine) return c2d_balls_friction_dd(a, b, ta, tb, s);
     c2d_ball_write(a, &oa);
     c2d_ball_write(b, &ob);
     return C2D_OK;
@@ -396,34 +704,148 @@ static c2d_real c2d_cushion_tilt(c2d_real radius, c2d_real height, c2d_real *cs)
     return d / radius;
 }
 
+/* A cushion's impact in dd (the slow path of c2d_collide_cushion; the
+ * derivation above, every step in double length). */
+C2D_COLD c2d_status c2d_cushion_dd(c2d_real_ball *d, const c2d_real_cushion *c)
+{
+    c2d_dd_vec n;
+    c2d_dd x, y, len, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, a, stop, lambda, f, f1, f2, q, dvn, dvt, dwn, dwt, dwz;
+    c2d_dd one;
+    c2d_ball_out o;
+    c2d_sphere_dd_prod(&x, c->normal.x, c->normal.x);
+    c2d_sphere_dd_prod(&y, c->normal.y, c->normal.y);
+    c2d_dd_add(&x, &x, &y, 1);
+    c2d_dd_sqrt(&len, &x);
+    c2d_dd_of(&x, c->normal.x);
+    c2d_dd_div(&n.x, &x, &len);
+    c2d_dd_of(&x, c->normal.y);
+    c2d_dd_div(&n.y, &x, &len);
+    c2d_dd_of(&one, 1);
+    c2d_dd_of(&x, c->height - d->radius); /* exact: R <= h <= 2R */
+    c2d_dd_of(&y, d->radius);
+    c2d_dd_div(&sn, &x, &y);
+    c2d_dd_add(&x, &one, &sn, -1); /* cos = sqrt((1 - sin)(1 + sin)) */
+    c2d_dd_add(&y, &one, &sn, 1);
+    c2d_dd_mul(&x, &x, &y);
+    c2d_dd_sqrt(&cs, &x);
+    c2d_sphere_dd_dot(&vn, &n, d->vel.x, d->vel.y);
+    c2d_sphere_dd_dot(&vt, &n, d->vel.y, -d->vel.x);
+    c2d_sphere_dd_dot(&wn, &n, d->spin[0], d->spin[1]);
+    c2d_sphere_dd_dot(&wt, &n, d->spin[1], -d->spin[0]);
+    c2d_dd_mul(&pn, &cs, &vn); /* Pn = (1 + e) m cos(th) vn */
+    c2d_sphere_dd_times(&pn, &pn, d->mass);
+    c2d_sphere_dd_times(&pn, &pn, 1 + c->restitution);
+    c2d_sphere_dd_times(&x, &cs, d->spin[2]); /* s1 = vt + R (cs wz - sn wn) */
+    c2d_dd_mul(&y, &sn, &wn);
+    c2d_dd_add(&x, &x, &y, -1);
+    c2d_sphere_dd_times(&x, &x, d->radius);
+    c2d_dd_add(&s1, &vt, &x, 1);
+    c2d_dd_mul(&x, &sn, &vn); /* s2 = -(sn vn + R wt) */
+    c2d_sphere_dd_times(&y, &wt, d->radius);
+    c2d_dd_add(&s2, &x, &y, 1);
+    c2d_dd_negate(&s2);
+    c2d_sphere_dd_hypot(&sl, &s1, &s2);
+    c2d_dd_of(&f, 0);
+    if (sl.h != 0) {
+        c2d_sphere_dd_over(&a, &one, d->mass); /* A = 1/m + R^2/I */
+        c2d_sphere_dd_prod(&x, d->radius, d->radius);
+        c2d_sphere_dd_over(&x, &x, d->inertia);
+        c2d_dd_add(&a, &a, &x, 1);
+        c2d_dd_div(&stop, &sl, &a);
+        c2d_sphere_dd_size(&lambda, c->friction, &pn, &stop);
+        c2d_dd_div(&f, &lambda, &sl);
+    }
+    c2d_dd_mul(&f1, &f, &s1);
+    c2d_dd_negate(&f1);
+    c2d_dd_mul(&f2, &f, &s2);
+    c2d_dd_negate(&f2);
+    c2d_dd_mul(&x, &pn, &cs); /* dvn = -(pn cs + f2 sn) / m, dvt = f1 / m */
+    c2d_dd_mul(&y, &f2, &sn);
+    c2d_dd_add(&x, &x, &y, 1);
+    c2d_dd_negate(&x);
+    c2d_sphere_dd_over(&dvn, &x, d->mass);
+    c2d_sphere_dd_over(&dvt, &f1, d->mass);
+    c2d_dd_of(&x, d->radius); /* q = R / I; dwn = -q f1 sn, dwt = -q f2, dwz = q f1 cs */
+    c2d_sphere_dd_over(&q, &x, d->inertia);
+    c2d_dd_mul(&x, &q, &f1);
+    c2d_dd_mul(&dwn, &x, &sn);
+    c2d_dd_negate(&dwn);
+    c2d_dd_mul(&dwz, &x, &cs);
+    c2d_dd_mul(&dwt, &q, &f2);
+    c2d_dd_negate(&dwt);
+    c2d_dd_mul(&x, &dvn, &n.x); /* back to the table's axes: n^ = (nx, ny), t^ = (-ny, nx) */
+    c2d_dd_mul(&y, &dvt, &n.y);
+    c2d_dd_add(&x, &x, &y, -1);
+    o.v[0] = c2d_plus(d->vel.x, &x);
+    c2d_dd_mul(&x, &dvn, &n.y);
+    c2d_dd_mul(&y, &dvt, &n.x);
+    c2d_dd_add(&x, &x, &y, 1);
+    o.v[1] = c2d_plus(d->vel.y, &x);
+    c2d_dd_mul(&x, &dwn, &n.x);
+    c2d_dd_mul(&y, &dwt, &n.y);
+    c2d_dd_add(&x, &x, &y, -1);
+    o.w[0] = c2d_plus(d->spin[0], &x);
+    c2d_dd_mul(&x, &dwn, &n.y);
+    c2d_dd_mul(&y, &dwt, &n.x);
+    c2d_dd_add(&x, &x, &y, 1);
+    o.w[1] = c2d_plus(d->spin[1], &x);
+    o.w[2] = c2d_plus(d->spin[2], &dwz);
+    if (!c2d_ball_out_finite(&o)) return C2D_RANGE;
+    c2d_ball_write(d, &o);
+    return C2D_OK;
+}
+
+/* Plainly, each step checked as for two balls; any value out of the
+ * normal range sends the impact to c2d_cushion_dd. */
 static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cushion *c)
 {
-    c2d_real nx, ny, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, f, len;
+    c2d_real nx, ny, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, f, len, im, ii, rr, k, u, q, f1, f2, qf;
     c2d_real_vec zero = {0, 0};
     c2d_ball_out o;
+    int fine, fast;
     if (d == NULL || !c2d_ball_valid(d) || !c2d_cushion_valid(c, d)) return C2D_INVALID;
     if (c->normal.x == 0 && c->normal.y == 0) return C2D_DEGENERATE;
     len = c2d_unit_normal(&nx, &ny, c->normal.x, c->normal.y);
     sn = c2d_cushion_tilt(d->radius, c->height, &cs);
     vn = c2d_normal_speed(&c->normal, &zero, len, nx, ny, &zero, &d->vel);
-    if (!(cs * vn > 0)) return C2D_SEPARATING;
+    if (!(vn > 0) || sn == 1) return C2D_SEPARATING; /* sn = 1 exactly when h = 2R */
+    u = cs * vn;
     vt = d->vel.y * nx - d->vel.x * ny;
     wn = d->spin[0] * nx + d->spin[1] * ny;
     wt = d->spin[1] * nx - d->spin[0] * ny;
-    pn = (1 + c->restitution) * d->mass * (cs * vn);
+    pn = (1 + c->restitution) * d->mass * u;
     s1 = vt + d->radius * (cs * d->spin[2] - sn * wn);
     s2 = -sn * vn - d->radius * wt;
     sl = c2d_sphere_length(s1, s2);
-    if (!c2d_finite4(pn, sl, 0, 0)) return C2D_RANGE;
-    if (sl == 0) {
-        f = 0;
-    } else {
-        f = c2d_friction_size(c->friction, pn, sl / (1 / d->mass + d->radius * d->radius *
-                                                             c2d_sphere_inverse(d->inertia))) /
-            sl;
+    im = 1 / d->mass;
+    ii = c2d_sphere_inverse(d->inertia);
+    rr = d->radius * d->radius;
+    k = rr * ii;
+    q = d->radius * ii;
+    {
+        const c2d_real x[11] = {d->mass,    d->radius,  d->inertia,  d->vel.x,    d->vel.y, d->spin[0],
+                                d->spin[1], d->spin[2], c->normal.x, c->normal.y, cs};
+        fast = c2d_sphere_ordinary(x, 11) && c2d_sphere_mu_ordinary(c->friction);
     }
-    c2d_cushion_apply(&o, d, nx, ny, sn, cs, pn, -f * s1, -f * s2);
-    if (!c2d_ball_out_finite(&o)) return C2D_RANGE;
+    fine = fast || (c2d_sphere_fine(vn, 1, 1) && c2d_sphere_fine(u, 1, 1) && c2d_sphere_fine(pn, 1, 1) &&
+                    c2d_finite4(sl, 0, 0, 0) && c2d_sphere_fine(im, 1, 1) && c2d_sphere_fine(ii, ii, 1) &&
+                    c2d_sphere_fine(rr, 1, 1) && c2d_sphere_fine(k, ii, 1) && c2d_sphere_fine(q, ii, 1) &&
+                    c2d_ball_spin_fine(d));
+    f = 0;
+    if (fine && sl != 0) {
+        const c2d_real stop = sl / (im + k);
+        f = c2d_friction_size(c->friction, pn, stop) / sl;
+        fine = fast || (c2d_sphere_fine(stop, 1, 1) && c2d_sphere_fine(f, c->friction, 1) &&
+                        (c->friction > C2D_R_MAX || c2d_sphere_fine(c->friction * pn, c->friction, 1)));
+    }
+    f1 = -f * s1;
+    f2 = -f * s2;
+    qf = q * f1;
+    fine = fine && (fast || (c2d_sphere_fine(f1, f, s1) && c2d_sphere_fine(f2, f, s2) && c2d_sphere_fine(qf, q, f1) &&
+                             c2d_sphere_fine(q * f2, q, f2) && c2d_sphere_fine(pn * cs, 1, 1) &&
+                             c2d_sphere_fine(f2 * sn, f2, sn)));
+    c2d_cushion_apply(&o, d, nx, ny, sn, cs, pn, f1, f2);
+    if (!fine || !c2d_ball_out_finite(&o)) return c2d_cushion_dd(d, c);
     c2d_ball_write(d, &o);
     return C2D_OK;
 }

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* c2d_collide_balls(f) and c2d_collide_cushion(f): pool balls as spheres.
- * Accuracy against the MPFR referee (referee/ref_sphere.c) in ulp of the
- * pair's scale, the identities with the rough-disk model, throw against
+ * Accuracy and statuses against the MPFR referee (referee/ref_sphere.c) in
+ * ulp of the pair's scale, at unit scale and over the whole range, the
+ * identities with the rough-disk model, throw against
  * Alciatore's closed form, energy and momenta over random cases, statuses
  * and untouched bodies, and exp(-x) against MPFR. */
 #include "check.h"
@@ -14,8 +15,16 @@
 #define CUSHION_BOUND_ULP 16.0
 /* The seeded stream's OK calls (test_any_bits_...): 38,421 before the exact
  * normal speed and the slip length were scaled (speeds beyond 2^996 made
- * them NaN or Inf: a SEPARATING or RANGE for an impact). */
-#define SPHERE_ANY_BITS_OK 78776
+ * them NaN or Inf: a SEPARATING or RANGE for an impact), 78,776 before the
+ * double-length slow path (an impulse, R^2/I or a slip beyond the format
+ * was a RANGE). */
+#define SPHERE_ANY_BITS_OK 99089
+/* The whole-range streams' impacts resolved OK by both (whole_balls_run,
+ * whole_cushion_run, seeds 27, 28, 37, 38). */
+#define WHOLE_BALLS_DOUBLE_OK 4611
+#define WHOLE_BALLS_FLOAT_OK 4762
+#define WHOLE_CUSHION_DOUBLE_OK 5433
+#define WHOLE_CUSHION_FLOAT_OK 5613
 #define SPHERE_ENERGY_CHECKED 18748 /* the seeded stream's finite pairs (test_energy_never_grows...) */
 
 static void print_ball(const char *name, const ref_ball *d)
@@ -35,12 +44,14 @@ static double balls_worst(balls_gen gen, int is_float, uint64_t seed)
     r.s = seed;
     for (i = 0; i < CASES; i++) {
         ref_balls_case c;
-        double got[10], err = 0;
+        double got[10], err;
         c2d_status st, want;
+        ref_sphere_verdict v;
         gen(&r, &c);
         if (is_float) balls_case_to_float(&c);
         st = is_float ? balls_callf(&c, got) : balls_call(&c, got);
-        want = ref_balls(&c, got, is_float ? 24 : 53, &err);
+        ref_balls(&c, got, is_float ? 24 : 53, is_float ? -126 : -1022, is_float ? FLT_MAX : DBL_MAX, &v);
+        want = v.status, err = v.err_ulp;
         if (st != want || !(err <= BOUND_ULP)) {
             print_ball("a", &c.a), print_ball("b", &c.b);
             print_error("e %a mu %a boost %a decay %a: error %.2f ulp\n", c.e, c.mu, c.boost, c.decay, err);
@@ -78,12 +89,14 @@ static double cushion_worst(cushion_gen gen, int is_float, uint64_t seed)
     r.s = seed;
     for (i = 0; i < CASES; i++) {
         ref_cushion_case c;
-        double got[5], err = 0;
+        double got[5], err;
         c2d_status st, want;
+        ref_sphere_verdict v;
         gen(&r, &c);
         if (is_float) cushion_case_to_float(&c);
         st = is_float ? cushion_callf(&c, got) : cushion_call(&c, got);
-        want = ref_cushion(&c, got, is_float ? 24 : 53, &err);
+        ref_cushion(&c, got, is_float ? 24 : 53, is_float ? -126 : -1022, is_float ? FLT_MAX : DBL_MAX, &v);
+        want = v.status, err = v.err_ulp;
         if (st != want || !(err <= CUSHION_BOUND_ULP)) {
             print_ball("ball", &c.a);
             print_error("n (%a,%a) h %a e %a mu %a: error %.2f ulp\n", c.n[0], c.n[1], c.h, c.e, c.mu, err);
@@ -130,6 +143,102 @@ static void test_cushion_impacts_over_many_decades_match_the_referee_in_double_a
                   cushion_worst(wide_cushion_float, 1, 34));
 }
 
+/* Over the whole range (gen_whole_balls, gen_whole_cushion): every field
+ * at its own exponent from the smallest subnormal to the largest binade.
+ * The status exactly as the referee's, except that C2D_RANGE may stand for
+ * an impact whose exact result or change reaches a limit / 8 (the
+ * contract's margin, c2d_collide's); on OK every output within the bound.
+ * The counts are what the seeded streams give (the rest are INVALID,
+ * DEGENERATE, SEPARATING or RANGE as the referee says): a different count
+ * means the generator or the statuses changed. */
+#define WHOLE_CASES 6000
+
+static void whole_balls_run(int is_float, uint64_t seed, int want_checked)
+{
+    const int prec = is_float ? 24 : 53, emin = is_float ? -126 : -1022, emax = is_float ? 127 : 1023;
+    double worst = 0;
+    int i, ok = 0, range = 0;
+    c2d_rng r;
+    r.s = seed;
+    for (i = 0; i < WHOLE_CASES; i++) {
+        ref_balls_case c;
+        double got[10];
+        c2d_status st;
+        ref_sphere_verdict v;
+        gen_whole_balls(&r, &c, prec, emin, emax);
+        if (is_float) balls_case_to_float(&c);
+        st = is_float ? balls_callf(&c, got) : balls_call(&c, got);
+        ref_balls(&c, got, prec, emin, is_float ? FLT_MAX : DBL_MAX, &v);
+        if (st == C2D_RANGE && v.status == C2D_OK && v.range_allowed) {
+            range++;
+            continue;
+        }
+        if (st != v.status || (st == C2D_OK && !(v.err_ulp <= BOUND_ULP))) {
+            print_ball("a", &c.a), print_ball("b", &c.b);
+            print_error("e %a mu %a boost %a decay %a: status %d, referee %d, error %.2f ulp\n", c.e, c.mu, c.boost,
+                        c.decay, st, v.status, v.err_ulp);
+        }
+        assert_status(st, v.status);
+        if (st != C2D_OK) continue;
+        assert_true(v.err_ulp <= BOUND_ULP);
+        worst = fmax(worst, v.err_ulp);
+        ok++;
+    }
+    print_message("balls %s, whole range: %d impacts (%d RANGE near the limit), worst %.2f ulp\n",
+                  is_float ? "float " : "double", ok, range, worst);
+    assert_cases_checked(ok, want_checked);
+}
+
+static void whole_cushion_run(int is_float, uint64_t seed, int want_checked)
+{
+    const int prec = is_float ? 24 : 53, emin = is_float ? -126 : -1022, emax = is_float ? 127 : 1023;
+    double worst = 0;
+    int i, ok = 0, range = 0;
+    c2d_rng r;
+    r.s = seed;
+    for (i = 0; i < WHOLE_CASES; i++) {
+        ref_cushion_case c;
+        double got[5];
+        c2d_status st;
+        ref_sphere_verdict v;
+        gen_whole_cushion(&r, &c, prec, emin, emax);
+        if (is_float) cushion_case_to_float(&c);
+        st = is_float ? cushion_callf(&c, got) : cushion_call(&c, got);
+        ref_cushion(&c, got, prec, emin, is_float ? FLT_MAX : DBL_MAX, &v);
+        if (st == C2D_RANGE && v.status == C2D_OK && v.range_allowed) {
+            range++;
+            continue;
+        }
+        if (st != v.status || (st == C2D_OK && !(v.err_ulp <= CUSHION_BOUND_ULP))) {
+            print_ball("ball", &c.a);
+            print_error("n (%a,%a) h %a e %a mu %a: status %d, referee %d, error %.2f ulp\n", c.n[0], c.n[1], c.h, c.e,
+                        c.mu, st, v.status, v.err_ulp);
+        }
+        assert_status(st, v.status);
+        if (st != C2D_OK) continue;
+        assert_true(v.err_ulp <= CUSHION_BOUND_ULP);
+        worst = fmax(worst, v.err_ulp);
+        ok++;
+    }
+    print_message("cushion %s, whole range: %d impacts (%d RANGE near the limit), worst %.2f ulp\n",
+                  is_float ? "float " : "double", ok, range, worst);
+    assert_cases_checked(ok, want_checked);
+}
+
+static void test_balls_match_the_referee_over_the_whole_range_in_double_and_float(void **state)
+{
+    (void)state;
+    whole_balls_run(0, 27, WHOLE_BALLS_DOUBLE_OK);
+    whole_balls_run(1, 28, WHOLE_BALLS_FLOAT_OK);
+}
+
+static void test_cushion_impacts_match_the_referee_over_the_whole_range_in_double_and_float(void **state)
+{
+    (void)state;
+    whole_cushion_run(0, 37, WHOLE_CUSHION_DOUBLE_OK);
+    whole_cushion_run(1, 38, WHOLE_CUSHION_FLOAT_OK);
+}
+
 /* Rails just below h = 2R, where cos(th) -> 0: the sliding friction mu Pn
  * is proportional to cos(th), so cos(th) must keep a few u however small
  * (c2d_cushion_tilt); h = 2R (1 - 2^-k) for k up to the format's
@@ -143,15 +252,17 @@ static void test_a_rail_near_the_top_of_the_ball_stays_within_the_bound(void **s
     for (is_float = 0; is_float < 2; is_float++)
         for (k = 2; k < (is_float ? 24 : 53); k++) {
             ref_cushion_case c;
-            double got[5], err = 0;
+            double got[5];
+            ref_sphere_verdict v;
             gen_cushion(&r, &c);
             if (is_float) cushion_case_to_float(&c);
             c.h = 2 * c.a.r - ldexp(2 * c.a.r, -k), c.mu = 1;
             if (is_float) c.h = (float)c.h;
             assert_status(is_float ? cushion_callf(&c, got) : cushion_call(&c, got), C2D_OK);
-            assert_status(ref_cushion(&c, got, is_float ? 24 : 53, &err), C2D_OK);
-            if (!(err <= CUSHION_BOUND_ULP)) print_error("h = 2R (1 - 2^-%d): error %.2f ulp\n", k, err);
-            assert_true(err <= CUSHION_BOUND_ULP);
+            ref_cushion(&c, got, is_float ? 24 : 53, is_float ? -126 : -1022, is_float ? FLT_MAX : DBL_MAX, &v);
+            assert_status(v.status, C2D_OK);
+            if (!(v.err_ulp <= CUSHION_BOUND_ULP)) print_error("h = 2R (1 - 2^-%d): error %.2f ulp\n", k, v.err_ulp);
+            assert_true(v.err_ulp <= CUSHION_BOUND_ULP);
             n++;
         }
     assert_cases_checked(n, 51 + 22);
@@ -589,6 +700,8 @@ int main(void)
         cmocka_unit_test(test_pool_pairs_match_the_referee_in_double_and_float),
         cmocka_unit_test(test_mixed_pairs_match_the_referee_in_double_and_float),
         cmocka_unit_test(test_cushion_impacts_match_the_referee_in_double_and_float),
+        cmocka_unit_test(test_balls_match_the_referee_over_the_whole_range_in_double_and_float),
+        cmocka_unit_test(test_cushion_impacts_match_the_referee_over_the_whole_range_in_double_and_float),
         cmocka_unit_test(test_a_rail_near_the_top_of_the_ball_stays_within_the_bound),
         cmocka_unit_test(test_pairs_over_many_decades_match_the_referee_in_double_and_float),
         cmocka_unit_test(test_cushion_impacts_over_many_decades_match_the_referee_in_double_and_float),
