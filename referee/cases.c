@@ -126,6 +126,12 @@ void case_to_bodiesf(const ref_case *c, c2d_bodyf *a, c2d_bodyf *b)
     b->mass = (float)c->mb;
 }
 
+double ref_to_float(double x)
+{
+    volatile float f = (float)x;
+    return f;
+}
+
 void case_to_float(ref_case *c)
 {
     int i;

@@ -35,6 +35,11 @@ void case_to_bodiesf(const ref_case *c, c2d_bodyf *a, c2d_bodyf *b);
 
 /* Round every input of a case to float, as a float caller has them (the
  * referee then sees exactly what the float function gets). */
+/* x rounded to float and back, through a volatile: gcc 12.2's -O2 SLP
+ * vectoriser drops a (double)(float) round trip in straight-line code (a
+ * case generator's conversions came out unrounded in a plain build and
+ * rounded in a sanitised one, so the streams differed). */
+double ref_to_float(double x);
 void case_to_float(ref_case *c);
 
 #endif

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "cases_sphere.h"
+#include "cases.h"
 
 #include <math.h>
 
@@ -149,7 +150,7 @@ static double whole(c2d_rng *r, int prec, int emin, int emax)
 {
     int k = emin - prec + 1 + (int)(c2d_rng_next(r) % (uint64_t)(emax - emin + prec - 1));
     double v = ldexp(1 + c2d_rng_unit(r), k);
-    if (prec < 53) v = (double)(float)v;
+    if (prec < 53) v = ref_to_float(v);
     return c2d_rng_next(r) & 1 ? -v : v;
 }
 
@@ -173,7 +174,7 @@ static void whole_ball(c2d_rng *r, ref_ball *d, int prec, int emin, int emax)
     for (i = 0; i < 2; i++) d->pos[i] = whole_or_zero(r, prec, emin, emax);
 }
 
-static double to_prec(double x, int prec) { return prec < 53 ? (double)(float)x : x; }
+static double to_prec(double x, int prec) { return prec < 53 ? ref_to_float(x) : x; }
 
 /* (x, y) . (u, v) > 0, its sign from scaled terms (no overflow). */
 static int dot_positive(double x, double y, double u, double v)
