@@ -356,7 +356,8 @@ typedef struct c2d_world_desc {
      * the event's time) and call c2d_world_set_velocity,
      * c2d_world_set_acceleration, c2d_world_set_timer, c2d_world_set_spin
      * and c2d_world_remove on any disk (they act at the event's time; the
-     * disks are predicted anew after); there c2d_world_add, the statics'
+     * disks are predicted anew after, the event's own disks once however
+     * many setters the callback calls on them); there c2d_world_add, the statics'
      * adders and c2d_world_advance return C2D_INVALID.  A timer set again and again to the event's own time
      * never lets the advance finish: that is the caller's loop. */
     void (*on_event)(void *user, const c2d_world_event *event);
@@ -435,7 +436,9 @@ size_t c2d_world_count(const c2d_world *world);
  * predicted anew, and its partners' predictions become stale.
  *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed,
  *            NaN/Inf velocity; nothing changes).
- *   cost     one prediction (the disks of 9 cells) and a queue update. */
+ *   cost     one prediction (the disks of 9 cells) and a queue update; none
+ *            from on_event for a disk of the event reported (the world
+ *            predicts those once when the callback returns). */
 c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 velocity);
 
 /* Take disk `index` out of the world at its time.  Its index is not reused
@@ -460,7 +463,8 @@ c2d_status c2d_world_remove(c2d_world *world, size_t index);
  * and acceleration to 0 (see c2d_world_set_timer).
  *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed,
  *            NaN/Inf in acceleration; nothing changes).
- *   cost     one prediction and a queue update; a world that has ever had a
+ *   cost     one prediction and a queue update (none from on_event for a
+ *            disk of the event reported, as c2d_world_set_velocity); a world that has ever had a
  *            non-zero acceleration reads its neighbours' accelerations in
  *            every prediction (a second cache line per neighbour) and pays
  *            c2d_time_of_impact_accel (a few hundred ns) for every pair
@@ -486,7 +490,8 @@ c2d_status c2d_world_get_acceleration(const c2d_world *world, size_t index, c2d_
  * crossings, then timers (lower disk first).
  *   returns  C2D_OK; C2D_INVALID (NULL, index out of range or removed, NaN,
  *            t before the world's time; nothing changes).
- *   cost     one prediction and a queue update. */
+ *   cost     one prediction and a queue update (none from on_event for a
+ *            disk of the event reported, as c2d_world_set_velocity). */
 c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t);
 
 /* Add a static (immovable) segment from a to b (a pool table's cushion),

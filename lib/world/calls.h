@@ -18,6 +18,13 @@ c2d_status c2d_world_get(const c2d_world *world, size_t index, c2d_body *disk)
     return C2D_OK;
 }
 
+/* After a setter: disk i's next event, unless on_event is running for an
+ * event of i's, after which the world predicts i anyway (c2d_w_tell). */
+static void c2d_w_predict_unless_told(c2d_world *w, uint32_t i)
+{
+    if (!(w->busy == 1 && w->disk[i].kind == C2D_W_TOLD)) c2d_w_predict(w, i);
+}
+
 c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 velocity)
 {
     c2d_w_disk *p;
@@ -30,7 +37,7 @@ c2d_status c2d_world_set_velocity(c2d_world *world, size_t index, c2d_vec2 veloc
     dt = world->now - p->t;
     c2d_w_restate(world, p, c2d_w_at(p->x, p->vx, p->ax, dt), c2d_w_at(p->y, p->vy, p->ay, dt), velocity.x, velocity.y);
     p->count++; /* the partners' predictions with it are stale */
-    c2d_w_predict(world, (uint32_t)index);
+    c2d_w_predict_unless_told(world, (uint32_t)index);
     return C2D_OK;
 }
 
@@ -49,7 +56,7 @@ c2d_status c2d_world_set_acceleration(c2d_world *world, size_t index, c2d_vec2 a
     p->ax = acceleration.x, p->ay = acceleration.y;
     if (acceleration.x != 0 || acceleration.y != 0) world->accel = 1;
     p->count++;
-    c2d_w_predict(world, (uint32_t)index);
+    c2d_w_predict_unless_told(world, (uint32_t)index);
     return C2D_OK;
 }
 
@@ -142,7 +149,7 @@ c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t)
     if (p->kind == C2D_W_GONE) return C2D_INVALID;
     p->timer = t < C2D_W_INF ? t : C2D_W_INF;
     p->count++; /* the horizon of its partners' curved predictions */
-    c2d_w_predict(world, (uint32_t)index);
+    c2d_w_predict_unless_told(world, (uint32_t)index);
     return C2D_OK;
 }
 

@@ -12,11 +12,22 @@ static void c2d_w_emit(c2d_world *w, const c2d_world_event *ev)
     w->busy = 0;
 }
 
-/* Report an event (at the world's time) to on_event, if any. */
+/* Report an event (at the world's time) to on_event, if any.  Every
+ * caller predicts the event's disks again once this returns (c2d_w_repredict),
+ * so meanwhile they are marked C2D_W_TOLD and the setters the callback
+ * calls on them do not predict: the pool game sets two or three motions of
+ * a ball at each of its events, each a full prediction against every static
+ * and neighbour, all but the last overwritten unused.  The same bits: a
+ * prediction changes nothing but the disk's own event (its kind, partner,
+ * pcount, side and queue entry, all written again by the last one), the
+ * queue pops in (time, tie) order whatever was inserted and replaced
+ * before, and no event is popped inside the callback. */
 static void c2d_w_tell(c2d_world *w, c2d_world_event_kind kind, size_t a, size_t b, double jx, double jy)
 {
     c2d_world_event ev;
     if (w->on_event == NULL) return;
+    w->disk[a].kind = C2D_W_TOLD;
+    if (kind == C2D_WORLD_IMPACT) w->disk[b].kind = C2D_W_TOLD;
     ev.kind = kind, ev.time = w->now, ev.a = a, ev.b = b;
     ev.impulse.x = jx, ev.impulse.y = jy;
     c2d_w_emit(w, &ev);

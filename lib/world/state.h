@@ -44,6 +44,9 @@
 /* Kinds in the order simultaneous events are processed (a timer's tie key
  * is 3 like an idle disk's: idle ones are never due). */
 enum { C2D_W_PAIR = 0, C2D_W_WALL = 1, C2D_W_CELL = 2, C2D_W_TIMER = 3, C2D_W_IDLE = 4, C2D_W_GONE = 5 };
+/* The kind of an event's disk while on_event runs: it is predicted again
+ * when the callback returns (c2d_w_tell), so a setter need not. */
+enum { C2D_W_TOLD = 6 };
 /* The partners of a C2D_W_CELL event: a cell side 0..3 (-x, +x, -y, +y),
  * the periodic rebase, or a side of the caller broadphase's box. */
 enum { C2D_W_REBASE = 4, C2D_W_BOX = 5 };

@@ -604,6 +604,108 @@ static void test_a_decelerating_disk_stops_where_the_formula_says(void **state)
     }
 }
 
+/* The setters called from on_event act as if called after advancing to
+ * the event's time, bit for bit (the header's promise), now that a setter
+ * on a disk of the event leaves the prediction to the world: a gas with
+ * walls where every impact or wall hit damps the disks (velocity x 0.9
+ * turned a little), gives them a deceleration and a timer (three setters
+ * each, the pool game's pattern), and an impact also kicks a third disk,
+ * not in the event (predicted at once); every due timer stops the
+ * acceleration.  Run once with the callback, logging each event it acted
+ * on, and once without, advancing to each logged time and doing the same
+ * there: the final states and the counts agree exactly. */
+enum { ACT_MAX = 6000 };
+typedef struct act_event {
+    c2d_world_event_kind kind;
+    double time;
+    size_t a, b;
+} act_event;
+typedef struct actor {
+    c2d_world *w;
+    int n;
+    act_event ev[ACT_MAX];
+} actor;
+
+static void act_on(c2d_world *w, const act_event *e)
+{
+    const size_t n = c2d_world_count(w), disks[2] = {e->a, e->b};
+    size_t k;
+    if (e->kind == C2D_WORLD_TIMER) {
+        c2d_vec2 zero = {0, 0};
+        assert_status(c2d_world_set_acceleration(w, e->a, zero), C2D_OK);
+        return;
+    }
+    for (k = 0; k < (e->kind == C2D_WORLD_IMPACT ? 2u : 1u); k++) {
+        c2d_body d;
+        c2d_vec2 v, acc;
+        assert_status(c2d_world_get(w, disks[k], &d), C2D_OK);
+        v.x = 0.9 * (d.vel.x - 0.05 * d.vel.y), v.y = 0.9 * (d.vel.y + 0.05 * d.vel.x);
+        acc.x = -0.1 * v.x, acc.y = -0.1 * v.y;
+        assert_status(c2d_world_set_velocity(w, disks[k], v), C2D_OK);
+        assert_status(c2d_world_set_acceleration(w, disks[k], acc), C2D_OK);
+        assert_status(c2d_world_set_timer(w, disks[k], e->time + 0.25 + 0.01 * (double)k), C2D_OK);
+    }
+    if (e->kind == C2D_WORLD_IMPACT) { /* a disk of no part in the event */
+        size_t third = (e->a + 1) % n;
+        c2d_body d;
+        c2d_vec2 v;
+        if (third == e->b) third = (third + 1) % n;
+        assert_status(c2d_world_get(w, third, &d), C2D_OK);
+        v.x = d.vel.x + 0.01, v.y = d.vel.y;
+        assert_status(c2d_world_set_velocity(w, third, v), C2D_OK);
+    }
+}
+
+static void act_in_callback(void *user, const c2d_world_event *e)
+{
+    actor *s = user;
+    act_event *x;
+    assert_true(s->n < ACT_MAX);
+    x = &s->ev[s->n++];
+    x->kind = e->kind, x->time = e->time, x->a = e->a, x->b = e->b;
+    act_on(s->w, x);
+}
+
+static void test_setters_from_the_callback_act_as_after_advancing_to_the_event(void **state)
+{
+    const double end = 40;
+    c2d_world_desc d = box_desc(25, 12, 12, C2D_WALLS, 0.95, 0.9);
+    actor *s = calloc(1, sizeof *s);
+    c2d_world *w[2];
+    void *mem[2];
+    c2d_world_stats st[2];
+    int pass, k, distinct = 1;
+    size_t i;
+    (void)state;
+    for (pass = 0; pass < 2; pass++) {
+        d.on_event = pass == 0 ? act_in_callback : NULL, d.user = s;
+        w[pass] = new_world(&d, &mem[pass]);
+        fill_gas(w[pass], &d, 5, 0.4, 1, 2024);
+    }
+    s->w = w[0];
+    assert_status(c2d_world_advance(w[0], end), C2D_OK);
+    for (k = 1; k < s->n; k++) distinct &= s->ev[k].time > s->ev[k - 1].time;
+    assert_true(distinct); /* one event an instant, so advancing to it stops right after it */
+    for (k = 0; k < s->n; k++) {
+        assert_status(c2d_world_advance(w[1], s->ev[k].time), C2D_OK);
+        act_on(w[1], &s->ev[k]);
+    }
+    assert_status(c2d_world_advance(w[1], end), C2D_OK);
+    for (pass = 0; pass < 2; pass++) c2d_world_get_stats(w[pass], &st[pass]);
+    assert_true(st[0].collisions == st[1].collisions && st[0].wall_collisions == st[1].wall_collisions &&
+                st[0].events == st[1].events && st[0].time == st[1].time);
+    print_message("setters from the callback: %d events acted on, %llu impacts, %llu wall hits\n", s->n,
+                  st[0].collisions, st[0].wall_collisions);
+    assert_true(st[0].collisions >= 50 && st[0].wall_collisions >= 20);
+    for (i = 0; i < c2d_world_count(w[0]); i++) {
+        c2d_body a, b;
+        assert_status(c2d_world_get(w[0], i, &a), C2D_OK);
+        assert_status(c2d_world_get(w[1], i, &b), C2D_OK);
+        assert_memory_equal(&a, &b, sizeof a);
+    }
+    free(mem[0]), free(mem[1]), free(s);
+}
+
 static void log_first_impact(void *user, const c2d_world_event *e)
 {
     double *t = user;
@@ -1380,6 +1482,7 @@ int main(void)
         cmocka_unit_test(test_one_advance_and_many_uneven_ones_give_the_same_bits),
         cmocka_unit_test(test_reading_a_world_changes_none_of_its_bytes),
         cmocka_unit_test(test_the_event_callback_sees_every_impact_with_its_impulse),
+        cmocka_unit_test(test_setters_from_the_callback_act_as_after_advancing_to_the_event),
         cmocka_unit_test(test_kicks_and_removals_keep_frame_independence),
         cmocka_unit_test(test_a_kicked_disk_moves_and_a_removed_one_is_passed_through),
         cmocka_unit_test(test_every_refusal_is_invalid_and_changes_nothing),
