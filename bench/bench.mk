@@ -132,9 +132,9 @@ TEST_TARGETS += test-bench
 # bench/RESULTS-sphere.md, the README and docs/API.md).
 .PHONY: bench-sphere
 BENCH_SPHERE_N := 100000
-$(BENCH_DIR)/sphere: bench/sphere.c referee/cases_sphere.c referee/ref_sphere.c $(STATIC)
+$(BENCH_DIR)/sphere: bench/sphere.c referee/cases_sphere.c referee/cases.c referee/ref_sphere.c $(STATIC)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Wno-conversion -Ireferee -o $@ bench/sphere.c referee/cases_sphere.c referee/ref_sphere.c $(STATIC) -lmpfr -lgmp -lm
+	$(CC) $(ALL_CFLAGS) $(DEPFLAGS) -Wno-conversion -Ireferee -o $@ bench/sphere.c referee/cases_sphere.c referee/cases.c referee/ref_sphere.c $(STATIC) -lmpfr -lgmp -lm
 
 bench-sphere: $(BENCH_DIR)/sphere
 	$(BENCH_DIR)/sphere accuracy $(BENCH_SPHERE_N)
