@@ -153,11 +153,48 @@ static void test_cushion_impacts_over_many_decades_match_the_referee_in_double_a
  * means the generator or the statuses changed. */
 #define WHOLE_CASES 6000
 
+/* The tally of a whole-range run: impacts checked, RANGE answers allowed
+ * near the limit, the worst error. */
+typedef struct whole_tally {
+    int ok, range;
+    double worst;
+} whole_tally;
+
+/* The library's answer st agrees with the referee's verdict: RANGE where an
+ * exact output reaches the margin, else the referee's status and on OK an
+ * error within bound. */
+static int whole_agrees(c2d_status st, const ref_sphere_verdict *v, double bound)
+{
+    if (st == C2D_RANGE && v->status == C2D_OK && v->range_allowed) return 1;
+    return st == v->status && (st != C2D_OK || v->err_ulp <= bound);
+}
+
+/* Count one case (the caller has printed it if whole_agrees said no). */
+static void whole_count(whole_tally *t, c2d_status st, const ref_sphere_verdict *v, double bound)
+{
+    if (st == C2D_RANGE && v->status == C2D_OK && v->range_allowed) {
+        t->range++;
+        return;
+    }
+    assert_status(st, v->status);
+    if (st != C2D_OK) return;
+    assert_true(v->err_ulp <= bound);
+    t->worst = fmax(t->worst, v->err_ulp);
+    t->ok++;
+}
+
+static void whole_report(const whole_tally *t, const char *what, int is_float, int want_checked)
+{
+    print_message("%s %s, whole range: %d impacts (%d RANGE near the limit), worst %.2f ulp\n", what,
+                  is_float ? "float " : "double", t->ok, t->range, t->worst);
+    assert_cases_checked(t->ok, want_checked);
+}
+
 static void whole_balls_run(int is_float, uint64_t seed, int want_checked)
 {
     const int prec = is_float ? 24 : 53, emin = is_float ? -126 : -1022, emax = is_float ? 127 : 1023;
-    double worst = 0;
-    int i, ok = 0, range = 0;
+    whole_tally t = {0, 0, 0};
+    int i;
     c2d_rng r;
     r.s = seed;
     for (i = 0; i < WHOLE_CASES; i++) {
@@ -169,31 +206,21 @@ static void whole_balls_run(int is_float, uint64_t seed, int want_checked)
         if (is_float) balls_case_to_float(&c);
         st = is_float ? balls_callf(&c, got) : balls_call(&c, got);
         ref_balls(&c, got, prec, emin, is_float ? FLT_MAX : DBL_MAX, &v);
-        if (st == C2D_RANGE && v.status == C2D_OK && v.range_allowed) {
-            range++;
-            continue;
-        }
-        if (st != v.status || (st == C2D_OK && !(v.err_ulp <= BOUND_ULP))) {
+        if (!whole_agrees(st, &v, BOUND_ULP)) {
             print_ball("a", &c.a), print_ball("b", &c.b);
             print_error("e %a mu %a boost %a decay %a: status %d, referee %d, error %.2f ulp\n", c.e, c.mu, c.boost,
                         c.decay, st, v.status, v.err_ulp);
         }
-        assert_status(st, v.status);
-        if (st != C2D_OK) continue;
-        assert_true(v.err_ulp <= BOUND_ULP);
-        worst = fmax(worst, v.err_ulp);
-        ok++;
+        whole_count(&t, st, &v, BOUND_ULP);
     }
-    print_message("balls %s, whole range: %d impacts (%d RANGE near the limit), worst %.2f ulp\n",
-                  is_float ? "float " : "double", ok, range, worst);
-    assert_cases_checked(ok, want_checked);
+    whole_report(&t, "balls", is_float, want_checked);
 }
 
 static void whole_cushion_run(int is_float, uint64_t seed, int want_checked)
 {
     const int prec = is_float ? 24 : 53, emin = is_float ? -126 : -1022, emax = is_float ? 127 : 1023;
-    double worst = 0;
-    int i, ok = 0, range = 0;
+    whole_tally t = {0, 0, 0};
+    int i;
     c2d_rng r;
     r.s = seed;
     for (i = 0; i < WHOLE_CASES; i++) {
@@ -205,24 +232,14 @@ static void whole_cushion_run(int is_float, uint64_t seed, int want_checked)
         if (is_float) cushion_case_to_float(&c);
         st = is_float ? cushion_callf(&c, got) : cushion_call(&c, got);
         ref_cushion(&c, got, prec, emin, is_float ? FLT_MAX : DBL_MAX, &v);
-        if (st == C2D_RANGE && v.status == C2D_OK && v.range_allowed) {
-            range++;
-            continue;
-        }
-        if (st != v.status || (st == C2D_OK && !(v.err_ulp <= CUSHION_BOUND_ULP))) {
+        if (!whole_agrees(st, &v, CUSHION_BOUND_ULP)) {
             print_ball("ball", &c.a);
             print_error("n (%a,%a) h %a e %a mu %a: status %d, referee %d, error %.2f ulp\n", c.n[0], c.n[1], c.h, c.e,
                         c.mu, st, v.status, v.err_ulp);
         }
-        assert_status(st, v.status);
-        if (st != C2D_OK) continue;
-        assert_true(v.err_ulp <= CUSHION_BOUND_ULP);
-        worst = fmax(worst, v.err_ulp);
-        ok++;
+        whole_count(&t, st, &v, CUSHION_BOUND_ULP);
     }
-    print_message("cushion %s, whole range: %d impacts (%d RANGE near the limit), worst %.2f ulp\n",
-                  is_float ? "float " : "double", ok, range, worst);
-    assert_cases_checked(ok, want_checked);
+    whole_report(&t, "cushion", is_float, want_checked);
 }
 
 static void test_balls_match_the_referee_over_the_whole_range_in_double_and_float(void **state)

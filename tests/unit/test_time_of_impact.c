@@ -175,6 +175,37 @@ static void test_exactly_touching_pairs_hit_now_only_when_approaching(void **sta
     }
 }
 
+/* c2d_time_of_impact, or c2d_time_of_impactf on c rounded to float (out
+ * of line, case_to_float: gcc 12.2's -O2 SLP vectoriser dropped the
+ * velocities' rounding when it was written inline), *t widened to double;
+ * radius already what the float call gets. */
+static c2d_status call_toi(int is_float, ref_case *c, double radius, double *t)
+{
+    c2d_status got;
+    if (is_float) {
+        c2d_bodyf a, b;
+        float tf = -1;
+        case_to_float(c);
+        case_to_bodiesf(c, &a, &b);
+        got = c2d_time_of_impactf(&a, &b, (float)radius, &tf);
+        *t = tf;
+    } else {
+        c2d_body a, b;
+        case_to_bodies(c, &a, &b);
+        got = c2d_time_of_impact(&a, &b, radius, t);
+    }
+    return got;
+}
+
+/* The library's status is the referee's, the case printed if not. */
+static void assert_status_as_referee(c2d_status got, c2d_status want, const ref_case *c, double radius)
+{
+    if (got != want)
+        print_error("pa=(%a,%a) pb=(%a,%a) va=(%a,%a) vb=(%a,%a) R=%a\n", c->pa[0], c->pa[1], c->pb[0], c->pb[1],
+                    c->va[0], c->va[1], c->vb[0], c->vb[1], radius);
+    assert_status(got, want);
+}
+
 /* Near grazes whose exact differences scatter over the whole exponent
  * range, like the fuzzer's 1 + 2^-367 against speeds of 73 and
  * 2^-62 + 2^-911: the exact discriminant then has more components than the
@@ -217,23 +248,9 @@ static void run_scattered_grazes(int is_float, uint64_t seed, int want_hits)
         double want = 0, unit = 0, t = -1, err;
         c2d_status got, exp_st;
         gen_scattered_graze(&r, &c, is_float);
-        if (is_float) {
-            c2d_bodyf a, b;
-            float tf = -1;
-            case_to_bodiesf(&c, &a, &b);
-            got = c2d_time_of_impactf(&a, &b, 1.0f, &tf);
-            t = tf;
-        } else {
-            c2d_body a, b;
-            case_to_bodies(&c, &a, &b);
-            got = c2d_time_of_impact(&a, &b, 1.0, &t);
-        }
+        got = call_toi(is_float, &c, 1.0, &t);
         exp_st = ref_time_of_impact(&c, 1.0, &want, &unit, prec, emin);
-        if (got != exp_st) {
-            print_error("pa=(%a,%a) pb=(%a,%a) va=(%a,%a) vb=(%a,%a)\n", c.pa[0], c.pa[1], c.pb[0], c.pb[1], c.va[0],
-                        c.va[1], c.vb[0], c.vb[1]);
-            assert_status(got, exp_st);
-        }
+        assert_status_as_referee(got, exp_st, &c, 1.0);
         if (got != C2D_OK) continue;
         hits++;
         err = fabs(t - want) / unit;
@@ -304,28 +321,11 @@ static void run_random(int is_float, int extreme, uint64_t seed, int want_checke
             gen_toi_ratios(&r, &c, &radius, prec, emin, is_float ? 127 : 1023);
         else
             gen_toi(&r, &c, &radius, sp, sv);
-        if (is_float) {
-            c2d_bodyf a, b;
-            float tf = -1;
-            /* Rounded out of line: gcc 12.2's -O2 SLP vectoriser dropped the
-             * velocities' rounding when it was written inline here. */
-            case_to_float(&c);
-            radius = (float)radius;
-            case_to_bodiesf(&c, &a, &b);
-            got = c2d_time_of_impactf(&a, &b, (float)radius, &tf);
-            t = tf;
-        } else {
-            c2d_body a, b;
-            case_to_bodies(&c, &a, &b);
-            got = c2d_time_of_impact(&a, &b, radius, &t);
-        }
+        if (is_float) radius = (float)radius;
+        got = call_toi(is_float, &c, radius, &t);
         exp_st = ref_time_of_impact(&c, radius, &want, &unit, prec, emin);
         if (exp_st == C2D_OK && want > (is_float ? FLT_MAX : DBL_MAX)) exp_st = C2D_RANGE;
-        if (got != exp_st) {
-            print_error("pa=(%a,%a) pb=(%a,%a) va=(%a,%a) vb=(%a,%a) R=%a\n", c.pa[0], c.pa[1], c.pb[0], c.pb[1],
-                        c.va[0], c.va[1], c.vb[0], c.vb[1], radius);
-            assert_status(got, exp_st);
-        }
+        assert_status_as_referee(got, exp_st, &c, radius);
         if (got != C2D_OK) continue;
         hits++;
         err = fabs(t - want) / unit;
@@ -419,24 +419,9 @@ static void run_touching(int is_float, uint64_t seed, int want_now, int want_lat
         c.vb[0] = speed * cos(aim), c.vb[1] = speed * sin(aim);
         c.pa[0] *= s, c.pa[1] *= s, c.pb[0] *= s, c.pb[1] *= s, radius *= s;
         c.ma = c.mb = 1, c.n[0] = c.n[1] = 0, c.has_normal = 0, c.e = 0;
-        if (is_float) {
-            c2d_bodyf a, b;
-            float tf = -1;
-            case_to_float(&c);
-            case_to_bodiesf(&c, &a, &b);
-            got = c2d_time_of_impactf(&a, &b, (float)radius, &tf);
-            t = tf;
-        } else {
-            c2d_body a, b;
-            case_to_bodies(&c, &a, &b);
-            got = c2d_time_of_impact(&a, &b, radius, &t);
-        }
+        got = call_toi(is_float, &c, radius, &t);
         exp_st = ref_time_of_impact(&c, radius, &want, &unit, prec, emin);
-        if (got != exp_st) {
-            print_error("pa=(%a,%a) pb=(%a,%a) va=(%a,%a) vb=(%a,%a) R=%a\n", c.pa[0], c.pa[1], c.pb[0], c.pb[1],
-                        c.va[0], c.va[1], c.vb[0], c.vb[1], radius);
-            assert_status(got, exp_st);
-        }
+        assert_status_as_referee(got, exp_st, &c, radius);
         if (got != C2D_OK) {
             sep++;
             continue;
