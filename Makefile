@@ -224,6 +224,7 @@ test-unit: check-deps-test
 TEST_TARGETS :=
 LINT_TARGETS :=
 -include demo/demo.mk
+-include demo/web/web.mk
 -include bench/bench.mk
 -include tests/mcu/mcu.mk
 -include tests/fuzz/fuzz.mk

@@ -1,0 +1,86 @@
+# SPDX-License-Identifier: MIT
+# demo/web/web.mk - the billiards game in the browser, included by the
+# top-level Makefile (docs/WEB.md).
+#   make web        build build/web/index.html (+ index.js, index.wasm): the
+#                   game, compiled with emscripten from Debian's packages
+#   make web-open   build it, serve it on 127.0.0.1:8024 and print the address
+#   make test-web   build it, drive it in headless Chromium (demo/web/test_web.py)
+#                   and check the same bits natively, in the browser and on
+#                   aarch64 under qemu-user (demo/web/same_bits.sh)
+# Offline once the packages are in: emscripten 3.1.6 ships its system
+# libraries prebuilt; SDL2 and Box2D come from Debian's source packages
+# (scripts/deb_source.sh, a private source list under build/web/src/apt) and
+# are compiled once into build/web/sdl2 and build/web/box2d, so a second build
+# compiles only the game.  emscripten's own SDL2 port would download SDL from
+# GitHub: instead the same port's file list (emscripten's tools/ports/sdl2.py,
+# written for SDL 2.0.20) is compiled from Debian's SDL 2.26 with the files
+# added since (WEB_SDL_FILES).
+# The installed node is not Debian's, so emcc is told where Debian's node
+# modules are (NODE_PATH).
+
+WEB_B := build/web
+WEB_SRC := $(WEB_B)/src
+WEB_DEPS := emscripten binaryen dpkg-dev
+WEB_TEST_DEPS := chromium chromium-driver python3-selenium qemu-user g++-aarch64-linux-gnu
+WEB_ENV := NODE_PATH=/usr/share/nodejs
+WEB_SDL_LIB := $(WEB_B)/sdl2/libSDL2.a
+WEB_BOX2D_LIB := $(WEB_B)/box2d/libbox2d.a
+WEB_SDL_INC := $(WEB_SRC)/libsdl2/include
+WEB_BOX2D_INC := $(WEB_SRC)/box2d/include
+
+# emscripten's SDL2 port list (3.1.6), then the files SDL added after 2.0.20
+WEB_SDL_FILES := SDL.c SDL_assert.c SDL_dataqueue.c SDL_error.c SDL_hints.c SDL_log.c atomic/SDL_atomic.c \
+  atomic/SDL_spinlock.c audio/SDL_audio.c audio/SDL_audiocvt.c audio/SDL_audiodev.c \
+  audio/SDL_audiotypecvt.c audio/SDL_mixer.c audio/SDL_wave.c cpuinfo/SDL_cpuinfo.c \
+  dynapi/SDL_dynapi.c events/SDL_clipboardevents.c events/SDL_displayevents.c events/SDL_dropevents.c \
+  events/SDL_events.c events/SDL_gesture.c events/SDL_keyboard.c events/SDL_mouse.c events/SDL_quit.c \
+  events/SDL_touch.c events/SDL_windowevents.c file/SDL_rwops.c haptic/SDL_haptic.c \
+  joystick/SDL_gamecontroller.c joystick/SDL_joystick.c power/SDL_power.c render/SDL_d3dmath.c \
+  render/SDL_render.c render/SDL_yuv_sw.c render/direct3d/SDL_render_d3d.c render/direct3d11/SDL_render_d3d11.c \
+  render/opengl/SDL_render_gl.c render/opengl/SDL_shaders_gl.c render/opengles/SDL_render_gles.c \
+  render/opengles2/SDL_render_gles2.c render/opengles2/SDL_shaders_gles2.c \
+  render/psp/SDL_render_psp.c render/software/SDL_blendfillrect.c render/software/SDL_blendline.c \
+  render/software/SDL_blendpoint.c render/software/SDL_drawline.c render/software/SDL_drawpoint.c \
+  render/software/SDL_render_sw.c render/software/SDL_rotate.c render/software/SDL_triangle.c \
+  sensor/SDL_sensor.c sensor/dummy/SDL_dummysensor.c \
+  stdlib/SDL_crc32.c stdlib/SDL_getenv.c stdlib/SDL_iconv.c stdlib/SDL_malloc.c stdlib/SDL_qsort.c \
+  stdlib/SDL_stdlib.c stdlib/SDL_string.c stdlib/SDL_strtokr.c thread/SDL_thread.c timer/SDL_timer.c \
+  video/SDL_RLEaccel.c video/SDL_blit.c video/SDL_blit_0.c video/SDL_blit_1.c video/SDL_blit_A.c \
+  video/SDL_blit_N.c video/SDL_blit_auto.c video/SDL_blit_copy.c video/SDL_blit_slow.c \
+  video/SDL_bmp.c video/SDL_clipboard.c video/SDL_egl.c video/SDL_fillrect.c video/SDL_pixels.c \
+  video/SDL_rect.c video/SDL_shape.c video/SDL_stretch.c video/SDL_surface.c video/SDL_video.c \
+  video/SDL_yuv.c video/emscripten/SDL_emscriptenevents.c \
+  video/emscripten/SDL_emscriptenframebuffer.c video/emscripten/SDL_emscriptenmouse.c \
+  video/emscripten/SDL_emscriptenopengles.c video/emscripten/SDL_emscriptenvideo.c \
+  audio/emscripten/SDL_emscriptenaudio.c video/dummy/SDL_nullevents.c \
+  video/dummy/SDL_nullframebuffer.c video/dummy/SDL_nullvideo.c video/yuv2rgb/yuv_rgb.c \
+  audio/disk/SDL_diskaudio.c audio/dummy/SDL_dummyaudio.c loadso/dlopen/SDL_sysloadso.c \
+  power/emscripten/SDL_syspower.c joystick/emscripten/SDL_sysjoystick.c \
+  filesystem/emscripten/SDL_sysfilesystem.c timer/unix/SDL_systimer.c haptic/dummy/SDL_syshaptic.c \
+  main/dummy/SDL_dummy_main.c locale/SDL_locale.c locale/emscripten/SDL_syslocale.c misc/SDL_url.c \
+  misc/dummy/SDL_sysurl.c \
+  thread/generic/SDL_syscond.c thread/generic/SDL_sysmutex.c thread/generic/SDL_syssem.c \
+  thread/generic/SDL_systhread.c thread/generic/SDL_systls.c \
+  SDL_guid.c SDL_list.c SDL_utils.c events/SDL_keysym_to_scancode.c events/SDL_scancode_tables.c \
+  joystick/controller_type.c stdlib/SDL_crc16.c
+
+.PHONY: web web-deps web-test-deps web-open test-web web-sources
+
+web-deps:
+	@sh scripts/deps.sh $(WEB_DEPS)
+
+web-test-deps: web-deps
+	@sh scripts/deps.sh $(WEB_TEST_DEPS)
+
+# the unpacked sources (a symlink per package), fetched once
+$(WEB_SRC)/libsdl2/include/SDL.h $(WEB_SRC)/box2d/include/box2d/box2d.h: | web-deps
+	sh scripts/deb_source.sh $(WEB_SRC) libsdl2 box2d
+web-sources: $(WEB_SRC)/libsdl2/include/SDL.h $(WEB_SRC)/box2d/include/box2d/box2d.h
+
+$(WEB_SDL_LIB): $(WEB_SRC)/libsdl2/include/SDL.h | web-deps
+	$(WEB_ENV) sh scripts/emlib.sh $@ $(WEB_SRC)/libsdl2/src "-O2 -w -I$(CURDIR)/$(WEB_SDL_INC)" $(WEB_SDL_FILES)
+
+# Box2D 2.4.1: every source, as Debian's CMake build compiles them
+$(WEB_BOX2D_LIB): $(WEB_SRC)/box2d/include/box2d/box2d.h | web-deps
+	$(WEB_ENV) sh scripts/emlib.sh $@ $(WEB_SRC)/box2d/src "-O2 -std=c++11 -w -I$(CURDIR)/$(WEB_BOX2D_INC) -I$(CURDIR)/$(WEB_SRC)/box2d/src" \
+	  $$(cd $(WEB_SRC)/box2d/src && find . -name '*.cpp' | sed 's|^\./||' | LC_ALL=C sort)
