@@ -16,8 +16,8 @@
 #                                                    -> $(B)/demo/libgame.a
 #   demo/app/    the program: command line, headless runner, the window and
 #                its drawing, aiming aids, panel, sound, PNG -> $(B)/billiards
-#   demo/tests/  test_physics (pool), test_game (game), check.h (their
-#                tally), test_demo.sh (the program, and the layering),
+#   demo/tests/  test_physics (pool), test_game (game), test_det_math
+#                (pool/det_math.h's accuracy), check.h (their tally), test_demo.sh (the program, and the layering),
 #                png_check
 #                opponent_bench (the opponent's time per turn; not a test)
 #   demo/tools/  plots.sh (make demo-plots)
@@ -37,7 +37,7 @@ DEMO_POOL_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_POOL_SRC))
 DEMO_GAME_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_GAME_SRC))
 DEMO_APP_OBJ := $(patsubst demo/%.cpp,$(B)/demo/%.o,$(DEMO_APP_SRC))
 DEMO_TEST_OBJ := $(B)/demo/tests/test_physics.o $(B)/demo/tests/test_game.o $(B)/demo/tests/png_check.o \
-                 $(B)/demo/tests/opponent_bench.o
+                 $(B)/demo/tests/opponent_bench.o $(B)/demo/tests/test_det_math.o
 DEMO_POOL_LIB := $(B)/demo/libpool.a
 DEMO_GAME_LIB := $(B)/demo/libgame.a
 DEMO_BIN := $(B)/billiards
@@ -94,6 +94,11 @@ $(B)/png_check: $(B)/demo/tests/png_check.o
 $(B)/test_physics: $(B)/demo/tests/test_physics.o $(DEMO_POOL_LIB) $(STATIC)
 	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lbox2d -lm
 
+# The simulation's own sin, cos, atan2, hypot ... (pool/det_math.h) against
+# glibc's on 10^6 inputs each: their stated accuracy
+$(B)/test_det_math: $(B)/demo/tests/test_det_math.o $(DEMO_POOL_LIB)
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lm
+
 # 8-ball: the rules on constructed shots, and computer-versus-computer games
 $(B)/test_game: $(B)/demo/tests/test_game.o $(DEMO_GAME_LIB) $(DEMO_POOL_LIB) $(STATIC)
 	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lbox2d -lm
@@ -103,7 +108,8 @@ $(B)/test_game: $(B)/demo/tests/test_game.o $(DEMO_GAME_LIB) $(DEMO_POOL_LIB) $(
 $(B)/opponent_bench: $(B)/demo/tests/opponent_bench.o $(DEMO_GAME_LIB) $(DEMO_POOL_LIB) $(STATIC)
 	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lbox2d -lm
 
-test-demo: $(DEMO_BIN) $(B)/png_check $(B)/test_physics $(B)/test_game | demo-test-deps
+test-demo: $(DEMO_BIN) $(B)/png_check $(B)/test_det_math $(B)/test_physics $(B)/test_game | demo-test-deps
+	$(B)/test_det_math
 	$(B)/test_physics
 	$(B)/test_game
 	sh demo/tests/test_demo.sh $(DEMO_BIN) $(B)/png_check

@@ -13,6 +13,8 @@
 #include <cmath>
 #include <ctime>
 
+#include "pool/det_math.h"
+
 namespace demo {
 
 namespace {
@@ -47,7 +49,7 @@ Point aim_point(const Pocket &p) {
 double distance_to_segment(double px, double py, double ax, double ay, double bx, double by) {
     const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
     const double t = len2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0, 1.0) : 0.0;
-    return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+    return det_hypot(px - (ax + t * dx), py - (ay + t * dy));
 }
 
 // No ball but `skip_a` and `skip_b` (numbers) within 2R of the segment.
@@ -80,23 +82,23 @@ std::vector<Line> potting_lines(const GameState &state, const Table &table, cons
         if (!b.active || !legal_target(state, b.number, balls)) continue;
         for (const Pocket &p : table.pockets) {
             const Point a = aim_point(p);
-            const double to_pocket = std::hypot(a.x - b.x, a.y - b.y);
+            const double to_pocket = det_hypot(a.x - b.x, a.y - b.y);
             if (to_pocket < 1e-9) continue;
             const double ux = (a.x - b.x) / to_pocket, uy = (a.y - b.y) / to_pocket;
             const double gx = b.x - kBallDiameter * ux, gy = b.y - kBallDiameter * uy;
-            const double cue_len = std::hypot(gx - cx, gy - cy);
+            const double cue_len = det_hypot(gx - cx, gy - cy);
             if (need_cue_path && cue_len < 1e-9) continue;
-            const double cut = need_cue_path ? std::acos(std::clamp(((gx - cx) * ux + (gy - cy) * uy) / cue_len, -1.0, 1.0)) * 180 / M_PI : 0;
+            const double cut = need_cue_path ? det_acos(std::clamp(((gx - cx) * ux + (gy - cy) * uy) / cue_len, -1.0, 1.0)) * 180 / M_PI : 0;
             if (cut > kMaxCutDeg) continue;
             if (!clear_path(balls, b.x, b.y, a.x, a.y, b.number, 0)) continue;
             if (need_cue_path && !clear_path(balls, cx, cy, gx, gy, 0, b.number)) continue;
-            lines.push_back(Line{b.number, std::atan2(gy - cy, gx - cx) * 180 / M_PI, cut, cue_len + to_pocket, gx, gy, ux, uy});
+            lines.push_back(Line{b.number, det_atan2(gy - cy, gx - cx) * 180 / M_PI, cut, cue_len + to_pocket, gx, gy, ux, uy});
         }
     }
     return lines;
 }
 
-double ease(const Line &l) { return std::cos(l.cut_deg * M_PI / 180) / (1 + l.distance); }
+double ease(const Line &l) { return det_cos(l.cut_deg * M_PI / 180) / (1 + l.distance); }
 
 struct Candidate {
     Shot shot;
@@ -114,9 +116,9 @@ std::vector<Candidate> candidates_from_cue(const GameState &state, const Table &
             for (const Tip &tip : kTips) out.push_back(Candidate{Shot{l.angle_deg, v, tip.side, tip.topback}, false, {0, 0}});
     for (const Ball &b : balls) {
         if (!b.active || !legal_target(state, b.number, balls)) continue;
-        const double dx = b.x - cue->x, dy = b.y - cue->y, d = std::hypot(dx, dy);
+        const double dx = b.x - cue->x, dy = b.y - cue->y, d = det_hypot(dx, dy);
         if (d < kBallDiameter) continue;
-        const double centre = std::atan2(dy, dx) * 180 / M_PI, half = std::asin(std::min(1.0, kBallRadius / d)) * 180 / M_PI;
+        const double centre = det_atan2(dy, dx) * 180 / M_PI, half = det_asin(std::min(1.0, kBallRadius / d)) * 180 / M_PI;
         for (double offset : {0.0, -half, half})
             for (double v : kSafetySpeeds) out.push_back(Candidate{Shot{centre + offset, v, 0, 0}, false, {0, 0}});
     }
@@ -135,7 +137,7 @@ std::vector<Candidate> candidates_in_hand(const GameState &state, const Table &t
             if (!cue_placement_ok(table, without_cue, c.x, c.y) ||
                 !clear_path(without_cue, c.x, c.y, l.ghost_x, l.ghost_y, 0, l.target))
                 continue;
-            const double angle = std::atan2(l.uy, l.ux) * 180 / M_PI;
+            const double angle = det_atan2(l.uy, l.ux) * 180 / M_PI;
             for (double v : kPotSpeeds)
                 for (const Tip &tip : kTips) out.push_back(Candidate{Shot{angle, v, tip.side, tip.topback}, true, c});
         }
@@ -199,7 +201,7 @@ Plan Opponent::choose(const GameState &state, const std::vector<Ball> &balls) {
         plan.shot = Shot{0, kBreakSpeed};
         const Ball *cue = cue_of(balls);
         for (const Ball &b : balls)
-            if (b.number == 1 && b.active && cue) plan.shot.angle_deg = std::atan2(b.y - cue->y, b.x - cue->x) * 180 / M_PI;
+            if (b.number == 1 && b.active && cue) plan.shot.angle_deg = det_atan2(b.y - cue->y, b.x - cue->x) * 180 / M_PI;
     } else {
         std::vector<Candidate> cands = state.ball_in_hand ? candidates_in_hand(state, table_, balls) : std::vector<Candidate>{};
         const Ball *cue = cue_of(balls);

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pool/det_math.h"
+
 namespace demo {
 
 namespace {
@@ -180,7 +182,7 @@ bool cue_placement_ok(const Table &table, const std::vector<Ball> &balls, double
     if (!(x >= kBallRadius && x <= table.length - kBallRadius && y >= kBallRadius && y <= table.width - kBallRadius))
         return false;
     return std::none_of(balls.begin(), balls.end(), [&](const Ball &b) {
-        return b.active && b.number != 0 && std::hypot(b.x - x, b.y - y) < kBallDiameter;
+        return b.active && b.number != 0 && det_hypot(b.x - x, b.y - y) < kBallDiameter;
     });
 }
 
@@ -188,7 +190,7 @@ Point eight_spot(const Table &table, const std::vector<Ball> &balls) {
     const double y = table.width / 2, foot = 0.75 * table.length;
     const auto free_at = [&](double x) {
         return std::none_of(balls.begin(), balls.end(), [&](const Ball &b) {
-            return b.active && b.number != kEight && std::hypot(b.x - x, b.y - y) < kBallDiameter * 1.001;
+            return b.active && b.number != kEight && det_hypot(b.x - x, b.y - y) < kBallDiameter * 1.001;
         });
     };
     // quarter-radius steps towards the foot rail, then towards the head rail

@@ -10,6 +10,8 @@
 
 #include <box2d/box2d.h>
 
+#include "pool/det_math.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -214,7 +216,7 @@ void Box2dEngine::drop_pocketed(Stats &stats, FrameLog &log) {
         bodies_[i] = nullptr;
         Ball &b = balls_[i];
         log.events.push_back(Event{now_, EventKind::Pocket, d.first, -1, d.second, b.x, b.y, 0, 0, 0, 0, 0,
-                                   kBallMass * std::hypot(b.vx, b.vy)});
+                                   kBallMass * det_hypot(b.vx, b.vy)});
         b.active = false;
         b.vx = b.vy = 0;
         b.motion = Motion::Pocketed;
@@ -229,7 +231,7 @@ void Box2dEngine::roll(double dt) {
     const double slowing = rolling_deceleration_ * dt;
     for (size_t i = 0; i < balls_.size(); ++i) {
         const Ball &b = balls_[i];
-        const double speed = std::hypot(b.vx, b.vy);
+        const double speed = det_hypot(b.vx, b.vy);
         if (!b.active || speed == 0) continue;
         const double slower = speed - slowing;
         const double scale = slower < kStopSpeed ? 0.0 : slower / speed;

@@ -16,6 +16,7 @@ extern "C" {
 #include "collide2d.h"
 }
 
+#include "pool/det_math.h"
 
 namespace demo {
 
@@ -92,7 +93,7 @@ double cushion_overlap(const Ball &b, const Table &table) {
             face(j.facing);
             const double dx = b.x - j.nose_x, dy = b.y - j.nose_y, touch = j.nose_r + kBallRadius;
             if (dx * dx + dy * dy < touch * touch)
-                worst = std::max(worst, (touch - std::hypot(dx, dy)) / kBallDiameter);
+                worst = std::max(worst, (touch - det_hypot(dx, dy)) / kBallDiameter);
         }
     return worst;
 }
@@ -282,7 +283,7 @@ void Checker::check_frame(const std::vector<Ball> &before, const std::vector<Bal
     };
     auto check_pair = [&](size_t i, size_t j, const Box &bi, const Box &bj) {
         ++stats.checked_pairs;
-        const double gap = std::hypot(bj.x - bi.x, bj.y - bi.y);
+        const double gap = det_hypot(bj.x - bi.x, bj.y - bi.y);
         stats.max_overlap = std::max(stats.max_overlap, (kBallDiameter - gap) / kBallDiameter);
         // crossed: came into contact during the frame and is out the other side
         if (gap > kBallDiameter && entered(path(i), path(j), cuts_) &&

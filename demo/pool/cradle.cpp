@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "pool/det_math.h"
+
 namespace demo {
 
 CradleCheck::CradleCheck(const std::vector<Ball> &balls) : velocity_(2 * balls.size(), 0.0) {
@@ -39,7 +41,7 @@ CradleOutcome CradleCheck::outcome() const {
     o.row = static_cast<int>(balls) - 1;
     o.head_on = struck_ && strike_vx_ > 0 && strike_vy_ == 0;
     o.crossed = crossed_;
-    o.speed = std::hypot(strike_vx_, strike_vy_);
+    o.speed = det_hypot(strike_vx_, strike_vy_);
     o.impacts = impacts_;
     o.minimal_impacts = o.row;
     o.actual = velocity_;

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "pool/det_math.h"
+
 namespace demo {
 
 const char *motion_name(Motion m) {
@@ -31,7 +33,7 @@ Track make_track(const Ball &b, double t0, const Cloth &cloth, bool friction) {
     switch (b.motion) {
     case Motion::Sliding: {
         const double ux = b.vx - kBallRadius * b.wy, uy = b.vy + kBallRadius * b.wx;
-        const double u = std::hypot(ux, uy);
+        const double u = det_hypot(ux, uy);
         const double dec = cloth.slide * g;
         k.ax = -dec * ux / u;
         k.ay = -dec * uy / u;
@@ -41,7 +43,7 @@ Track make_track(const Ball &b, double t0, const Cloth &cloth, bool friction) {
         break;
     }
     case Motion::Rolling: {
-        const double v = std::hypot(b.vx, b.vy);
+        const double v = det_hypot(b.vx, b.vy);
         const double dec = cloth.roll * g;
         k.ax = -dec * b.vx / v;
         k.ay = -dec * b.vy / v;
@@ -106,21 +108,21 @@ double energy(const Ball &b) {
 
 double squirt_angle(double side, double end_mass) {
     const double across = 1 - side * side;
-    return std::atan(2.5 * side * std::sqrt(across) / (1 + kBallMass / end_mass + 2.5 * across));
+    return det_atan(2.5 * side * std::sqrt(across) / (1 + kBallMass / end_mass + 2.5 * across));
 }
 
 Ball strike(const Ball &b, double angle_rad, double speed, double side, double topback, double elevation_rad,
             double end_mass) {
     Ball s = b;
-    const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
-    const double ce = std::cos(elevation_rad), se = std::sin(elevation_rad);
+    const double dx = det_cos(angle_rad), dy = det_sin(angle_rad);
+    const double ce = det_cos(elevation_rad), se = det_sin(elevation_rad);
     // the tip's contact point r / R, from the cue's frame (e_right = (dy, -dx, 0))
     const double c = std::sqrt(std::fmax(0.0, 1 - side * side - topback * topback));
     const double rx = side * dy + topback * se * dx - c * ce * dx;
     const double ry = -side * dx + topback * se * dy - c * ce * dy;
     const double rz = topback * ce + c * se;
     // the impulse's direction: the cue's, turned left by the squirt angle
-    const double a = squirt_angle(side, end_mass), sx = dx * std::cos(a) - dy * std::sin(a), sy = dy * std::cos(a) + dx * std::sin(a);
+    const double a = squirt_angle(side, end_mass), sx = dx * det_cos(a) - dy * det_sin(a), sy = dy * det_cos(a) + dx * det_sin(a);
     const double jx = ce * sx, jy = ce * sy, jz = -se;
     const double k = 2.5 * speed / (kBallRadius * ce);  // |J| R / I, |J| = m speed / cos(elev)
     s.vx = speed * sx;

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <utility>
 
+#include "pool/det_math.h"
+
 namespace demo {
 
 namespace {
@@ -115,7 +117,7 @@ std::string placement_error(const Table &table, const std::vector<Placement> &pl
             const Placement &q = placements[j];
             if (q.number == p.number) return name + " is placed twice";
             // touching within rounding (a rack typed in) is fine
-            if (std::hypot(p.x - q.x, p.y - q.y) < kBallDiameter * (1 - 1e-9))
+            if (det_hypot(p.x - q.x, p.y - q.y) < kBallDiameter * (1 - 1e-9))
                 return name + " overlaps ball " + std::to_string(q.number);
         }
     }
@@ -127,7 +129,7 @@ Point free_head_spot(const Table &table, const std::vector<Ball> &balls) {
     for (;;) {
         bool free = true;
         for (const Ball &b : balls)
-            if (b.active && std::hypot(b.x - p.x, b.y - p.y) < kBallDiameter * 1.01) free = false;
+            if (b.active && det_hypot(b.x - p.x, b.y - p.y) < kBallDiameter * 1.01) free = false;
         if (free || p.x < 2 * kBallDiameter) return p;
         p.x -= kBallRadius;
     }

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "pool/det_math.h"
+
 namespace demo {
 
 bool within(double x, double y, const std::vector<Limit> &limits) {
@@ -29,7 +31,7 @@ void nearest_within(double &x, double &y, const std::vector<Limit> &limits) {
         }
     double best = INFINITY, bx = 0, by = 0;
     for (const auto &cand : candidates) {
-        const double far = std::hypot(cand.first - x, cand.second - y);
+        const double far = det_hypot(cand.first - x, cand.second - y);
         if (far < best && within(cand.first, cand.second, limits)) best = far, bx = cand.first, by = cand.second;
     }
     x = bx, y = by;

@@ -13,6 +13,8 @@
 
 #include <cmath>
 
+#include "pool/det_math.h"
+
 namespace demo {
 
 namespace {
@@ -23,7 +25,7 @@ Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y}; }
 Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y}; }
 Vec operator*(double s, Vec a) { return {s * a.x, s * a.y}; }
 double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y; }
-Vec unit(Vec a) { return (1.0 / std::hypot(a.x, a.y)) * a; }
+Vec unit(Vec a) { return (1.0 / det_hypot(a.x, a.y)) * a; }
 
 // A theoretical jaw point with its rail.
 struct JawPoint { Vec p, e, n; };
@@ -41,11 +43,11 @@ Pocket make_pocket(const JawPoint (&jp)[2], Vec axis, const PocketSpec &s, std::
     Pocket pocket{hole.x, hole.y, s.hole_radius, {}, {}};
     for (int k = 0; k < 2; ++k) {
         const JawPoint &j = jp[k];
-        const Vec d = std::cos(phi) * j.e - std::sin(phi) * j.n;
+        const Vec d = det_cos(phi) * j.e - det_sin(phi) * j.n;
         Vec fn{-d.y, d.x};
         if (dot(fn, mid - j.p) < 0) fn = -1.0 * fn;
-        const double along = s.nose_radius / std::tan(phi / 2);
-        const Vec nose = j.p + (s.nose_radius / std::sin(phi / 2)) * unit(j.e + d);
+        const double along = s.nose_radius / det_tan(phi / 2);
+        const Vec nose = j.p + (s.nose_radius / det_sin(phi / 2)) * unit(j.e + d);
         const Vec throat = j.p + (depth / dot(d, axis)) * d;
         pocket.jaws[k] = Jaw{segment(j.p + along * d, throat, fn), nose.x, nose.y, s.nose_radius};
         pocket.mouth[k] = Point{j.p.x, j.p.y};
@@ -120,7 +122,7 @@ Table closed_box(double length, double width, double rail) {
 
 bool in_pocket_mouth(const Pocket &pocket, double x, double y) {
     const Vec p{x, y};
-    if (std::hypot(x - pocket.x, y - pocket.y) <= pocket.capture_radius) return true;
+    if (det_hypot(x - pocket.x, y - pocket.y) <= pocket.capture_radius) return true;
     const Segment &f0 = pocket.jaws[0].facing, &f1 = pocket.jaws[1].facing;
     const Vec quad[4] = {{pocket.mouth[0].x, pocket.mouth[0].y}, {f0.bx, f0.by}, {f1.bx, f1.by},
                          {pocket.mouth[1].x, pocket.mouth[1].y}};

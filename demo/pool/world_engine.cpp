@@ -43,6 +43,7 @@
 #include <string>
 
 #include "pool/broadphase.h"
+#include "pool/det_math.h"
 #include "pool/slow_contact.h"
 #include "pool/sphere_contact.h"
 
@@ -307,7 +308,7 @@ size_t WorldEngine::add(size_t i) {
         if (other < 0) break;
         const Ball &o = balls_[static_cast<size_t>(other)];
         const double dx = b.x - o.x, dy = b.y - o.y;
-        if (!(std::hypot(dx, dy) > kBallDiameter * (1 - 1e-12))) break;  // a real overlap, not rounding
+        if (!(det_hypot(dx, dy) > kBallDiameter * (1 - 1e-12))) break;  // a real overlap, not rounding
         b.x = dx == 0 ? b.x : std::nextafter(b.x, dx > 0 ? INFINITY : -INFINITY);
         b.y = dy == 0 ? b.y : std::nextafter(b.y, dy > 0 ? INFINITY : -INFINITY);
     }
@@ -395,7 +396,7 @@ c2d_status WorldEngine::resolve_pair(const c2d_world_contact &c, c2d_body &a, c2
     if (crowded(ia, c.time) || crowded(ib, c.time)) return C2D_INVALID;
     const Ball sa = with_spin(ia, c.time, a.pos.x - offset_, a.pos.y - offset_, a.vel.x, a.vel.y);
     const Ball sb = with_spin(ib, c.time, b.pos.x - offset_, b.pos.y - offset_, b.vel.x, b.vel.y);
-    const double d = std::hypot(c.normal.x, c.normal.y), nx = c.normal.x / d, ny = c.normal.y / d;
+    const double d = det_hypot(c.normal.x, c.normal.y), nx = c.normal.x / d, ny = c.normal.y / d;
     Resolved r;
     r.seen = true;
     r.a = c.a, r.b = c.b, r.t = c.time, r.nx = nx, r.ny = ny, r.before_a = sa, r.before_b = sb;
@@ -427,7 +428,7 @@ c2d_status WorldEngine::resolve_fixed(const c2d_world_contact &c, c2d_body &a) {
     const int i = ball_of_[c.a];
     const Feature &f = statics_[c.b];
     const Ball sa = with_spin(i, c.time, a.pos.x - offset_, a.pos.y - offset_, a.vel.x, a.vel.y);
-    const double d = std::hypot(c.normal.x, c.normal.y), nx = c.normal.x / d, ny = c.normal.y / d;
+    const double d = det_hypot(c.normal.x, c.normal.y), nx = c.normal.x / d, ny = c.normal.y / d;
     Resolved r;
     r.seen = true;
     r.a = c.a, r.b = c.b, r.t = c.time, r.nx = nx, r.ny = ny, r.before_a = sa;
@@ -459,7 +460,7 @@ void WorldEngine::limits_of(int i, double t, const Ball &b, int partner, const B
     for (int k : ball_of_) {
         if (k == i || !balls_[static_cast<size_t>(k)].active) continue;
         const Ball o = partner_state != nullptr && k == partner ? *partner_state : ball_at(k, t);
-        const double dx = o.x - b.x, dy = o.y - b.y, d = std::hypot(dx, dy);
+        const double dx = o.x - b.x, dy = o.y - b.y, d = det_hypot(dx, dy);
         // a ball moving off lets b follow at its speed; one coming at b
         // is held back when it is absorbed itself, not b pushed away
         if (d > 0 && d <= reach) out.push_back(Limit{dx / d, dy / d, std::max(0.0, (o.vx * dx + o.vy * dy) / d)});
@@ -473,7 +474,7 @@ void WorldEngine::limits_of(int i, double t, const Ball &b, int partner, const B
     }
     for (const Feature &f : statics_) {
         if (!f.nose) continue;
-        const double dx = f.x - b.x, dy = f.y - b.y, d = std::hypot(dx, dy);
+        const double dx = f.x - b.x, dy = f.y - b.y, d = det_hypot(dx, dy);
         if (d <= (kBallRadius + f.r) * (1 + 1e-9)) out.push_back(Limit{dx / d, dy / d, 0});
     }
 }
@@ -490,10 +491,10 @@ Ball WorldEngine::absorbed(int i, double t, const Ball &before, int partner, con
     Ball b = before;
     limits_of(i, t, b, partner, partner_state, limits_);
     nearest_within(b.vx, b.vy, limits_);
-    if (std::hypot(b.vx, b.vy) < model_.absorb_below) {
+    if (det_hypot(b.vx, b.vy) < model_.absorb_below) {
         b.vx = b.vy = 0;
         roll(b);
-    } else if (kBallRadius * std::hypot(b.wx, b.wy) >= std::hypot(b.vx, b.vy)) {
+    } else if (kBallRadius * det_hypot(b.wx, b.wy) >= det_hypot(b.vx, b.vy)) {
         roll(b);
     } else {
         double rx = kBallRadius * b.wy, ry = -kBallRadius * b.wx;
@@ -517,7 +518,7 @@ void WorldEngine::pressed_group(int a, int b, double t, std::vector<int> &group)
             if (!balls_[static_cast<size_t>(index)].active || std::find(group.begin(), group.end(), index) != group.end())
                 continue;
             const Ball o = ball_at(index, t);
-            const double dx = o.x - m.x, dy = o.y - m.y, d = std::hypot(dx, dy);
+            const double dx = o.x - m.x, dy = o.y - m.y, d = det_hypot(dx, dy);
             if (d <= reach && ((o.vx - m.vx) * dx + (o.vy - m.vy) * dy) / d <= model_.absorb_below) group.push_back(index);
         }
     }
@@ -580,7 +581,7 @@ double WorldEngine::closing_by_acceleration(int a, int b, double t) const {
     double ax, ay, bx, by;
     position_at(ta, t, ax, ay);
     position_at(tb, t, bx, by);
-    const double dx = bx - ax, dy = by - ay, d = std::hypot(dx, dy);
+    const double dx = bx - ax, dy = by - ay, d = det_hypot(dx, dy);
     return ((ta.ax - tb.ax) * dx + (ta.ay - tb.ay) * dy) / d;
 }
 
@@ -777,7 +778,7 @@ void WorldEngine::impact(const c2d_world_event &e) {
     else if (!mine && (crowded(ia, e.time) || crowded(ib, e.time))) join(ia, ib, e.time);
     ++stats_->ball_ball_collisions;
     if (record_paths_) log_->contacts.push_back(pair_key(ia, ib));
-    double impulse = std::hypot(e.impulse.x, e.impulse.y);
+    double impulse = det_hypot(e.impulse.x, e.impulse.y);
     if (mine) {
         const Ball after = after_event(ia, e.time);
         impulse = kBallMass * std::fabs((after.vx - resolved_.before_a.vx) * resolved_.nx +
@@ -794,7 +795,7 @@ void WorldEngine::fixed(const c2d_world_event &e) {
     const int i = ball_of_[e.a];
     Ball a = state_of(e.a, e.time);
     const bool mine = resolving(e);
-    double impulse = std::hypot(e.impulse.x, e.impulse.y);
+    double impulse = det_hypot(e.impulse.x, e.impulse.y);
     if (mine && kept(a, resolved_.after_a)) a = with_position(resolved_.after_a, a);
     else a.motion = motion_of(a);  // the world's own resolution: no spin changed
     if (mine)
@@ -847,7 +848,7 @@ void WorldEngine::pocket(const c2d_world_event &e) {
     track_[k] = make_track(b, e.time, model_.cloth, model_.friction);
     if (b.number == 0) ++stats_->scratches;
     else ++stats_->pocketed;
-    record(e.time, EventKind::Pocket, i, -1, statics_[e.b].feature, kBallMass * std::hypot(a.vx, a.vy));
+    record(e.time, EventKind::Pocket, i, -1, statics_[e.b].feature, kBallMass * det_hypot(a.vx, a.vy));
 }
 
 // --- running -------------------------------------------------------------
