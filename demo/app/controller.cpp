@@ -31,7 +31,7 @@ constexpr double kFullPull = 0.35;  // m of mouse drag (on the table's scale) fo
 // The player's side of the main loop.  Each frame: events (aim, stroke,
 // spin, keys), the simulation's step, sounds for its contacts, the balls'
 // orientations, the picture, then a wait for the frame's deadline.
-class Game : public Driver {
+class Game : public Driver, public PlayingGame {
 public:
     Game(const SimConfig &config, const Players &players, Window &window, Audio &audio)
         : config_(config), match_(config, players), window_(window), audio_(audio), frequency_(static_cast<double>(SDL_GetPerformanceFrequency())),
@@ -40,6 +40,10 @@ public:
     bool next_frame(Simulation &sim) override;
     bool before_step(Simulation &sim, bool was_at_rest) override;
     void after_step(const Simulation &sim) override;
+    void attach(Simulation &sim) { sim_ = &sim; }
+    const Simulation &simulation() const override { return *sim_; }
+    bool shoot(const Shot &shot) override;
+    long frames_drawn() const override { return drawn_; }
 
 private:
     // The table is at rest for the next shot (the practice table not cleared,
@@ -58,6 +62,7 @@ private:
     void handle_key(Simulation &sim, const SDL_Keysym &key);
     void aim_at_mouse(const Simulation &sim);
     void shoot(Simulation &sim);
+    void play(Simulation &sim, const Shot &shot);
     void sound_and_drops(const Simulation &sim);
     Overlay overlay(const Simulation &sim) const;
     void screenshot(const Canvas &frame);
@@ -84,7 +89,11 @@ private:
     int rest_frames_ = 0;      // frames the table has been at rest
     int aim_frames_ = -1;      // the computer's shot: frames since it was planned (-1: not yet)
     Plan plan_;
+    Simulation *sim_ = nullptr;  // the one play_window runs
+    long drawn_ = 0;
 };
+
+PlayingGame *g_playing = nullptr;
 
 // The computer waits a moment once the table is at rest, then shows its aim
 // and the cue drawn back for a second before it plays.
@@ -193,11 +202,28 @@ void Game::shoot(Simulation &sim) {
     const double speed = aim_.power * kMaxPlaySpeed;
     aim_.power = 0;
     if (speed < 0.02 || !can_shoot(sim)) return;
+    play(sim, Shot{aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback, aim_.elevation});
+}
+
+void Game::play(Simulation &sim, const Shot &shot) {
     match_.shot_started(sim.balls());
-    sim.shoot(Shot{aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback, aim_.elevation});
+    sim.shoot(shot);
     ++shots_;
-    last_speed_ = speed;
+    last_speed_ = shot.speed;
     help_ = false;
+}
+
+bool Game::shoot(const Shot &shot) {
+    const bool finite = std::isfinite(shot.angle_deg) && std::isfinite(shot.speed) && std::isfinite(shot.side) &&
+                        std::isfinite(shot.topback) && std::isfinite(shot.elevation);
+    if (!finite || !(shot.speed > 0 && shot.speed <= kMaxShotSpeed) || shot.side * shot.side + shot.topback * shot.topback > 0.25 ||
+        !(shot.elevation >= 0 && shot.elevation <= kMaxElevation) || !sim_ || !can_shoot(*sim_))
+        return false;
+    sim_->set_balls(sim_->balls());  // the engine afresh: its clock at 0
+    aim_.power = 0;
+    dragging_ = false;
+    play(*sim_, shot);
+    return true;
 }
 
 bool Game::handle_event(Simulation &sim, const SDL_Event &e) {
@@ -370,7 +396,10 @@ void Game::after_step(const Simulation &sim) {
     skipped_ = 0;
     if (frame_.width() != layout_.width || frame_.height() != layout_.height) frame_ = Canvas(layout_.width, layout_.height);
     draw_frame(frame_, backdrop_.get(sim, shape_, layout_), layout_, sim, shape_, poses_, overlay(sim));
-    if (window_.show(frame_)) SDL_RenderPresent(window_.renderer);
+    if (window_.show(frame_)) {
+        SDL_RenderPresent(window_.renderer);
+        ++drawn_;
+    }
 }
 
 }  // namespace
@@ -384,9 +413,14 @@ WindowResult play_window(const SimConfig &config, const Players &players, std::s
     if (pool(sim) && !audio.available()) std::fprintf(stderr, "billiards: no sound (%s)\n", audio.problem().c_str());
     Game game(config, players, w, audio);
     game.start(sim);
+    game.attach(sim);
     if (!pool(sim)) sim.shoot(Shot{0, kMaxPlaySpeed});
-    run(sim, game);
+    g_playing = &game;
+    run(sim, game);  // in the browser: never returns, the game lives on with the page
+    g_playing = nullptr;
     return WindowResult::Ok;
 }
+
+PlayingGame *playing_game() { return g_playing; }
 
 }  // namespace demo

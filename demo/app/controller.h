@@ -20,6 +20,26 @@ namespace demo {
 // in error) when there is no display or no window/renderer can be made.
 WindowResult play_window(const SimConfig &config, const Players &players, std::string &error);
 
+// The game play_window is running, for a page or a tool around the window
+// (the web page's window.collide2d, demo/web/hook.cpp): what is on the table,
+// and shots played as the player would play them.
+class PlayingGame {
+public:
+    virtual ~PlayingGame() = default;
+    virtual const Simulation &simulation() const = 0;
+    // A shot as --shot takes it (validated the same way), played from the
+    // position on the table as if freshly set up (the engine's clock starts
+    // at 0, as a headless run's does: the result depends on the position
+    // alone).  False, and nothing played, unless the table is at rest and a
+    // human may shoot (not the computer's turn, no ball in hand).
+    virtual bool shoot(const Shot &shot) = 0;
+    // Frames drawn in the window so far (a frame rate, over a measured time).
+    virtual long frames_drawn() const = 0;
+};
+
+// The game being played, or null (before play_window runs one, and after).
+PlayingGame *playing_game();
+
 }  // namespace demo
 
 #endif

@@ -6,6 +6,10 @@
 #include <cmath>
 #include <thread>
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+#endif
+
 #include "pool/box2d_engine.h"
 #include "pool/world_engine.h"
 
@@ -151,16 +155,63 @@ ShotOutcome simulate_to_rest(const SimConfig &config, const std::vector<Ball> &b
     return play(config, balls, nullptr, nullptr);
 }
 
+namespace {
+
+// One frame of the loop: false once the driver ends the run.
+bool run_frame(Simulation &sim, Driver &driver) {
+    if (!driver.next_frame(sim)) return false;
+    const bool at_rest = sim.at_rest();
+    if (at_rest) sim.respot_cue();
+    if (!driver.before_step(sim, at_rest)) return false;
+    sim.step();
+    driver.after_step(sim);
+    return true;
+}
+
+#ifdef __EMSCRIPTEN__
+// The browser's loop: called at each animation frame, it runs the frames
+// due by the clock since the start (no drift, at most 4 at once; a quarter
+// second behind, it counts afresh, as the native loop does).  A driver that
+// ends the run stops the loop; the page stays as it was.
+struct BrowserLoop {
+    Simulation *sim;
+    Driver *driver;
+    double origin_ms;
+    long paced;
+};
+
+void browser_frame(void *arg) {
+    BrowserLoop &loop = *static_cast<BrowserLoop *>(arg);
+    const double pace = loop.driver->frame_seconds();
+    const double now = emscripten_get_now();
+    long due = pace > 0 ? static_cast<long>((now - loop.origin_ms) / (1000 * pace)) : loop.paced + 1;
+    if (due - loop.paced > 15) {  // a quarter second behind (a hidden tab): start counting again
+        loop.origin_ms = now - 1000 * pace;
+        loop.paced = 0;
+        due = 1;
+    }
+    for (int n = 0; loop.paced < due && n < 4; ++n, ++loop.paced)
+        if (!run_frame(*loop.sim, *loop.driver)) {
+            emscripten_cancel_main_loop();
+            return;
+        }
+}
+#endif
+
+}  // namespace
+
 void run(Simulation &sim, Driver &driver) {
+#ifdef __EMSCRIPTEN__
+    // The browser cannot block: the loop becomes its animation frames, and
+    // this call does not return (the caller's objects live on with the page).
+    static BrowserLoop loop;
+    loop = BrowserLoop{&sim, &driver, emscripten_get_now(), 0};
+    emscripten_set_main_loop_arg(browser_frame, &loop, 0, 1);
+#else
     using Clock = std::chrono::steady_clock;
     Clock::time_point origin = Clock::now();
     long paced = 0;
-    while (driver.next_frame(sim)) {
-        const bool at_rest = sim.at_rest();
-        if (at_rest) sim.respot_cue();
-        if (!driver.before_step(sim, at_rest)) return;
-        sim.step();
-        driver.after_step(sim);
+    while (run_frame(sim, driver)) {
         const double pace = driver.frame_seconds();
         if (pace <= 0) continue;
         const Clock::time_point due = origin + std::chrono::duration_cast<Clock::duration>(
@@ -173,6 +224,7 @@ void run(Simulation &sim, Driver &driver) {
             paced = 0;
         }
     }
+#endif
 }
 
 }  // namespace demo

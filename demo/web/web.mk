@@ -84,3 +84,40 @@ $(WEB_SDL_LIB): $(WEB_SRC)/libsdl2/include/SDL.h | web-deps
 $(WEB_BOX2D_LIB): $(WEB_SRC)/box2d/include/box2d/box2d.h | web-deps
 	$(WEB_ENV) sh scripts/emlib.sh $@ $(WEB_SRC)/box2d/src "-O2 -std=c++11 -w -I$(CURDIR)/$(WEB_BOX2D_INC) -I$(CURDIR)/$(WEB_SRC)/box2d/src" \
 	  $$(cd $(WEB_SRC)/box2d/src && find . -name '*.cpp' | sed 's|^\./||' | LC_ALL=C sort)
+
+# The game: the library, demo/pool, demo/game, demo/app (but its libpng
+# writer: demo/web/png_stored.cpp instead) and the page's hook
+WEB_LIB_OBJ := $(patsubst lib/%.c,$(WEB_B)/obj/%.o,$(LIB_SRC))
+WEB_DEMO_SRC := $(DEMO_POOL_SRC) $(DEMO_GAME_SRC) $(filter-out demo/app/png.cpp,$(DEMO_APP_SRC)) \
+                demo/web/hook.cpp demo/web/png_stored.cpp
+WEB_DEMO_OBJ := $(patsubst demo/%.cpp,$(WEB_B)/demo/%.o,$(WEB_DEMO_SRC))
+WEB_CFLAGS := -O2 -std=c99 -Wall -Wextra -ffp-contract=off -fno-math-errno -Iinclude
+WEB_CXXFLAGS := -O2 -std=c++17 -Wall -Wextra -ffp-contract=off -Iinclude -Idemo -I$(WEB_SDL_INC) -I$(WEB_BOX2D_INC)
+# the port's link settings (the audio's resume on a click, SDL's callbacks),
+# memory that grows with the table, and what the page's hook calls (the
+# page is not minified: Debian's emcc calls htmlmin wrongly)
+WEB_LDFLAGS := -O2 -sALLOW_MEMORY_GROWTH=1 -sMINIFY_HTML=0 \
+  "-sDEFAULT_LIBRARY_FUNCS_TO_INCLUDE=['\$$autoResumeAudioContext','\$$dynCall']" \
+  "-sEXPORTED_RUNTIME_METHODS=['ENV','cwrap','UTF8ToString']" \
+  "-sEXPORTED_FUNCTIONS=['_main','_c2d_web_state','_c2d_web_shoot','_c2d_web_at_rest','_c2d_web_frames']" \
+  --shell-file demo/web/shell.html
+
+$(WEB_B)/obj/%.o: lib/%.c | web-deps
+	@mkdir -p $(@D)
+	$(WEB_ENV) nice emcc $(WEB_CFLAGS) -MMD -MP -c $< -o $@
+
+$(WEB_B)/demo/%.o: demo/%.cpp | web-deps web-sources
+	@mkdir -p $(@D)
+	$(WEB_ENV) nice em++ $(WEB_CXXFLAGS) -MMD -MP -c $< -o $@
+
+$(WEB_B)/index.html: $(WEB_DEMO_OBJ) $(WEB_LIB_OBJ) $(WEB_SDL_LIB) $(WEB_BOX2D_LIB) demo/web/shell.html
+	$(WEB_ENV) nice em++ -o $@ $(WEB_DEMO_OBJ) $(WEB_LIB_OBJ) $(WEB_BOX2D_LIB) $(WEB_SDL_LIB) $(WEB_LDFLAGS) || { rm -f $@; exit 1; }
+
+web: $(WEB_B)/index.html
+	@echo "web: $(WEB_B)/index.html (+ index.js, index.wasm); make web-open serves it"
+
+web-open: web
+	@echo "open http://127.0.0.1:8024/index.html (?practice: practice on the --seed 1 rack); Ctrl-C stops"
+	cd $(WEB_B) && python3 -m http.server 8024 --bind 127.0.0.1
+
+-include $(patsubst %.o,%.d,$(WEB_DEMO_OBJ) $(WEB_LIB_OBJ))
