@@ -15,7 +15,8 @@ c2d_tally_name=test_demo
 check() { if [ "$2" = 0 ]; then c2d_passed; echo "ok - $1"; else c2d_failed "$1"; fi; }
 
 # --- the layers (demo/demo.mk): pool/ (the simulation) <- game/ (8-ball) <-
-# app/ (the program); tests/ test pool/ and game/ (and share tests/check.h).
+# app/ (the program) <- web/ (the browser build's hook, its PNG writer and the
+# same-bits driver); tests/ test pool/ and game/ (and share tests/check.h).
 # Every include of ours names its layer ("pool/sim.h"; the library's
 # collide2d.h and collide2d_world.h aside)
 # and a layer includes only itself and the layers below it; pool/, game/
@@ -40,7 +41,7 @@ layer_check() {
             sub(/[">].*$/, "", name)
             top = name
             if (!sub(/\/.*$/, "", top)) top = ""
-            if (top ~ /^(pool|game|app|tests|tools)$/) { if (index(allowed, " " top " ") == 0) bad("includes from " top "/") }
+            if (top ~ /^(pool|game|app|tests|tools|web)$/) { if (index(allowed, " " top " ") == 0) bad("includes from " top "/") }
             else if (quote == "\"" && name !~ /^collide2d(_world)?\.h$/) bad("an include of ours without its layer")
             if (sdl == "no" && name ~ /SDL/) bad("SDL")
         }
@@ -52,6 +53,7 @@ layer_check pool "pool" no; check "pool/: no SDL, includes only pool/" $?
 layer_check game "game pool" no; check "game/: no SDL, includes only game/ and pool/" $?
 layer_check app "app game pool" yes; check "app/: includes only app/, game/ and pool/" $?
 layer_check tests "tests game pool" no; check "tests/: no SDL, includes only tests/, game/ and pool/" $?
+layer_check web "web app game pool" yes; check "web/: includes only web/, app/, game/ and pool/" $?
 [ -z "$(ls "$DEMO"/*.h "$DEMO"/*.cpp 2>/dev/null)" ]; check "every source of the demo is in a layer" $?
 
 # json_get FILE KEY: the value of a scalar key of the one-line JSON object

@@ -121,3 +121,45 @@ web-open: web
 	cd $(WEB_B) && python3 -m http.server 8024 --bind 127.0.0.1
 
 -include $(patsubst %.o,%.d,$(WEB_DEMO_OBJ) $(WEB_LIB_OBJ))
+
+# --- the same bits natively, in the browser and on aarch64 (qemu-user): the
+# simulation alone (demo/web/same_bits.cpp over demo/pool and the library),
+# built for this machine and cross-compiled for aarch64 (static, run under
+# qemu-aarch64), Box2D for aarch64 compiled once from the same sources
+WEB_A64 := $(WEB_B)/aarch64
+WEB_A64_CC := aarch64-linux-gnu-gcc
+WEB_A64_CXX := aarch64-linux-gnu-g++
+WEB_A64_BOX2D := $(WEB_A64)/box2d/libbox2d.a
+WEB_A64_OBJ := $(patsubst lib/%.c,$(WEB_A64)/obj/%.o,$(LIB_SRC)) \
+               $(patsubst demo/%.cpp,$(WEB_A64)/demo/%.o,$(DEMO_POOL_SRC) demo/web/same_bits.cpp)
+
+$(WEB_A64_BOX2D): $(WEB_SRC)/box2d/include/box2d/box2d.h | web-test-deps
+	EMLIB_CXX=$(WEB_A64_CXX) EMLIB_AR=aarch64-linux-gnu-ar sh scripts/emlib.sh $@ $(WEB_SRC)/box2d/src \
+	  "-O2 -std=c++11 -w -I$(CURDIR)/$(WEB_BOX2D_INC) -I$(CURDIR)/$(WEB_SRC)/box2d/src" \
+	  $$(cd $(WEB_SRC)/box2d/src && find . -name '*.cpp' | sed 's|^\./||' | LC_ALL=C sort)
+
+$(WEB_A64)/obj/%.o: lib/%.c | web-test-deps
+	@mkdir -p $(@D)
+	nice $(WEB_A64_CC) $(CFLAGS) $(REQ_CFLAGS) -MMD -MP -c $< -o $@
+
+$(WEB_A64)/demo/%.o: demo/%.cpp | web-test-deps web-sources
+	@mkdir -p $(@D)
+	nice $(WEB_A64_CXX) -O2 -std=c++17 -Wall -Wextra -ffp-contract=off -Iinclude -Idemo -I$(WEB_BOX2D_INC) -MMD -MP -c $< -o $@
+
+$(WEB_A64)/same_bits: $(WEB_A64_OBJ) $(WEB_A64_BOX2D)
+	$(WEB_A64_CXX) -static -o $@ $^ -lm
+
+$(B)/same_bits: $(B)/demo/web/same_bits.o $(DEMO_POOL_LIB) $(STATIC)
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $^ -lbox2d -lm
+
+$(B)/demo/web/same_bits.o: demo/web/same_bits.cpp | demo-deps
+	@mkdir -p $(@D)
+	$(CXX) $(DEMO_CXXFLAGS) -c $< -o $@
+
+# Everything the browser test and the bit-identity check run: the page, the
+# native game and driver, the aarch64 driver
+test-web: $(WEB_B)/index.html $(DEMO_BIN) $(B)/same_bits $(WEB_A64)/same_bits | web-test-deps
+	sh demo/web/same_bits.sh $(DEMO_BIN) $(B)/same_bits $(WEB_A64)/same_bits
+	/usr/bin/python3 demo/web/test_web.py $(WEB_B) $(DEMO_BIN) $(B)/same_bits
+
+-include $(patsubst %.o,%.d,$(WEB_A64_OBJ))
