@@ -189,7 +189,10 @@ public:
 // back on the head spot.  Frames of kFrameDt simulated seconds are paced by
 // the steady clock at driver.frame_seconds() each, counted from the start
 // (no drift); a loop that falls more than a quarter second behind starts
-// counting again rather than rush.
+// counting again rather than rush.  Built with emscripten, the loop is the
+// browser's animation frames (the frames due by the clock, at most 4 a
+// callback) and run does not return: the caller's objects live on with the
+// page (demo/web, docs/WEB.md).
 void run(Simulation &sim, Driver &driver);
 
 }  // namespace demo

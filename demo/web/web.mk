@@ -72,16 +72,18 @@ web-deps:
 web-test-deps: web-deps
 	@sh scripts/deps.sh $(WEB_TEST_DEPS)
 
-# the unpacked sources (a symlink per package), fetched once
-$(WEB_SRC)/libsdl2/include/SDL.h $(WEB_SRC)/box2d/include/box2d/box2d.h: | web-deps
+# the unpacked sources (a symlink per package), fetched once (one stamp, so
+# that make -j runs the fetch once)
+$(WEB_SRC)/fetched: | web-deps
 	sh scripts/deb_source.sh $(WEB_SRC) libsdl2 box2d
-web-sources: $(WEB_SRC)/libsdl2/include/SDL.h $(WEB_SRC)/box2d/include/box2d/box2d.h
+	@touch $@
+web-sources: $(WEB_SRC)/fetched
 
-$(WEB_SDL_LIB): $(WEB_SRC)/libsdl2/include/SDL.h | web-deps
+$(WEB_SDL_LIB): $(WEB_SRC)/fetched | web-deps
 	$(WEB_ENV) sh scripts/emlib.sh $@ $(WEB_SRC)/libsdl2/src "-O2 -w -I$(CURDIR)/$(WEB_SDL_INC)" $(WEB_SDL_FILES)
 
 # Box2D 2.4.1: every source, as Debian's CMake build compiles them
-$(WEB_BOX2D_LIB): $(WEB_SRC)/box2d/include/box2d/box2d.h | web-deps
+$(WEB_BOX2D_LIB): $(WEB_SRC)/fetched | web-deps
 	$(WEB_ENV) sh scripts/emlib.sh $@ $(WEB_SRC)/box2d/src "-O2 -std=c++11 -w -I$(CURDIR)/$(WEB_BOX2D_INC) -I$(CURDIR)/$(WEB_SRC)/box2d/src" \
 	  $$(cd $(WEB_SRC)/box2d/src && find . -name '*.cpp' | sed 's|^\./||' | LC_ALL=C sort)
 
@@ -133,7 +135,7 @@ WEB_A64_BOX2D := $(WEB_A64)/box2d/libbox2d.a
 WEB_A64_OBJ := $(patsubst lib/%.c,$(WEB_A64)/obj/%.o,$(LIB_SRC)) \
                $(patsubst demo/%.cpp,$(WEB_A64)/demo/%.o,$(DEMO_POOL_SRC) demo/web/same_bits.cpp)
 
-$(WEB_A64_BOX2D): $(WEB_SRC)/box2d/include/box2d/box2d.h | web-test-deps
+$(WEB_A64_BOX2D): $(WEB_SRC)/fetched | web-test-deps
 	EMLIB_CXX=$(WEB_A64_CXX) EMLIB_AR=aarch64-linux-gnu-ar sh scripts/emlib.sh $@ $(WEB_SRC)/box2d/src \
 	  "-O2 -std=c++11 -w -I$(CURDIR)/$(WEB_BOX2D_INC) -I$(CURDIR)/$(WEB_SRC)/box2d/src" \
 	  $$(cd $(WEB_SRC)/box2d/src && find . -name '*.cpp' | sed 's|^\./||' | LC_ALL=C sort)
