@@ -18,8 +18,13 @@ dir=$(cd "$dir" && pwd)
 suite=${VERSION_CODENAME:-bookworm}
 list="$dir/apt/sources.list"
 printf 'deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian %s main\n' "$suite" >"$list"
+# as root, apt would hand the downloads to its _apt user, who may not write
+# here: keep them as root (no warning about an unsandboxed download)
+sandbox=""
+[ "$(id -u)" -eq 0 ] && sandbox="-o APT::Sandbox::User=root"
 apt_private() {
-    apt-get -qq -o Dir::Etc::SourceList="$list" -o Dir::Etc::SourceParts=/nonexistent \
+    # shellcheck disable=SC2086
+    apt-get -qq $sandbox -o Dir::Etc::SourceList="$list" -o Dir::Etc::SourceParts=/nonexistent \
         -o Dir::State::Lists="$dir/apt/lists" -o Dir::Cache="$dir/apt/cache" \
         -o Debug::NoLocking=1 "$@"
 }

@@ -205,7 +205,12 @@ void Game::shoot(Simulation &sim) {
     play(sim, Shot{aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback, aim_.elevation});
 }
 
+// Every shot starts the engine afresh from the position on the table (its
+// clock at 0, as a headless run and the opponent's trial runs start), so a
+// shot's outcome depends on the position and the shot alone, not on how long
+// the table stood still before it.
 void Game::play(Simulation &sim, const Shot &shot) {
+    sim.set_balls(sim.balls());
     match_.shot_started(sim.balls());
     sim.shoot(shot);
     ++shots_;
@@ -219,7 +224,6 @@ bool Game::shoot(const Shot &shot) {
     if (!finite || !(shot.speed > 0 && shot.speed <= kMaxShotSpeed) || shot.side * shot.side + shot.topback * shot.topback > 0.25 ||
         !(shot.elevation >= 0 && shot.elevation <= kMaxElevation) || !sim_ || !can_shoot(*sim_))
         return false;
-    sim_->set_balls(sim_->balls());  // the engine afresh: its clock at 0
     aim_.power = 0;
     dragging_ = false;
     play(*sim_, shot);
@@ -271,6 +275,9 @@ bool Game::handle_event(Simulation &sim, const SDL_Event &e) {
         }
         break;
     case SDL_MOUSEBUTTONUP:
+        // a touch has no hover: the aim follows the finger only when it
+        // lifts (a tap aims where it lands; a drag has shot by then)
+        if (e.button.which == SDL_TOUCH_MOUSEID) follow_mouse_ = true;
         if (e.button.button == SDL_BUTTON_LEFT) {
             dialing_ = false;
             if (dragging_) {

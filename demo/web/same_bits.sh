@@ -8,6 +8,10 @@
 # bits).  The browser's side is demo/web/test_web.py's.
 # Usage: same_bits.sh BILLIARDS SAME_BITS AARCH64_SAME_BITS
 set -u
+if [ $# != 3 ]; then
+    echo "usage: same_bits.sh BILLIARDS SAME_BITS AARCH64_SAME_BITS" >&2
+    exit 2
+fi
 BIN=$1 NATIVE=$2 A64=$3
 QEMU=${QEMU:-qemu-aarch64}
 TMP=$(mktemp -d)

@@ -7,9 +7,10 @@ selenium and checks: the page loads with the rack on the table; the break
 through window.collide2d ends with the native headless run's positions bit
 for bit (billiards --headless --json, and the simulation alone, same_bits),
 and a shot with spin from another rack too; a shot by mouse drag moves the
-cue ball; a tap to aim then a drag on a phone-sized window (touch events)
-shoots; a screenshot of the canvas is not blank.  Prints the frame rate
-(frames drawn per second of wall time; a measurement, not asserted).
+cue ball; a tap to aim then a drag on a phone's screen (390x844 CSS pixels
+at 3 device pixels each, touch events) shoots; the canvas fills the window;
+a screenshot of the canvas is not blank.  Prints the frame rate (frames
+drawn per second of wall time; a measurement, not asserted).
 
 Usage: test_web.py WEBDIR BILLIARDS SAME_BITS [--screenshot FILE.png]
 Debian's /usr/bin/python3 has selenium (python3-selenium); Chromium runs as
@@ -53,11 +54,15 @@ def serve(root):
     return server
 
 
-def browser(width, height):
+def browser(width, height, phone=False):
+    """Headless Chromium, a desktop window or (phone) a phone's screen emulated:
+    its viewport in CSS pixels, 3 device pixels to each, touch events."""
     options = webdriver.ChromeOptions()
     for arg in ("--headless", "--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader",
                 "--autoplay-policy=no-user-gesture-required", "--window-size=%d,%d" % (width, height)):
         options.add_argument(arg)
+    if phone:
+        options.add_experimental_option("mobileEmulation", {"deviceMetrics": {"width": width, "height": height, "pixelRatio": 3.0, "touch": True}})
     return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
 
 
@@ -85,6 +90,16 @@ def native(billiards, same_bits, seed, shot):
         [billiards, "--headless", "--json", "--seed", str(seed), "--shot", ",".join(map(str, shot))]))
     alone = json.loads(subprocess.check_output([same_bits, str(seed)] + [str(v) for v in shot]))
     return balls(game), balls(alone)
+
+
+FILLS = ("var c = document.getElementById('canvas'), r = c.getBoundingClientRect();"
+         "return [r.width, r.height, window.innerWidth, window.innerHeight, c.width, c.height, window.devicePixelRatio];")
+
+
+def fills(driver):
+    """The canvas covers the window, its pixels at the device's ratio."""
+    w, h, iw, ih, pw, ph, ratio = driver.execute_script(FILLS)
+    return abs(w - iw) <= 1 and abs(h - ih) <= 1 and abs(pw - w * ratio) <= 2 and abs(ph - h * ratio) <= 2, (iw, ih, pw, ph)
 
 
 def cue(driver):
@@ -146,6 +161,8 @@ def main():
         state = driver.execute_script("return window.collide2d && window.collide2d.state()") or {"balls": []}
         check(bool(loaded) and len(state["balls"]) == 16 and all(b["on_table"] for b in state["balls"]),
               "page loads: window.collide2d, 16 balls on the table at rest")
+        ok, sizes = fills(driver)
+        check(ok, "the canvas fills the window (window %dx%d, canvas %dx%d pixels)" % sizes)
         for seed, shot in ((1, (0, 12, 0, 0)), (2, (-3, 9, 0.2, -0.3))):
             if seed != 1:
                 open_page(driver, base, "?practice&seed=%d" % seed)
@@ -174,7 +191,7 @@ def main():
         for _ in range(8):
             chain.move_by_offset(-25, 0).pause(0.05)
         chain.release().perform()
-        moving = wait(driver, "return !window.collide2d.atRest()", 5)
+        moving = wait(driver, "return !window.collide2d.atRest()", 30)
         frames0, t0 = driver.execute_script("return window.collide2d.framesDrawn()"), time.time()
         time.sleep(2)
         frames1, t1 = driver.execute_script("return window.collide2d.framesDrawn()"), time.time()
@@ -202,9 +219,11 @@ def main():
         driver.quit()
 
     # a phone-sized window, touch only: a tap aims, a drag pulls back, the release shoots
-    driver = browser(390, 844)
+    driver = browser(390, 844, phone=True)
     try:
         open_page(driver, base, "?practice")
+        ok, sizes = fills(driver)
+        check(ok, "phone-sized window: the canvas fills it (window %dx%d, canvas %dx%d pixels)" % sizes)
         rect = driver.execute_script("var r = document.getElementById('canvas').getBoundingClientRect(); return [r.width, r.height];")
         before = cue(driver)
 
@@ -213,18 +232,24 @@ def main():
             driver.execute_cdp_cmd("Input.dispatchTouchEvent", {"type": kind, "touchPoints": points})
 
         cx, cy = rect[0] * 0.8, rect[1] * 0.45  # towards the rack, right of the middle
+        # the tap, then two frames drawn (the aim follows the touch at a frame's
+        # start), then the drag; a phone's 1170x2532 pixels draw slowly here
         touch("touchStart", cx, cy)
         touch("touchEnd", cx, cy)
-        time.sleep(0.5)
+        drawn = driver.execute_script("return window.collide2d.framesDrawn()")
+        wait(driver, "return window.collide2d.framesDrawn() >= %d" % (drawn + 2), 30)
         touch("touchStart", cx, cy)
         for k in range(1, 9):
             touch("touchMove", cx - 12 * k, cy)
             time.sleep(0.03)
         touch("touchEnd", cx - 96, cy)
-        moving = wait(driver, "return !window.collide2d.atRest()", 5)
+        moving = wait(driver, "return !window.collide2d.atRest()", 30, 0.02)
+        after = cue(driver)  # at once: a scratch would put it back on its spot at rest
         wait(driver, "return window.collide2d.atRest()", 120, 0.2)
-        after = cue(driver)
-        check(bool(moving) and after != before, "phone-sized window (390x844): tap to aim, drag to shoot moves the cue ball")
+        # the first aim follows the mouse's (0, 0), up and to the left: a shot
+        # towards +x (the rack) went where the tap aimed
+        check(bool(moving) and after is not None and after[0] > before[0],
+              "phone-sized window: a tap aims, a drag shoots: the cue ball goes towards the tap (%s -> %s)" % (before, after))
     finally:
         driver.quit()
     server.shutdown()
