@@ -431,9 +431,13 @@ void print_game_summary(const demo::GameRecord &g, double wall) {
         std::printf("  %3zu  player %d%s  %7.2f deg %5.2f m/s tip %+.2f,%+.2f  potted [%s]%s%s\n", i + 1, r.player + 1,
                     r.placed ? " (ball in hand)" : "", r.shot.angle_deg, r.shot.speed, r.shot.side, r.shot.topback,
                     potted.c_str(), r.foul != demo::Foul::None ? "  foul: " : "",
-                    r.foul != demo::Foul::None ? demo::foul_name(r.foul) : "");
+                    r.foul != demo::Foul::None ? demo::foul_text(r.foul) : "");
     }
-    if (g.winner >= 0) std::printf("  player %d (%s) wins: %s\n", g.winner + 1, demo::group_name(g.groups[g.winner]), g.reason.c_str());
+    if (g.winner >= 0) {
+        const int shooter = g.shots.empty() ? g.winner : g.shots.back().player;
+        std::printf("  player %d (%s) wins: %s\n", g.winner + 1, demo::group_name(g.groups[g.winner]),
+                    demo::win_reason(g.winner, shooter, "player " + std::to_string(shooter + 1), g.reason).c_str());
+    }
     else std::printf("  %s\n", g.reason.c_str());
     std::printf("  %zu shots, %d fouls; the computer simulated %ld candidate shots in %.3f s (%.0f shots/s, %.1f ms a turn); "
                 "%.1f s of play simulated in %.3f s\n",
