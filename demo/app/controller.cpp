@@ -35,7 +35,8 @@ class Game : public Driver {
 public:
     Game(const SimConfig &config, const Players &players, Window &window, Audio &audio)
         : config_(config), match_(config, players), window_(window), audio_(audio), frequency_(static_cast<double>(SDL_GetPerformanceFrequency())),
-          deadline_(static_cast<double>(SDL_GetPerformanceCounter()) / frequency_) {}
+          deadline_(static_cast<double>(SDL_GetPerformanceCounter()) / frequency_),
+          help_(!(players.eight_ball && players.computer[0] && players.computer[1])) {}
     void start(const Simulation &sim);
     bool next_frame(Simulation &sim) override;
     bool before_step(Simulation &sim, bool was_at_rest) override;
@@ -75,7 +76,8 @@ private:
     BallPoses poses_;
     std::vector<Drop> drops_;
     AimState aim_;
-    bool dragging_ = false, dialing_ = false, help_ = true;
+    bool dragging_ = false, dialing_ = false;
+    bool help_;  // the keys' box: shown at the start unless no one at the window plays
     bool follow_mouse_ = true, was_ready_ = false;
     double press_x_ = 0, press_y_ = 0, mouse_x_ = 0, mouse_y_ = 0;  // canvas pixels
     int shots_ = 0, screenshots_ = 0, skipped_ = 0;
@@ -84,6 +86,7 @@ private:
     int rest_frames_ = 0;      // frames the table has been at rest
     int aim_frames_ = -1;      // the computer's shot: frames since it was planned (-1: not yet)
     Plan plan_;
+    double player_side_ = 0, player_topback_ = 0, player_elevation_ = 0;  // the player's, kept over the computer's turn
 };
 
 // The computer waits a moment once the table is at rest, then shows its aim
@@ -145,6 +148,8 @@ void Game::computer_turn(Simulation &sim) {
     if (aim_frames_ < 0) {
         plan_ = match_.plan(sim.balls());
         if (plan_.place_cue) put_cue(sim, plan_.cue);
+        // the player's own tip and elevation come back after the computer's shot
+        player_side_ = aim_.side, player_topback_ = aim_.topback, player_elevation_ = aim_.elevation;
         aim_.angle = plan_.shot.angle_deg * M_PI / 180;
         aim_.side = plan_.shot.side;
         aim_.topback = plan_.shot.topback;
@@ -157,6 +162,7 @@ void Game::computer_turn(Simulation &sim) {
     sim.shoot(plan_.shot);
     last_speed_ = plan_.shot.speed;
     aim_.power = 0;
+    aim_.side = player_side_, aim_.topback = player_topback_, aim_.elevation = player_elevation_;
     aim_frames_ = -1;
     ++shots_;
 }

@@ -431,9 +431,13 @@ void print_game_summary(const demo::GameRecord &g, double wall) {
         std::printf("  %3zu  player %d%s  %7.2f deg %5.2f m/s tip %+.2f,%+.2f  potted [%s]%s%s\n", i + 1, r.player + 1,
                     r.placed ? " (ball in hand)" : "", r.shot.angle_deg, r.shot.speed, r.shot.side, r.shot.topback,
                     potted.c_str(), r.foul != demo::Foul::None ? "  foul: " : "",
-                    r.foul != demo::Foul::None ? demo::foul_name(r.foul) : "");
+                    r.foul != demo::Foul::None ? demo::foul_text(r.foul) : "");
     }
-    if (g.winner >= 0) std::printf("  player %d (%s) wins: %s\n", g.winner + 1, demo::group_name(g.groups[g.winner]), g.reason.c_str());
+    if (g.winner >= 0) {
+        const int shooter = g.shots.empty() ? g.winner : g.shots.back().player;
+        std::printf("  player %d (%s) wins: %s\n", g.winner + 1, demo::group_name(g.groups[g.winner]),
+                    demo::win_reason(g.winner, shooter, "player " + std::to_string(shooter + 1), g.reason).c_str());
+    }
     else std::printf("  %s\n", g.reason.c_str());
     std::printf("  %zu shots, %d fouls; the computer simulated %ld candidate shots in %.3f s (%.0f shots/s, %.1f ms a turn); "
                 "%.1f s of play simulated in %.3f s\n",
@@ -462,7 +466,26 @@ int demo::run_game_headless(const Options &o) {
     if (o.json) print_game_json(g, o, table, wall);
     else print_game_summary(g, wall);
     std::string error;
-    if (!o.screenshot.empty() && !demo::screenshot_offscreen(table, o.screenshot, error)) {
+    // the game's panel: the players and their groups, the result, the tray
+    std::vector<std::string> lines;
+    std::string who = "8-ball";
+    for (int p = 0; p < 2; ++p) {
+        who += std::string(p ? "   " : "   ") + "Player " + std::to_string(p + 1) + " (computer)";
+        if (g.groups[p] != demo::Group::Open) who += std::string(": ") + demo::group_name(g.groups[p]);
+    }
+    lines.push_back(who);
+    if (g.winner >= 0) {
+        const int shooter = g.shots.empty() ? g.winner : g.shots.back().player;
+        lines.push_back("Player " + std::to_string(g.winner + 1) + " wins: " +
+                        demo::win_reason(g.winner, shooter, "player " + std::to_string(shooter + 1), g.reason));
+    } else {
+        lines.push_back(g.reason);
+    }
+    lines.push_back(std::to_string(g.shots.size()) + " shots, " + std::to_string(g.fouls) + " fouls");
+    std::vector<int> pocketed;
+    for (const demo::Ball &b : g.balls)
+        if (!b.active && b.number != 0) pocketed.push_back(b.number);
+    if (!o.screenshot.empty() && !demo::screenshot_offscreen(table, o.screenshot, error, lines, pocketed)) {
         std::fprintf(stderr, "billiards: screenshot: %s\n", error.c_str());
         return 1;
     }

@@ -66,6 +66,8 @@ void Match::reset() {
     opponents_[1] = Opponent(config_, config_.seed + static_cast<uint64_t>(2 * plans_ + 1));
     running_ = false;
     last_.clear();
+    last_reason_.clear();
+    last_shooter_ = -1;
 }
 
 void Match::shot_started(const std::vector<Ball> &balls) {
@@ -85,6 +87,8 @@ bool Match::shot_ended(const Table &table, std::vector<Ball> &balls) {
     const int shooter = state_.turn;
     const Verdict v = apply_shot(state_, shot_facts(events_, before_), before_);
     last_ = name(shooter) + ": " + v.reason;
+    last_reason_ = v.reason;
+    last_shooter_ = shooter;
     if (!v.respot_eight) return false;
     respot_eight(table, balls);
     last_ += "; the 8 is spotted again";
@@ -127,7 +131,13 @@ std::string Match::result() const {
     const int w = state_.winner;
     const std::string winner = players_.computer[0] != players_.computer[1] ? (computer(w) ? "The computer wins" : "You win")
                                                                            : name(w) + " wins";
-    return winner + ": " + last_.substr(last_.find(": ") + 2) + ". Press R for a new game.";
+    const std::string loser = players_.computer[0] != players_.computer[1] ? (computer(1 - w) ? "the computer" : "you")
+                                                                          : name(1 - w);
+    return winner + ": " + win_reason(w, last_shooter_, loser, last_reason_) + ". Press R for a new game.";
+}
+
+std::string win_reason(int winner, int shooter, const std::string &shooter_name, const std::string &reason) {
+    return winner == shooter ? reason : shooter_name + " " + reason;
 }
 
 }  // namespace demo

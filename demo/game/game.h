@@ -93,10 +93,18 @@ private:
     std::vector<Event> events_;
     bool running_ = false;
     std::string last_;
+    std::string last_reason_;  // the last verdict's reason
+    int last_shooter_ = -1;    // who played the last shot
     int plans_ = 0;
     long candidates_ = 0;
     double think_seconds_ = 0;
 };
+
+// Why the game was won, said of the winner: the verdict's reason as it is
+// when the winner took the last shot ("potted the 8 after clearing the
+// group"), else what the loser did, named ("Player 2 (computer) potted the 8
+// before clearing the group").
+std::string win_reason(int winner, int shooter, const std::string &shooter_name, const std::string &reason);
 
 // Puts the 8 back on its spot (after it fell on the break).
 void respot_eight(const Table &table, std::vector<Ball> &balls);

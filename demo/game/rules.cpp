@@ -70,7 +70,7 @@ Verdict apply_break(GameState &state, const ShotFacts &f) {
         v.reason = "potted on the break: the table is open";
         return v;
     }
-    v.reason = v.foul == Foul::None ? "nothing potted on the break" : std::string("foul on the break: ") + foul_name(v.foul);
+    v.reason = v.foul == Foul::None ? "nothing potted on the break" : std::string("foul on the break: ") + foul_text(v.foul);
     pass_turn(state, v);
     return v;
 }
@@ -93,6 +93,17 @@ const char *foul_name(Foul f) {
     case Foul::NoRail: return "no_rail";
     case Foul::IllegalBreak: return "illegal_break";
     default: return "none";
+    }
+}
+
+const char *foul_text(Foul f) {
+    switch (f) {
+    case Foul::Scratch: return "the cue ball fell in";
+    case Foul::NoBallHit: return "the cue ball hit no ball";
+    case Foul::WrongBallFirst: return "the wrong ball hit first";
+    case Foul::NoRail: return "no ball went to a rail";
+    case Foul::IllegalBreak: return "fewer than four balls went to a rail";
+    default: return "no foul";
     }
 }
 
@@ -146,12 +157,12 @@ Verdict apply_shot(GameState &state, const ShotFacts &f, const std::vector<Ball>
     v.foul = foul_of(state, f, before);
     if (potted(f, kEight)) {
         if (on_the_eight && v.foul == Foul::None) end_game(state, v, shooter, "potted the 8 after clearing the group");
-        else if (v.foul != Foul::None) end_game(state, v, 1 - shooter, std::string("potted the 8 with a foul (") + foul_name(v.foul) + ")");
+        else if (v.foul != Foul::None) end_game(state, v, 1 - shooter, std::string("potted the 8 with a foul (") + foul_text(v.foul) + ")");
         else end_game(state, v, 1 - shooter, "potted the 8 before clearing the group");
         return v;
     }
     if (v.foul != Foul::None) {
-        v.reason = std::string("foul: ") + foul_name(v.foul);
+        v.reason = std::string("foul: ") + foul_text(v.foul);
         pass_turn(state, v);
         return v;
     }

@@ -45,6 +45,11 @@ Group group_of(int number);
 
 enum class Foul { None, Scratch, NoBallHit, WrongBallFirst, NoRail, IllegalBreak };
 const char *foul_name(Foul f);  // "none", "scratch", "no_ball_hit", "wrong_ball_first", "no_rail", "illegal_break"
+// The foul in words, for players (the verdicts' reasons, the window):
+// "no foul", "the cue ball fell in", "the cue ball hit no ball", "the wrong
+// ball hit first", "no ball went to a rail", "fewer than four balls went to a
+// rail".  foul_name's names stay those of the headless JSON.
+const char *foul_text(Foul f);
 
 // What a shot did, as the rules see it.
 struct ShotFacts {

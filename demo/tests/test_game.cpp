@@ -85,6 +85,18 @@ void fouls() {
                 eight_first = eight_first && v.foul == Foul::WrongBallFirst && s.open() && s.turn == 1 - turn;
             }
     check(cases == 2 * 2 * 14, "fouls: every case ran (2 players x 2 groups x the 14 balls but the 8)");
+    bool words = true;
+    for (Foul f : {Foul::Scratch, Foul::NoBallHit, Foul::WrongBallFirst, Foul::NoRail, Foul::IllegalBreak}) {
+        GameState s = after_break(Group::Solids);
+        const Verdict v = f == Foul::Scratch ? apply_shot(s, facts(3, {0}, true), table_with(all_but({})))
+                        : f == Foul::NoBallHit ? apply_shot(s, facts(-1, {}, false), table_with(all_but({})))
+                        : f == Foul::WrongBallFirst ? apply_shot(s, facts(12, {}, true), table_with(all_but({})))
+                        : f == Foul::NoRail ? apply_shot(s, facts(3, {}, false), table_with(all_but({})))
+                                            : Verdict{};
+        words = words && std::string(foul_text(f)).find('_') == std::string::npos &&
+                (f == Foul::IllegalBreak || (v.foul == f && v.reason == std::string("foul: ") + foul_text(f)));
+    }
+    check(words, "a foul's verdict says it in words (foul_text), not its JSON name");
     check(scratch, "a scratch is a foul after any first contact: turn passes, ball in hand");
     check(no_hit, "hitting no ball is a foul: turn passes, ball in hand");
     check(wrong, "each of the opponent's balls first is a foul, for either group and player");
@@ -151,7 +163,7 @@ void break_shot() {
 
 // --- the 8 after the break: win only with the group cleared and no foul
 void eight_ball() {
-    bool all = true;
+    bool all = true, words = true, said = true;
     for (int turn = 0; turn < 2; ++turn)
         for (Group g : {Group::Solids, Group::Stripes})
             for (bool cleared : {false, true})
@@ -169,8 +181,15 @@ void eight_ball() {
                     const Verdict v = apply_shot(s, facts(first, potted, true), before);
                     const int expected = cleared && foul == 0 ? turn : 1 - turn;
                     all = all && v.winner == expected && s.winner == expected && s.over();
+                    // the verdict in words; the winner's line says who did it
+                    words = words && v.reason.find('_') == std::string::npos;
+                    const std::string line = win_reason(expected, turn, "Player " + std::to_string(turn + 1), v.reason);
+                    said = said && (expected == turn ? line == v.reason
+                                                     : line == "Player " + std::to_string(turn + 1) + " " + v.reason);
                 }
     check(all, "the 8 wins with the group cleared and no foul; loses early, on a scratch or a wrong first ball");
+    check(words, "the verdicts on the 8 name no internal foul names (no '_')");
+    check(said, "the winner's line names the loser when the loser's shot ended the game");
     GameState s = after_break(Group::Solids);
     std::vector<Ball> before = table_with(all_but({1, 2, 3, 4, 5, 6, 7}));
     const Verdict v = apply_shot(s, facts(8, {}, true), before);
