@@ -145,6 +145,10 @@ void Game::judge_shot(Simulation &sim) {
 
 void Game::computer_turn(Simulation &sim) {
     if (rest_frames_ < kThinkFrames) return;
+    if (aim_frames_ < 0 && match_.computer_passes_back(sim.balls())) {
+        match_.pass_back();
+        return;
+    }
     if (aim_frames_ < 0) {
         plan_ = match_.plan(sim.balls());
         if (plan_.place_cue) put_cue(sim, plan_.cue);
@@ -282,6 +286,13 @@ void Game::handle_key(Simulation &sim, const SDL_Keysym &key) {
     case SDLK_LEFT: aim_.side -= step; break;
     case SDLK_RIGHT: aim_.side += step; break;
     case SDLK_c: aim_.side = aim_.topback = 0; break;
+    // 9-ball: declare a push-out, or hand the shot back after one
+    case SDLK_o:
+        if (!match_.computer_to_play() && table_ready(sim)) match_.push_out();
+        break;
+    case SDLK_b:
+        if (!match_.computer_to_play() && table_ready(sim)) match_.pass_back();
+        break;
     // the cue's elevation in 5-degree steps: swerve, and masse when steep
     case SDLK_PAGEUP: aim_.elevation = std::min(kMaxElevation, aim_.elevation + 5); break;
     case SDLK_PAGEDOWN: aim_.elevation = std::max(0.0, aim_.elevation - 5); break;

@@ -393,12 +393,13 @@ int write_outputs(const Simulation &sim, const Options &o) {
     return 0;
 }
 
-// --- 8-ball without a window: two computer players (game.h) ---------------
+// --- 8-ball and 9-ball without a window: two computer players (game.h) -----
 
 void print_game_json(const demo::GameRecord &g, const Options &o, const Simulation &table, double wall) {
-    std::printf("{\"scene\":\"break\",\"response\":\"%s\",\"game\":\"8ball\",\"players\":[\"computer\",\"computer\"],"
+    std::printf("{\"scene\":\"break\",\"response\":\"%s\",\"game\":\"%s\",\"players\":[\"computer\",\"computer\"],"
                 "\"seed\":%llu,\"shots\":[",
-                response_name(o.config.response), static_cast<unsigned long long>(o.config.seed));
+                response_name(o.config.response), o.game == demo::GameMode::NineBall ? "9ball" : "8ball",
+                static_cast<unsigned long long>(o.config.seed));
     for (size_t i = 0; i < g.shots.size(); ++i) {
         const demo::ShotRecord &r = g.shots[i];
         std::printf("%s{\"player\":%d,\"angle\":%.17g,\"speed\":%.17g,\"side\":%.17g,\"topback\":%.17g,", i ? "," : "",
@@ -423,7 +424,7 @@ void print_game_json(const demo::GameRecord &g, const Options &o, const Simulati
 }
 
 void print_game_summary(const demo::GameRecord &g, double wall) {
-    std::printf("billiards: 8-ball, computer against computer\n");
+    std::printf("billiards: %s, computer against computer\n", g.nine_ball ? "9-ball" : "8-ball");
     for (size_t i = 0; i < g.shots.size(); ++i) {
         const demo::ShotRecord &r = g.shots[i];
         std::string potted;
@@ -435,7 +436,7 @@ void print_game_summary(const demo::GameRecord &g, double wall) {
     }
     if (g.winner >= 0) {
         const int shooter = g.shots.empty() ? g.winner : g.shots.back().player;
-        std::printf("  player %d (%s) wins: %s\n", g.winner + 1, demo::group_name(g.groups[g.winner]),
+        std::printf("  player %d (%s) wins: %s\n", g.winner + 1, g.nine_ball ? "9-ball" : demo::group_name(g.groups[g.winner]),
                     demo::win_reason(g.winner, shooter, "player " + std::to_string(shooter + 1), g.reason).c_str());
     }
     else std::printf("  %s\n", g.reason.c_str());
@@ -450,14 +451,15 @@ void print_game_summary(const demo::GameRecord &g, double wall) {
 
 void demo::check_headless(const Options &o) {
     if (o.game == demo::GameMode::Practice) throw UsageError{"--game practice is played in the window"};
-    if (o.game == demo::GameMode::EightBall && o.players_given && !(o.computer[0] && o.computer[1]))
-        throw UsageError{"--players: a human player needs the window; headless, --game 8ball is --players computer,computer"};
+    if (demo::rules_game(o.game) && o.players_given && !(o.computer[0] && o.computer[1]))
+        throw UsageError{"--players: a human player needs the window; headless, a game is --players computer,computer"};
     preflight(o);
 }
 
 int demo::run_game_headless(const Options &o) {
     const auto start = std::chrono::steady_clock::now();
-    const demo::GameRecord g = demo::play_computer_game(o.config, o.config.seed);
+    const demo::GameKind kind = o.game == demo::GameMode::NineBall ? demo::GameKind::NineBall : demo::GameKind::EightBall;
+    const demo::GameRecord g = demo::play_computer_game(o.config, o.config.seed, kind);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     demo::SimConfig final_table = o.config;
     for (const demo::Ball &b : g.balls)
@@ -468,7 +470,7 @@ int demo::run_game_headless(const Options &o) {
     std::string error;
     // the game's panel: the players and their groups, the result, the tray
     std::vector<std::string> lines;
-    std::string who = "8-ball";
+    std::string who = demo::game_name(kind);
     for (int p = 0; p < 2; ++p) {
         who += std::string(p ? "   " : "   ") + "Player " + std::to_string(p + 1) + " (computer)";
         if (g.groups[p] != demo::Group::Open) who += std::string(": ") + demo::group_name(g.groups[p]);

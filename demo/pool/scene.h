@@ -60,6 +60,10 @@ constexpr double kRackGap = 1e-3 * kBallRadius;  // m
 // kMaxCradleBalls).
 Setup set_up(Scene scene, const TableSpec &spec, int count, uint64_t seed,
              const std::vector<Placement> &placements = {});
+// The 9-ball break: the cue ball on the head spot, balls 1-9 in a diamond
+// behind the foot spot (the 1 at the apex, the 9 in the middle, 2-8
+// shuffled by the seed), with the break rack's gaps (kRackGap).
+Setup set_up_nine_ball(const TableSpec &spec, uint64_t seed);
 
 // The table of the break (pockets) or elastic and cradle (a closed box) scene.
 Table scene_table(Scene scene, const TableSpec &spec);
