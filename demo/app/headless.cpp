@@ -472,7 +472,7 @@ int demo::run_game_headless(const Options &o) {
     std::vector<std::string> lines;
     std::string who = demo::game_name(kind);
     for (int p = 0; p < 2; ++p) {
-        who += std::string(p ? "   " : "   ") + "Player " + std::to_string(p + 1) + " (computer)";
+        who += "   Player " + std::to_string(p + 1) + " (computer)";
         if (g.groups[p] != demo::Group::Open) who += std::string(": ") + demo::group_name(g.groups[p]);
     }
     lines.push_back(who);

@@ -390,7 +390,7 @@ void nine_ball_break_and_push_out() {
     s = GameState{};
     s.game = GameKind::NineBall;
     v = apply_shot(s, facts(1, {9}, true), t);
-    check(s.winner == 0, "9-ball: the 9 on a legal break wins");
+    check(s.winner == 0 && v.winner == 0, "9-ball: the 9 on a legal break wins");
     s = GameState{};
     s.game = GameKind::NineBall;
     f = facts(1, {}, true);
