@@ -557,11 +557,11 @@ void random_shots(int count, uint64_t seed) {
         const int n = 1 + static_cast<int>(rng.next() % 16);
         const demo::Table table = demo::scene_table(c.scene, c.table);
         if (s % 4 == 3) {  // a break: the rack, the cue ball anywhere behind the head string
-            const demo::Setup rack = demo::set_up(c.scene, c.table, 0, rng.next());
+            const demo::Setup racked = demo::set_up(c.scene, c.table, 0, rng.next());
             c.placements.push_back({0, kBallRadius + rng.uniform() * (0.25 * table.length - kBallRadius),
                                     kBallRadius + rng.uniform() * (table.width - kBallDiameter)});
-            for (size_t i = 1; i < rack.balls.size(); ++i)
-                c.placements.push_back({rack.balls[i].number, rack.balls[i].x, rack.balls[i].y});
+            for (size_t i = 1; i < racked.balls.size(); ++i)
+                c.placements.push_back({racked.balls[i].number, racked.balls[i].x, racked.balls[i].y});
         }
         while (static_cast<int>(c.placements.size()) < n) {
             const double x = kBallRadius + rng.uniform() * (table.length - kBallDiameter);
@@ -635,10 +635,10 @@ void random_shots(int count, uint64_t seed) {
 // Ball k of the rack (1..15, in the order set_up makes them: rows from the
 // apex, each from -y to +y) at its place in the triangle of pitch p.
 void rack_place(const demo::Table &t, int k, double pitch, double &x, double &y) {
-    int row = 0, first = 1;
-    while (k >= first + row + 1) first += ++row;
+    int row = 0, row_start = 1;
+    while (k >= row_start + row + 1) row_start += ++row;
     x = 0.75 * t.length + row * 0.5 * pitch * std::sqrt(3.0);
-    y = 0.5 * t.width + ((k - first) - 0.5 * row) * pitch;
+    y = 0.5 * t.width + ((k - row_start) - 0.5 * row) * pitch;
 }
 
 bool solid(int n) { return n >= 1 && n <= 7; }
