@@ -418,6 +418,74 @@ void nine_ball_break_and_push_out() {
     check(!declare_push_out(eight), "8-ball has no push-out");
 }
 
+// --- the window's game is the headless one: the same seed played frame by
+// frame through a Simulation as the window plays it (the main loop's rule:
+// at rest, a pocketed cue ball back on the head spot; the shot from the
+// table at rest; frames of kFrameDt until at rest) gives the same shots and
+// the same table as play_computer_game, bit for bit
+GameRecord play_framed_game(const SimConfig &config, uint64_t seed, GameKind kind) {
+    GameRecord game;
+    SimConfig c = config;
+    if (kind == GameKind::NineBall)
+        for (const Ball &b : set_up_nine_ball(config.table, config.seed).balls) c.placements.push_back(Placement{b.number, b.x, b.y});
+    Simulation sim(c);
+    GameState state;
+    state.game = kind;
+    Opponent players[2] = {Opponent(config, seed), Opponent(config, seed + 1)};
+    while (!state.over() && static_cast<int>(game.shots.size()) < kMaxGameShots) {
+        sim.respot_cue();
+        std::vector<Ball> balls = sim.balls();
+        const Plan plan = players[state.turn].choose(state, balls);
+        if (plan.place_cue)
+            for (Ball &b : balls)
+                if (b.number == 0) b = Ball{plan.cue.x, plan.cue.y, 0, 0, 0, true};
+        if (plan.place_cue) sim.set_balls(balls);
+        const std::vector<Ball> before = sim.balls();
+        std::vector<Event> events;
+        sim.shoot(plan.shot);
+        do {
+            sim.step();
+            events.insert(events.end(), sim.frame_events().begin(), sim.frame_events().end());
+        } while (!sim.at_rest());
+        const Verdict v = apply_shot(state, shot_facts(events, before), before);
+        ShotRecord r;
+        r.player = 1 - state.turn;
+        r.shot = plan.shot;
+        r.potted = shot_facts(events, before).potted;
+        game.shots.push_back(r);
+        if (v.respot_eight || v.respot_nine) {
+            balls = sim.balls();
+            respot(sim.table(), balls, v.respot_nine ? 9 : 8);
+            sim.set_balls(balls);
+        }
+    }
+    game.balls = sim.balls();
+    game.winner = state.winner;
+    return game;
+}
+
+void window_plays_the_headless_game() {
+    SimConfig config;
+    int compared = 0;
+    for (GameKind kind : {GameKind::EightBall, GameKind::NineBall})
+        for (int seed = 1; seed <= 2; ++seed) {
+            config.seed = static_cast<uint64_t>(seed);
+            const GameRecord h = play_computer_game(config, config.seed, kind);
+            const GameRecord w = play_framed_game(config, config.seed, kind);
+            bool same = h.shots.size() == w.shots.size() && h.winner == w.winner && h.balls.size() == w.balls.size();
+            for (size_t i = 0; same && i < h.shots.size(); ++i)
+                same = h.shots[i].shot.angle_deg == w.shots[i].shot.angle_deg && h.shots[i].shot.speed == w.shots[i].shot.speed &&
+                       h.shots[i].potted == w.shots[i].potted;
+            for (size_t i = 0; same && i < h.balls.size(); ++i)
+                same = h.balls[i].active == w.balls[i].active && (!h.balls[i].active || (h.balls[i].x == w.balls[i].x && h.balls[i].y == w.balls[i].y));
+            std::printf("    %s seed %d: headless %zu shots, framed %zu shots\n", game_name(kind), seed, h.shots.size(), w.shots.size());
+            ++compared;
+            check(same, std::string(game_name(kind)) + " seed " + std::to_string(seed) +
+                            ": played frame by frame as in the window, the same shots and table as headless");
+        }
+    check(compared == 4, "four games compared frame by frame against headless");
+}
+
 // --- 9-ball, computer against computer: the diamond rack, and games that
 // end by the 9 or by three fouls, the turn passing as the rules say
 void nine_ball_games(int count) {
@@ -473,5 +541,6 @@ int main(int argc, char **argv) {
     nine_ball_break_and_push_out();
     games(count);
     nine_ball_games(count);
+    window_plays_the_headless_game();
     return demo_tests::check_summary("test_game");
 }
