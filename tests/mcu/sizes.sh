@@ -199,6 +199,7 @@ echo "| all public functions linked (--gc-sections) | $all_code | 0 | 0 |"
 echo "| the same with the libgcc helpers it pulls in | $all_total | 0 | 0 |"
 part_rows '^c2d_world_' 'the event-driven world: its functions linked (with the calls it makes)'
 part_rows '^c2d_collide_(balls|cushion)f?$' 'the sphere contacts: `c2d_collide_balls`, `c2d_collide_cushion` (and `f`) linked'
+part_rows '^c2d_time_of_impact_accelf?$' 'the accelerated time of impact: `c2d_time_of_impact_accel` (and `f`) linked'
 echo
 echo "| function | code | + helpers | stack | compiler helpers and outside symbols called |"
 echo "|---|---:|---:|---:|---|"
