@@ -48,6 +48,9 @@
  *                  AVX-512 versions and the FMA double-double tier; same bits
  *                  either way).  Implied under ThreadSanitizer, which cannot
  *                  run the loader's choice (an ifunc resolver) before main.
+ *   C2D_SMALL      [1 under -Os/-Oz, else 0]  code size before speed: one copy
+ *                  of each collision tier (no separate accept test before the
+ *                  fast path, no batch kernel); the same bits either way.
  *   C2D_ALLOW_FAST_MATH [undefined]  build the library even under -ffast-math
  *                  or -ffinite-math-only, which otherwise stop its build with
  *                  an #error.  At your own risk: those flags let the compiler
