@@ -296,12 +296,13 @@ C2D_COLD c2d_real c2d_normal_speed_dd(const c2d_real_vec *dh, const c2d_real_vec
  * underflows; elsewhere only components below 2^EMIN of the largest lose
  * bits, far inside the ~u^2 of the terms the double-double allows. */
 static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len, c2d_real nx,
-                                 c2d_real ny, const c2d_real_vec *va, const c2d_real_vec *vb)
+                                 c2d_real ny, const c2d_real_vec *va, const c2d_real_vec *vb, int ordinary)
 {
     c2d_real dvx = vb->x - va->x, dvy = vb->y - va->y, gn = dvx * nx + dvy * ny;
     c2d_real_vec h, l, a, b;
     int kn, kv;
     if (2 * c2d_abs(gn) >= c2d_abs(dvx) + c2d_abs(dvy)) return gn;
+    if (ordinary != 0) return c2d_dot2(dh, dl, va, vb) / len;
     kn = c2d_sphere_scale_of(dh->x, dh->y, 0, 0);
     kv = c2d_sphere_scale_of(va->x, va->y, vb->x, vb->y);
     c2d_sphere_scale_vec(&h, dh, -kn);
@@ -387,18 +388,40 @@ static int c2d_sphere_fine(c2d_real p, c2d_real x, c2d_real y)
  * inertias fail it (the checks then decide). */
 #define C2D_SPHERE_WINDOW (C2D_R_EMAX / 16)
 
+/* The test by the bits, branch-free: u = bits << 1 (the sign shifted out)
+ * orders the magnitudes as integers, +0 at u = 0 and infinity above every
+ * finite one; u - 1 takes zero to the largest integer, so the least u - 1
+ * is the smallest nonzero magnitude's and zeros pass, as above.  One
+ * compare-and-select per bound and input, no loop: the same verdict as
+ * comparing the magnitudes (NaN never reaches it: validated inputs). */
+typedef struct c2d_sphere_span { c2d_real_bits lo, hi; } c2d_sphere_span;
+
+static void c2d_span_start(c2d_sphere_span *s)
+{
+    s->lo = (c2d_real_bits)~(c2d_real_bits)0;
+    s->hi = 0;
+}
+
+static void c2d_span_add(c2d_sphere_span *s, c2d_real x)
+{
+    const c2d_real_bits u = (c2d_real_bits)(c2d_bits(x) << 1), v = (c2d_real_bits)(u - 1u);
+    s->lo = v < s->lo ? v : s->lo;
+    s->hi = u > s->hi ? u : s->hi;
+}
+
+static int c2d_span_ordinary(const c2d_sphere_span *s)
+{
+    return s->lo >= (c2d_real_bits)((c2d_real_bits)(c2d_bits(c2d_pow2(-C2D_SPHERE_WINDOW)) << 1) - 1u) &&
+           s->hi <= (c2d_real_bits)(c2d_bits(c2d_pow2(C2D_SPHERE_WINDOW)) << 1);
+}
+
 static int c2d_sphere_ordinary(const c2d_real *x, int n)
 {
-    c2d_real lo = 1, hi = 1;
+    c2d_sphere_span s;
     int i;
-    for (i = 0; i < n; i++) {
-        c2d_real t = c2d_abs(x[i]);
-        if (t != 0) {
-            lo = t < lo ? t : lo;
-            hi = t > hi ? t : hi;
-        }
-    }
-    return lo >= c2d_pow2(-C2D_SPHERE_WINDOW) && hi <= c2d_pow2(C2D_SPHERE_WINDOW);
+    c2d_span_start(&s);
+    for (i = 0; i < n; i++) c2d_span_add(&s, x[i]);
+    return c2d_span_ordinary(&s);
 }
 
 /* mu in the window (or 0, or INFINITY, which is never multiplied). */
@@ -407,12 +430,32 @@ static int c2d_sphere_mu_ordinary(c2d_real mu)
     return mu == 0 || mu > C2D_R_MAX || (mu >= c2d_pow2(-C2D_SPHERE_WINDOW) && mu <= c2d_pow2(C2D_SPHERE_WINDOW));
 }
 
-static int c2d_balls_ordinary(const c2d_real_ball *a, const c2d_real_ball *b, const c2d_real_vec *dh)
+static void c2d_ball_span(c2d_sphere_span *s, const c2d_real_ball *d)
 {
-    const c2d_real x[18] = {a->mass,    a->radius,  a->inertia, a->vel.x,   a->vel.y,   a->spin[0],
-                            a->spin[1], a->spin[2], b->mass,    b->radius,  b->inertia, b->vel.x,
-                            b->vel.y,   b->spin[0], b->spin[1], b->spin[2], dh->x,      dh->y};
-    return c2d_sphere_ordinary(x, 18);
+    c2d_span_add(s, d->mass);
+    c2d_span_add(s, d->radius);
+    c2d_span_add(s, d->inertia);
+    c2d_span_add(s, d->vel.x);
+    c2d_span_add(s, d->vel.y);
+    c2d_span_add(s, d->spin[0]);
+    c2d_span_add(s, d->spin[1]);
+    c2d_span_add(s, d->spin[2]);
+}
+
+/* Both balls, the position difference dh and its rounding error dl (dl so
+ * that c2d_normal_speed's exact products need no scaling: see there). */
+static int c2d_balls_ordinary(const c2d_real_ball *a, const c2d_real_ball *b, const c2d_real_vec *dh,
+                              const c2d_real_vec *dl)
+{
+    c2d_sphere_span s;
+    c2d_span_start(&s);
+    c2d_ball_span(&s, a);
+    c2d_ball_span(&s, b);
+    c2d_span_add(&s, dh->x);
+    c2d_span_add(&s, dh->y);
+    c2d_span_add(&s, dl->x);
+    c2d_span_add(&s, dl->y);
+    return c2d_span_ordinary(&s);
 }
 
 /* A subnormal spin loses bits in every product the plain path takes of it,
@@ -613,12 +656,12 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     ka = a->radius * qa;
     kb = b->radius * qb;
     inv_mt = inv_mn + ka + kb;
-    gn = c2d_normal_speed(&dh, &dl, len, nx, ny, &a->vel, &b->vel);
+    fast = c2d_balls_ordinary(a, b, &dh, &dl);
+    gn = c2d_normal_speed(&dh, &dl, len, nx, ny, &a->vel, &b->vel, fast);
     gt = (dvy * nx - dvx * ny) - (a->radius * a->spin[2] + b->radius * b->spin[2]);
     gz = -(a->radius * (a->spin[0] * ny - a->spin[1] * nx) + b->radius * (b->spin[0] * ny - b->spin[1] * nx));
     g = c2d_sphere_length(gt, gz);
     jn = gn < 0 ? -(1 + s->restitution) * gn / inv_mn : 0;
-    fast = c2d_balls_ordinary(a, b, &dh);
     fine = fast || (c2d_sphere_fine(ia, ia, 1) && c2d_sphere_fine(ib, ib, 1) && c2d_sphere_fine(qa, a->radius, ia) &&
            c2d_sphere_fine(qb, b->radius, ib) && c2d_sphere_fine(ima, ima, 1) && c2d_sphere_fine(imb, imb, 1) &&
            c2d_sphere_fine(ka, a->radius, qa) && c2d_sphere_fine(kb, b->radius, qb) &&
@@ -639,7 +682,7 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
                              c2d_sphere_fine(qb * jt, qb, jt) && c2d_sphere_fine(qb * jz, qb, jz)));
     c2d_ball_friction_apply(&oa, &ta->vel, a, ima, qa, nx, ny, jt, jz, -1);
     c2d_ball_friction_apply(&ob, &tb->vel, b, imb, qb, nx, ny, jt, jz, 1);
-    fine = fine && c2d_ball_out_finite(&oa) && c2d_ball_out_finite(&ob);
+    fine = fine && (fast || (c2d_ball_out_finite(&oa) && c2d_ball_out_finite(&ob)));
     if (!fine) return c2d_balls_friction_dd(a, b, ta, tb, s);
     c2d_ball_write(a, &oa);
     c2d_ball_write(b, &ob);
@@ -807,7 +850,7 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     if (c->normal.x == 0 && c->normal.y == 0) return C2D_DEGENERATE;
     len = c2d_unit_normal(&nx, &ny, c->normal.x, c->normal.y);
     sn = c2d_cushion_tilt(d->radius, c->height, &cs);
-    vn = c2d_normal_speed(&c->normal, &zero, len, nx, ny, &zero, &d->vel);
+    vn = c2d_normal_speed(&c->normal, &zero, len, nx, ny, &zero, &d->vel, 0);
     if (!(vn > 0) || sn == 1) return C2D_SEPARATING; /* sn = 1 exactly when h = 2R */
     u = cs * vn;
     vt = d->vel.y * nx - d->vel.x * ny;
