@@ -220,6 +220,117 @@ static c2d_real c2d_unit_normal(c2d_real *nx, c2d_real *ny, c2d_real x, c2d_real
     return l * m;
 }
 
+/* The fast test that makes the checks below unnecessary: every nonzero
+ * magnitude in x within 2^+-W, W = EMAX / 16 (double 63, float 7).  Each
+ * quantity the plain path forms is then a product or quotient of at most
+ * ten of them, or a cancelling sum of such (at least a product of two
+ * input ulps when nonzero): within 2^+-(10 W + 2 MANT + 8), inside the
+ * normal range, so no step over- or underflows.  Infinite masses and
+ * inertias fail it (the checks then decide). */
+#define C2D_SPHERE_WINDOW (C2D_R_EMAX / 16)
+
+/* The test by the bits, branch-free: u = bits << 1 (the sign shifted out)
+ * orders the magnitudes as integers, +0 at u = 0 and infinity above every
+ * finite one; u - 1 takes zero to the largest integer, so the least u - 1
+ * is the smallest nonzero magnitude's and zeros pass, as above.  One
+ * compare-and-select per bound and input, no loop: the same verdict as
+ * comparing the magnitudes (NaN never reaches it: validated inputs). */
+typedef struct c2d_sphere_span { c2d_real_bits lo, hi; } c2d_sphere_span;
+
+static void c2d_span_start(c2d_sphere_span *s)
+{
+    s->lo = (c2d_real_bits)~(c2d_real_bits)0;
+    s->hi = 0;
+}
+
+static void c2d_span_add(c2d_sphere_span *s, c2d_real x)
+{
+    const c2d_real_bits u = (c2d_real_bits)(c2d_bits(x) << 1), v = (c2d_real_bits)(u - 1u);
+    s->lo = v < s->lo ? v : s->lo;
+    s->hi = u > s->hi ? u : s->hi;
+}
+
+static int c2d_span_ordinary(const c2d_sphere_span *s)
+{
+    return s->lo >= (c2d_real_bits)((c2d_real_bits)(c2d_bits(c2d_pow2(-C2D_SPHERE_WINDOW)) << 1) - 1u) &&
+           s->hi <= (c2d_real_bits)(c2d_bits(c2d_pow2(C2D_SPHERE_WINDOW)) << 1);
+}
+
+static int c2d_sphere_ordinary(const c2d_real *x, int n)
+{
+    c2d_sphere_span s;
+    int i;
+    c2d_span_start(&s);
+    for (i = 0; i < n; i++) c2d_span_add(&s, x[i]);
+    return c2d_span_ordinary(&s);
+}
+
+/* mu in the window (or 0, or INFINITY, which is never multiplied). */
+static int c2d_sphere_mu_ordinary(c2d_real mu)
+{
+    return (mu >= c2d_pow2(-C2D_SPHERE_WINDOW) && mu <= c2d_pow2(C2D_SPHERE_WINDOW)) || mu == 0 || mu > C2D_R_MAX;
+}
+
+/* A ball's fields that may be zero: radius, velocity, spin. */
+C2D_HOT void c2d_ball_span(c2d_sphere_span *s, const c2d_real_ball *d)
+{
+    c2d_span_add(s, d->radius);
+    c2d_span_add(s, d->vel.x);
+    c2d_span_add(s, d->vel.y);
+    c2d_span_add(s, d->spin[0]);
+    c2d_span_add(s, d->spin[1]);
+    c2d_span_add(s, d->spin[2]);
+}
+
+/* The masses and inertias, which are never zero, in the window by their
+ * least and largest value (positive, so inside it means valid too); a NaN,
+ * which the selections may drop, makes the sum fail. */
+static int c2d_balls_masses_ordinary(const c2d_real_ball *a, const c2d_real_ball *b)
+{
+    c2d_real lo = a->mass < a->inertia ? a->mass : a->inertia, hi = a->mass > a->inertia ? a->mass : a->inertia;
+    lo = b->mass < lo ? b->mass : lo;
+    lo = b->inertia < lo ? b->inertia : lo;
+    hi = b->mass > hi ? b->mass : hi;
+    hi = b->inertia > hi ? b->inertia : hi;
+    return lo >= c2d_pow2(-C2D_SPHERE_WINDOW) && hi <= c2d_pow2(C2D_SPHERE_WINDOW) &&
+           (a->mass + a->inertia) + (b->mass + b->inertia) <= c2d_pow2(C2D_SPHERE_WINDOW + 2);
+}
+
+/* Both balls in the window (their span and masses, from
+ * c2d_real_collide_balls) and the position difference dh. */
+static int c2d_balls_ordinary(const c2d_sphere_span *balls, const c2d_real_vec *dh)
+{
+    c2d_sphere_span s;
+    s.lo = balls->lo;
+    s.hi = balls->hi;
+    c2d_span_add(&s, dh->x);
+    c2d_span_add(&s, dh->y);
+    return c2d_span_ordinary(&s);
+}
+
+/* dl, the position difference's rounding error, zero or at least 2^-W
+ * (at most ulp(dh) / 2, so below 2^W with dh): what c2d_normal_speed's
+ * unscaled exact products need on top of the window. */
+static int c2d_sphere_low_ordinary(const c2d_real_vec *dl)
+{
+    const c2d_real_bits lo = (c2d_real_bits)((c2d_real_bits)(c2d_bits(c2d_pow2(-C2D_SPHERE_WINDOW)) << 1) - 1u);
+    return (c2d_real_bits)((c2d_real_bits)(c2d_bits(dl->x) << 1) - 1u) >= lo &&
+           (c2d_real_bits)((c2d_real_bits)(c2d_bits(dl->y) << 1) - 1u) >= lo;
+}
+
+#ifdef C2D_R_FUSED
+/* c2d_dot2 compiled for x86-64-v3, its TwoProducts fused (the same bits:
+ * the error term is exact either way), for c2d_normal_speed's unscaled
+ * exact products where run-time dispatch finds FMA. */
+__attribute__((target("arch=x86-64-v3"))) C2D_COLD c2d_real c2d_sphere_dot2_fused(const c2d_real_vec *nh,
+                                                                                   const c2d_real_vec *nl,
+                                                                                   const c2d_real_vec *va,
+                                                                                   const c2d_real_vec *vb)
+{
+    return c2d_dot2_as(nh, nl, va, vb, 1);
+}
+#endif
+
 /* (vb - va).n^ to a few u of itself.  A glancing impact's normal speed is a
  * cancelling sum, and the normal impulse it gives reaches the spins through
  * mu Jn R^2 / I, which the pair's scale does not bound: plainly (error
@@ -302,7 +413,13 @@ static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl,
     c2d_real_vec h, l, a, b;
     int kn, kv;
     if (2 * c2d_abs(gn) >= c2d_abs(dvx) + c2d_abs(dvy)) return gn;
-    if (ordinary != 0) return c2d_dot2(dh, dl, va, vb) / len;
+    if (ordinary != 0 && c2d_sphere_low_ordinary(dl)) {
+#ifdef C2D_R_FUSED
+        if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+            return c2d_sphere_dot2_fused(dh, dl, va, vb) / len;
+#endif
+        return c2d_dot2(dh, dl, va, vb) / len;
+    }
     kn = c2d_sphere_scale_of(dh->x, dh->y, 0, 0);
     kv = c2d_sphere_scale_of(va->x, va->y, vb->x, vb->y);
     c2d_sphere_scale_vec(&h, dh, -kn);
@@ -377,85 +494,6 @@ static void c2d_ball_friction_apply(c2d_ball_out *o, const c2d_real_vec *v_norma
 static int c2d_sphere_fine(c2d_real p, c2d_real x, c2d_real y)
 {
     return c2d_finite4(p, 0, 0, 0) && (p == 0 ? (x == 0 || y == 0) : c2d_abs(p) >= c2d_pow2(C2D_R_EMIN));
-}
-
-/* The fast test that makes the checks below unnecessary: every nonzero
- * magnitude in x within 2^+-W, W = EMAX / 16 (double 63, float 7).  Each
- * quantity the plain path forms is then a product or quotient of at most
- * ten of them, or a cancelling sum of such (at least a product of two
- * input ulps when nonzero): within 2^+-(10 W + 2 MANT + 8), inside the
- * normal range, so no step over- or underflows.  Infinite masses and
- * inertias fail it (the checks then decide). */
-#define C2D_SPHERE_WINDOW (C2D_R_EMAX / 16)
-
-/* The test by the bits, branch-free: u = bits << 1 (the sign shifted out)
- * orders the magnitudes as integers, +0 at u = 0 and infinity above every
- * finite one; u - 1 takes zero to the largest integer, so the least u - 1
- * is the smallest nonzero magnitude's and zeros pass, as above.  One
- * compare-and-select per bound and input, no loop: the same verdict as
- * comparing the magnitudes (NaN never reaches it: validated inputs). */
-typedef struct c2d_sphere_span { c2d_real_bits lo, hi; } c2d_sphere_span;
-
-static void c2d_span_start(c2d_sphere_span *s)
-{
-    s->lo = (c2d_real_bits)~(c2d_real_bits)0;
-    s->hi = 0;
-}
-
-static void c2d_span_add(c2d_sphere_span *s, c2d_real x)
-{
-    const c2d_real_bits u = (c2d_real_bits)(c2d_bits(x) << 1), v = (c2d_real_bits)(u - 1u);
-    s->lo = v < s->lo ? v : s->lo;
-    s->hi = u > s->hi ? u : s->hi;
-}
-
-static int c2d_span_ordinary(const c2d_sphere_span *s)
-{
-    return s->lo >= (c2d_real_bits)((c2d_real_bits)(c2d_bits(c2d_pow2(-C2D_SPHERE_WINDOW)) << 1) - 1u) &&
-           s->hi <= (c2d_real_bits)(c2d_bits(c2d_pow2(C2D_SPHERE_WINDOW)) << 1);
-}
-
-static int c2d_sphere_ordinary(const c2d_real *x, int n)
-{
-    c2d_sphere_span s;
-    int i;
-    c2d_span_start(&s);
-    for (i = 0; i < n; i++) c2d_span_add(&s, x[i]);
-    return c2d_span_ordinary(&s);
-}
-
-/* mu in the window (or 0, or INFINITY, which is never multiplied). */
-static int c2d_sphere_mu_ordinary(c2d_real mu)
-{
-    return mu == 0 || mu > C2D_R_MAX || (mu >= c2d_pow2(-C2D_SPHERE_WINDOW) && mu <= c2d_pow2(C2D_SPHERE_WINDOW));
-}
-
-static void c2d_ball_span(c2d_sphere_span *s, const c2d_real_ball *d)
-{
-    c2d_span_add(s, d->mass);
-    c2d_span_add(s, d->radius);
-    c2d_span_add(s, d->inertia);
-    c2d_span_add(s, d->vel.x);
-    c2d_span_add(s, d->vel.y);
-    c2d_span_add(s, d->spin[0]);
-    c2d_span_add(s, d->spin[1]);
-    c2d_span_add(s, d->spin[2]);
-}
-
-/* Both balls, the position difference dh and its rounding error dl (dl so
- * that c2d_normal_speed's exact products need no scaling: see there). */
-static int c2d_balls_ordinary(const c2d_real_ball *a, const c2d_real_ball *b, const c2d_real_vec *dh,
-                              const c2d_real_vec *dl)
-{
-    c2d_sphere_span s;
-    c2d_span_start(&s);
-    c2d_ball_span(&s, a);
-    c2d_ball_span(&s, b);
-    c2d_span_add(&s, dh->x);
-    c2d_span_add(&s, dh->y);
-    c2d_span_add(&s, dl->x);
-    c2d_span_add(&s, dl->y);
-    return c2d_span_ordinary(&s);
 }
 
 /* A subnormal spin loses bits in every product the plain path takes of it,
@@ -631,7 +669,8 @@ C2D_COLD c2d_status c2d_balls_friction_dd(c2d_real_ball *a, c2d_real_ball *b, co
  * subnormal or an underflow to zero, which would cost the result its
  * bound; any such sends the pair to the slow path. */
 static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_body *ta,
-                                     const c2d_real_body *tb, const c2d_real_ball_surface *s)
+                                     const c2d_real_body *tb, const c2d_real_ball_surface *s,
+                                     const c2d_sphere_span *balls, int balls_ordinary)
 {
     c2d_real nx, ny, gn, gt, gz, g, qa, qb, ia, ib, ka, kb, ima, imb, inv_mn, inv_mt, len, jn, f;
     c2d_real jt, jz;
@@ -646,21 +685,29 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
         dh.y = c2d_two_sum(b->pos.y * (c2d_real)0.5, -a->pos.y * (c2d_real)0.5, &dl.y);
     }
     len = c2d_unit_normal(&nx, &ny, dh.x, dh.y);
-    ia = c2d_sphere_inverse(a->inertia);
-    ib = c2d_sphere_inverse(b->inertia);
+    fast = balls_ordinary && c2d_balls_ordinary(balls, &dh);
+    if (fast) { /* finite masses and inertias: the same quotients */
+        ia = 1 / a->inertia;
+        ib = 1 / b->inertia;
+        ima = 1 / a->mass;
+        imb = 1 / b->mass;
+    } else {
+        ia = c2d_sphere_inverse(a->inertia);
+        ib = c2d_sphere_inverse(b->inertia);
+        ima = c2d_sphere_inverse(a->mass);
+        imb = c2d_sphere_inverse(b->mass);
+    }
     qa = a->radius * ia;
     qb = b->radius * ib;
-    ima = c2d_sphere_inverse(a->mass);
-    imb = c2d_sphere_inverse(b->mass);
     inv_mn = ima + imb;
     ka = a->radius * qa;
     kb = b->radius * qb;
     inv_mt = inv_mn + ka + kb;
-    fast = c2d_balls_ordinary(a, b, &dh, &dl);
     gn = c2d_normal_speed(&dh, &dl, len, nx, ny, &a->vel, &b->vel, fast);
     gt = (dvy * nx - dvx * ny) - (a->radius * a->spin[2] + b->radius * b->spin[2]);
     gz = -(a->radius * (a->spin[0] * ny - a->spin[1] * nx) + b->radius * (b->spin[0] * ny - b->spin[1] * nx));
-    g = c2d_sphere_length(gt, gz);
+    /* in the window the squares neither over- nor underflow: the plain length */
+    g = fast ? C2D_R_SQRT(gt * gt + gz * gz) : c2d_sphere_length(gt, gz);
     jn = gn < 0 ? -(1 + s->restitution) * gn / inv_mn : 0;
     fine = fast || (c2d_sphere_fine(ia, ia, 1) && c2d_sphere_fine(ib, ib, 1) && c2d_sphere_fine(qa, a->radius, ia) &&
            c2d_sphere_fine(qb, b->radius, ib) && c2d_sphere_fine(ima, ima, 1) && c2d_sphere_fine(imb, imb, 1) &&
@@ -689,12 +736,27 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     return C2D_OK;
 }
 
+/* Both balls valid when both are in the window (every field but the
+ * position finite, masses and inertias positive): the positions finite and
+ * the radii not negative. */
+static int c2d_balls_valid_ordinary(const c2d_real_ball *a, const c2d_real_ball *b)
+{
+    return c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y) && a->radius >= 0 && b->radius >= 0;
+}
+
 static c2d_status c2d_real_collide_balls(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_ball_surface *s)
 {
     c2d_real_body ta, tb;
     c2d_status st;
-    if (a == NULL || b == NULL || !c2d_ball_valid(a) || !c2d_ball_valid(b) || !c2d_ball_surface_valid(s))
-        return C2D_INVALID;
+    c2d_sphere_span w;
+    int valid, ordinary;
+    if (a == NULL || b == NULL) return C2D_INVALID;
+    c2d_span_start(&w);
+    c2d_ball_span(&w, a);
+    c2d_ball_span(&w, b);
+    ordinary = c2d_span_ordinary(&w) && c2d_balls_masses_ordinary(a, b);
+    valid = ordinary ? c2d_balls_valid_ordinary(a, b) : (c2d_ball_valid(a) && c2d_ball_valid(b));
+    if (!valid || !c2d_ball_surface_valid(s)) return C2D_INVALID;
     if (a == b) return C2D_DEGENERATE;
     c2d_ball_body(&ta, a);
     c2d_ball_body(&tb, b);
@@ -707,7 +769,7 @@ static c2d_status c2d_real_collide_balls(c2d_real_ball *a, c2d_real_ball *b, con
         b->vel.y = tb.vel.y;
         return C2D_OK;
     }
-    return c2d_balls_friction(a, b, &ta, &tb, s);
+    return c2d_balls_friction(a, b, &ta, &tb, s, &w, ordinary);
 }
 
 /* A rail: restitution in [0, 1], friction >= 0 (INFINITY: never slides),
