@@ -186,9 +186,8 @@ static int c2d_ball_valid(const c2d_real_ball *d)
  * two finite; friction may be INFINITY (never slides). */
 static int c2d_ball_surface_valid(const c2d_real_ball_surface *s)
 {
-    return s->restitution >= 0 && s->restitution <= 1 && s->friction >= 0 &&
-           c2d_finite4(s->friction_boost, s->friction_decay, 0, 0) && s->friction_boost >= 0 &&
-           s->friction_decay >= 0;
+    return s->restitution >= 0 && s->restitution <= 1 && s->friction >= 0 && s->friction_boost >= 0 &&
+           s->friction_boost <= C2D_R_MAX && s->friction_decay >= 0 && s->friction_decay <= C2D_R_MAX;
 }
 
 static c2d_real c2d_ball_friction(const c2d_real_ball_surface *s, c2d_real slip)
@@ -271,10 +270,9 @@ static int c2d_sphere_mu_ordinary(c2d_real mu)
     return (mu >= c2d_pow2(-C2D_SPHERE_WINDOW) && mu <= c2d_pow2(C2D_SPHERE_WINDOW)) || mu == 0 || mu > C2D_R_MAX;
 }
 
-/* A ball's fields that may be zero: radius, velocity, spin. */
+/* A ball's fields that may be zero: velocity, spin. */
 C2D_HOT void c2d_ball_span(c2d_sphere_span *s, const c2d_real_ball *d)
 {
-    c2d_span_add(s, d->radius);
     c2d_span_add(s, d->vel.x);
     c2d_span_add(s, d->vel.y);
     c2d_span_add(s, d->spin[0]);
@@ -282,18 +280,24 @@ C2D_HOT void c2d_ball_span(c2d_sphere_span *s, const c2d_real_ball *d)
     c2d_span_add(s, d->spin[2]);
 }
 
-/* The masses and inertias, which are never zero, in the window by their
- * least and largest value (positive, so inside it means valid too); a NaN,
- * which the selections may drop, makes the sum fail. */
-static int c2d_balls_masses_ordinary(const c2d_real_ball *a, const c2d_real_ball *b)
+/* The masses, inertias and radii in the window by their least and largest
+ * value, all positive (so inside it they are valid too; a radius of zero,
+ * valid, fails it and the checks decide); a NaN, which the selections may
+ * drop, makes the sum fail. */
+static int c2d_balls_sizes_ordinary(const c2d_real_ball *a, const c2d_real_ball *b)
 {
     c2d_real lo = a->mass < a->inertia ? a->mass : a->inertia, hi = a->mass > a->inertia ? a->mass : a->inertia;
+    lo = a->radius < lo ? a->radius : lo;
     lo = b->mass < lo ? b->mass : lo;
     lo = b->inertia < lo ? b->inertia : lo;
+    lo = b->radius < lo ? b->radius : lo;
+    hi = a->radius > hi ? a->radius : hi;
     hi = b->mass > hi ? b->mass : hi;
     hi = b->inertia > hi ? b->inertia : hi;
+    hi = b->radius > hi ? b->radius : hi;
     return lo >= c2d_pow2(-C2D_SPHERE_WINDOW) && hi <= c2d_pow2(C2D_SPHERE_WINDOW) &&
-           (a->mass + a->inertia) + (b->mass + b->inertia) <= c2d_pow2(C2D_SPHERE_WINDOW + 2);
+           ((a->mass + a->inertia) + a->radius) + ((b->mass + b->inertia) + b->radius) <=
+               c2d_pow2(C2D_SPHERE_WINDOW + 3);
 }
 
 /* Both balls in the window (their span and masses, from
@@ -737,11 +741,11 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
 }
 
 /* Both balls valid when both are in the window (every field but the
- * position finite, masses and inertias positive): the positions finite and
- * the radii not negative. */
+ * position finite, masses, inertias and radii positive): the positions
+ * finite. */
 static int c2d_balls_valid_ordinary(const c2d_real_ball *a, const c2d_real_ball *b)
 {
-    return c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y) && a->radius >= 0 && b->radius >= 0;
+    return c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y);
 }
 
 static c2d_status c2d_real_collide_balls(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_ball_surface *s)
@@ -754,7 +758,7 @@ static c2d_status c2d_real_collide_balls(c2d_real_ball *a, c2d_real_ball *b, con
     c2d_span_start(&w);
     c2d_ball_span(&w, a);
     c2d_ball_span(&w, b);
-    ordinary = c2d_span_ordinary(&w) && c2d_balls_masses_ordinary(a, b);
+    ordinary = c2d_span_ordinary(&w) && c2d_balls_sizes_ordinary(a, b);
     valid = ordinary ? c2d_balls_valid_ordinary(a, b) : (c2d_ball_valid(a) && c2d_ball_valid(b));
     if (!valid || !c2d_ball_surface_valid(s)) return C2D_INVALID;
     if (a == b) return C2D_DEGENERATE;
