@@ -255,15 +255,6 @@ static int c2d_span_ordinary(const c2d_sphere_span *s)
            s->hi <= (c2d_real_bits)(c2d_bits(c2d_pow2(C2D_SPHERE_WINDOW)) << 1);
 }
 
-static int c2d_sphere_ordinary(const c2d_real *x, int n)
-{
-    c2d_sphere_span s;
-    int i;
-    c2d_span_start(&s);
-    for (i = 0; i < n; i++) c2d_span_add(&s, x[i]);
-    return c2d_span_ordinary(&s);
-}
-
 /* mu in the window (or 0, or INFINITY, which is never multiplied). */
 static int c2d_sphere_mu_ordinary(c2d_real mu)
 {
@@ -284,7 +275,7 @@ C2D_HOT void c2d_ball_span(c2d_sphere_span *s, const c2d_real_ball *d)
  * value, all positive (so inside it they are valid too; a radius of zero,
  * valid, fails it and the checks decide); a NaN, which the selections may
  * drop, makes the sum fail. */
-static int c2d_balls_sizes_ordinary(const c2d_real_ball *a, const c2d_real_ball *b)
+C2D_HOT int c2d_balls_sizes_ordinary(const c2d_real_ball *a, const c2d_real_ball *b)
 {
     c2d_real lo = a->mass < a->inertia ? a->mass : a->inertia, hi = a->mass > a->inertia ? a->mass : a->inertia;
     lo = a->radius < lo ? a->radius : lo;
@@ -410,20 +401,11 @@ C2D_COLD c2d_real c2d_normal_speed_dd(const c2d_real_vec *dh, const c2d_real_vec
  * same bits) wherever the unscaled evaluation neither overflows nor
  * underflows; elsewhere only components below 2^EMIN of the largest lose
  * bits, far inside the ~u^2 of the terms the double-double allows. */
-static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len, c2d_real nx,
-                                 c2d_real ny, const c2d_real_vec *va, const c2d_real_vec *vb, int ordinary)
+C2D_COLD c2d_real c2d_normal_speed_scaled(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len,
+                                          const c2d_real_vec *va, const c2d_real_vec *vb)
 {
-    c2d_real dvx = vb->x - va->x, dvy = vb->y - va->y, gn = dvx * nx + dvy * ny;
     c2d_real_vec h, l, a, b;
     int kn, kv;
-    if (2 * c2d_abs(gn) >= c2d_abs(dvx) + c2d_abs(dvy)) return gn;
-    if (ordinary != 0 && c2d_sphere_low_ordinary(dl)) {
-#ifdef C2D_R_FUSED
-        if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
-            return c2d_sphere_dot2_fused(dh, dl, va, vb) / len;
-#endif
-        return c2d_dot2(dh, dl, va, vb) / len;
-    }
     kn = c2d_sphere_scale_of(dh->x, dh->y, 0, 0);
     kv = c2d_sphere_scale_of(va->x, va->y, vb->x, vb->y);
     c2d_sphere_scale_vec(&h, dh, -kn);
@@ -436,6 +418,26 @@ static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl,
     /* a subnormal |n| (c2d_unit_normal's l m) has lost bits: from h again */
     len = len < c2d_pow2(C2D_R_EMIN) ? C2D_R_SQRT(h.x * h.x + h.y * h.y) : c2d_scale2(len, -kn);
     return c2d_sphere_keep_sign(c2d_dot2(&h, &l, &a, &b) / len, kv);
+}
+
+/* The plain value, or inside the window (ordinary: both balls and dh, and
+ * here dl) the exact products unscaled: every term they form is a product
+ * of at most two inputs or their rounding errors, within 2^+-(2 W + 4 MANT)
+ * when nonzero, so no step over- or underflows and scaling by powers of two
+ * would change no bit (c2d_normal_speed_scaled's result, for less). */
+C2D_HOT c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len, c2d_real nx,
+                                  c2d_real ny, const c2d_real_vec *va, const c2d_real_vec *vb, int ordinary)
+{
+    c2d_real dvx = vb->x - va->x, dvy = vb->y - va->y, gn = dvx * nx + dvy * ny;
+    if (2 * c2d_abs(gn) >= c2d_abs(dvx) + c2d_abs(dvy)) return gn;
+    if (ordinary != 0 && c2d_sphere_low_ordinary(dl)) {
+#ifdef C2D_R_FUSED
+        if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+            return c2d_sphere_dot2_fused(dh, dl, va, vb) / len;
+#endif
+        return c2d_dot2(dh, dl, va, vb) / len;
+    }
+    return c2d_normal_speed_scaled(dh, dl, len, va, vb);
 }
 
 /* |(x, y)|: plainly, or scaled by a power of two where the squares would
@@ -911,12 +913,22 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     c2d_real nx, ny, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, f, len, im, ii, rr, k, u, q, f1, f2, qf;
     c2d_real_vec zero = {0, 0};
     c2d_ball_out o;
-    int fine, fast;
-    if (d == NULL || !c2d_ball_valid(d) || !c2d_cushion_valid(c, d)) return C2D_INVALID;
+    c2d_sphere_span w;
+    int fine, fast, ordinary;
+    if (d == NULL) return C2D_INVALID;
+    c2d_span_start(&w);
+    c2d_ball_span(&w, d);
+    ordinary = c2d_span_ordinary(&w) && c2d_balls_sizes_ordinary(d, d);
+    if (!(ordinary ? c2d_finite4(d->pos.x, d->pos.y, 0, 0) : c2d_ball_valid(d)) || !c2d_cushion_valid(c, d))
+        return C2D_INVALID;
     if (c->normal.x == 0 && c->normal.y == 0) return C2D_DEGENERATE;
     len = c2d_unit_normal(&nx, &ny, c->normal.x, c->normal.y);
     sn = c2d_cushion_tilt(d->radius, c->height, &cs);
-    vn = c2d_normal_speed(&c->normal, &zero, len, nx, ny, &zero, &d->vel, 0);
+    c2d_span_add(&w, c->normal.x);
+    c2d_span_add(&w, c->normal.y);
+    c2d_span_add(&w, cs);
+    fast = ordinary && c2d_span_ordinary(&w) && c2d_sphere_mu_ordinary(c->friction);
+    vn = c2d_normal_speed(&c->normal, &zero, len, nx, ny, &zero, &d->vel, fast);
     if (!(vn > 0) || sn == 1) return C2D_SEPARATING; /* sn = 1 exactly when h = 2R */
     u = cs * vn;
     vt = d->vel.y * nx - d->vel.x * ny;
@@ -925,17 +937,12 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     pn = (1 + c->restitution) * d->mass * u;
     s1 = vt + d->radius * (cs * d->spin[2] - sn * wn);
     s2 = -sn * vn - d->radius * wt;
-    sl = c2d_sphere_length(s1, s2);
+    sl = fast ? C2D_R_SQRT(s1 * s1 + s2 * s2) : c2d_sphere_length(s1, s2); /* as for two balls */
     im = 1 / d->mass;
-    ii = c2d_sphere_inverse(d->inertia);
+    ii = fast ? 1 / d->inertia : c2d_sphere_inverse(d->inertia);
     rr = d->radius * d->radius;
     k = rr * ii;
     q = d->radius * ii;
-    {
-        const c2d_real x[11] = {d->mass,    d->radius,  d->inertia,  d->vel.x,    d->vel.y, d->spin[0],
-                                d->spin[1], d->spin[2], c->normal.x, c->normal.y, cs};
-        fast = c2d_sphere_ordinary(x, 11) && c2d_sphere_mu_ordinary(c->friction);
-    }
     fine = fast || (c2d_sphere_fine(vn, 1, 1) && c2d_sphere_fine(u, 1, 1) && c2d_sphere_fine(pn, 1, 1) &&
                     c2d_finite4(sl, 0, 0, 0) && c2d_sphere_fine(im, 1, 1) && c2d_sphere_fine(ii, ii, 1) &&
                     c2d_sphere_fine(rr, 1, 1) && c2d_sphere_fine(k, ii, 1) && c2d_sphere_fine(q, ii, 1) &&
@@ -954,7 +961,7 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
                              c2d_sphere_fine(q * f2, q, f2) && c2d_sphere_fine(pn * cs, 1, 1) &&
                              c2d_sphere_fine(f2 * sn, f2, sn)));
     c2d_cushion_apply(&o, d, nx, ny, sn, cs, pn, f1, f2);
-    if (!fine || !c2d_ball_out_finite(&o)) return c2d_cushion_dd(d, c);
+    if (!fine || (!fast && !c2d_ball_out_finite(&o))) return c2d_cushion_dd(d, c);
     c2d_ball_write(d, &o);
     return C2D_OK;
 }
