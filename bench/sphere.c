@@ -10,10 +10,13 @@
  *                          mu(v), half each) for instruction counts:
  *                          make bench-sphere runs both under callgrind with
  *                          --toggle-collect on the call and prints Ir/call.
+ *   sphere libf N          the same pairs rounded to float, c2d_collide_ballsf
+ *   sphere cushion|cushionf N   N rail impacts (gen_cushion), either format
  *
- * Measured (x86-64, gcc 12.2 -O2, 2026-12-02, N = 100,000; docs/API.md):
+ * Measured (x86-64, gcc 12.2 -O2, 2026-12-03, N = 100,000; docs/API.md):
  * accuracy worst 4.87 ulp (library) and 6.31 (plain), median 0.40 both;
- * 716 instructions per call against 248: 2.89x.  Printed, not asserted. */
+ * 686 instructions per call against 248: 2.77x (float 1,311; the cushion
+ * 419, float 934).  Printed, not asserted. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>

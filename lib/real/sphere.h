@@ -109,15 +109,31 @@
  *   range, an impulse (mass x speed), R^2/I or R w may overflow, or a
  *   product underflow to a subnormal or to zero (a light ball's impulse,
  *   then divided by its tiny mass; a subnormal spin's product, which R
- *   makes count).  So the plain path is taken only where c2d_sphere_ordinary
- *   (every input within 2^+-EMAX/16) or the step-by-step check
- *   (c2d_sphere_fine: every impulse, inverse mass, R/I, R^2/I, slip and
- *   spin change finite and normal, or exactly zero from a zero factor)
- *   says no step left the normal range; elsewhere the same equations run
+ *   makes count).  So the plain path is taken only where the window test
+ *   (every input - masses, radii, inertias, velocities, spins, the normal
+ *   and mu - zero or within 2^+-EMAX/16, C2D_SPHERE_WINDOW below) or the
+ *   step-by-step check (c2d_sphere_fine: every impulse, inverse mass, R/I,
+ *   R^2/I, slip and spin change finite and normal, or exactly zero from a
+ *   zero factor) says no step left the normal range; the window implies
+ *   every check, so which of the two decides changes no bit (the window
+ *   only skips the checks, the inverses' and the length's guards and the
+ *   outputs' finite test, all of which it makes pass).  The window test
+ *   itself is branch-free on the bits (c2d_span_add: the least u - 1 and
+ *   the largest u of u = bits << 1, zeros passing) for the fields that may
+ *   be zero, and the least and largest value of the masses, inertias and
+ *   radii, which it needs positive; run before validation, so that inside
+ *   it only the positions are left to check.  Elsewhere the same equations run
  *   in double length with an extended exponent (real/arith/dd.h) and each
  *   output is rounded once on top of its start: C2D_RANGE only when an
  *   output itself overflows.  Everywhere else, bit for bit the plain path.
- *   The glancing normal speed's scaled exact products fall back to exact
+ *   The glancing normal speed's exact products run unscaled inside the
+ *   window (and with dl, the position difference's rounding error, zero or
+ *   at least 2^-W): every term is then a product of two inputs or of their
+ *   rounding errors, nonzero ones within 2^+-(2 W + 4 MANT), so no step
+ *   over- or underflows and the scaling below changes no bit; with FMA
+ *   where run-time dispatch finds it (the same bits: the TwoProduct's error
+ *   is exact either way).  Outside, they are scaled by powers of two, and
+ *   fall back to exact
  *   sums with extended exponents (c2d_normal_speed_dd) where the scaling
  *   would lose a component far below the largest, and a speed too small
  *   for the format stays an approach (the smallest subnormal, then the
@@ -220,12 +236,16 @@ static c2d_real c2d_unit_normal(c2d_real *nx, c2d_real *ny, c2d_real x, c2d_real
 }
 
 /* The fast test that makes the checks below unnecessary: every nonzero
- * magnitude in x within 2^+-W, W = EMAX / 16 (double 63, float 7).  Each
+ * input magnitude (masses, radii, inertias, velocity and spin components,
+ * the normal, mu; the cushion's cos(th)) within 2^+-W, W = EMAX / 16
+ * (double 63, float 7).  Each
  * quantity the plain path forms is then a product or quotient of at most
  * ten of them, or a cancelling sum of such (at least a product of two
  * input ulps when nonzero): within 2^+-(10 W + 2 MANT + 8), inside the
- * normal range, so no step over- or underflows.  Infinite masses and
- * inertias fail it (the checks then decide). */
+ * normal range, so no step over- or underflows, and every output (a
+ * start, itself such a quantity or c2d_collide's finite result of them,
+ * plus changes of that size) is finite.  Infinite masses and inertias fail
+ * it (the checks then decide). */
 #define C2D_SPHERE_WINDOW (C2D_R_EMAX / 16)
 
 /* The test by the bits, branch-free: u = bits << 1 (the sign shifted out)
