@@ -116,8 +116,8 @@
  *   R^2/I, slip and spin change finite and normal, or exactly zero from a
  *   zero factor) says no step left the normal range; the window implies
  *   every check, so which of the two decides changes no bit (the window
- *   only skips the checks, the inverses' and the length's guards and the
- *   outputs' finite test, all of which it makes pass).  The window test
+ *   only skips the checks, the inverses' guards and the outputs' finite
+ *   test, all of which it makes pass).  The window test
  *   itself is branch-free on the bits (c2d_span_add: the least u - 1 and
  *   the largest u of u = bits << 1, zeros passing) for the fields that may
  *   be zero, and the least and largest value of the masses, inertias and
@@ -460,18 +460,24 @@ C2D_HOT c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl
     return c2d_normal_speed_scaled(dh, dl, len, va, vb);
 }
 
-/* |(x, y)|: plainly, or scaled by a power of two where the squares would
- * overflow or underflow (the same bits wherever they do not). */
-static c2d_real c2d_sphere_length(c2d_real x, c2d_real y)
+/* |(x, y)| scaled by a power of two (the squares would over- or underflow). */
+C2D_COLD c2d_real c2d_sphere_length_scaled(c2d_real x, c2d_real y)
 {
-    c2d_real s = C2D_R_SQRT(x * x + y * y);
-    int k;
-    if ((s <= C2D_R_MAX && s >= c2d_pow2(C2D_R_EMIN / 2)) || !c2d_finite4(x, y, 0, 0) || (x == 0 && y == 0))
-        return s;
-    k = c2d_sphere_scale_of(x, y, 0, 0);
+    const int k = c2d_sphere_scale_of(x, y, 0, 0);
     x = c2d_scale2(x, -k);
     y = c2d_scale2(y, -k);
     return c2d_scale2(C2D_R_SQRT(x * x + y * y), k);
+}
+
+/* |(x, y)|: plainly, or scaled by a power of two where the squares would
+ * overflow or underflow (the same bits wherever they do not); the plain
+ * test inline, the scaled tier out of line. */
+C2D_HOT c2d_real c2d_sphere_length(c2d_real x, c2d_real y)
+{
+    const c2d_real s = C2D_R_SQRT(x * x + y * y);
+    if ((s <= C2D_R_MAX && s >= c2d_pow2(C2D_R_EMIN / 2)) || !c2d_finite4(x, y, 0, 0) || (x == 0 && y == 0))
+        return s;
+    return c2d_sphere_length_scaled(x, y);
 }
 
 static void c2d_ball_body(c2d_real_body *body, const c2d_real_ball *d)
@@ -732,8 +738,7 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     gn = c2d_normal_speed(&dh, &dl, len, nx, ny, &a->vel, &b->vel, fast);
     gt = (dvy * nx - dvx * ny) - (a->radius * a->spin[2] + b->radius * b->spin[2]);
     gz = -(a->radius * (a->spin[0] * ny - a->spin[1] * nx) + b->radius * (b->spin[0] * ny - b->spin[1] * nx));
-    /* in the window the squares neither over- nor underflow: the plain length */
-    g = fast ? C2D_R_SQRT(gt * gt + gz * gz) : c2d_sphere_length(gt, gz);
+    g = c2d_sphere_length(gt, gz);
     jn = gn < 0 ? -(1 + s->restitution) * gn / inv_mn : 0;
     fine = fast || (c2d_sphere_fine(ia, ia, 1) && c2d_sphere_fine(ib, ib, 1) && c2d_sphere_fine(qa, a->radius, ia) &&
            c2d_sphere_fine(qb, b->radius, ib) && c2d_sphere_fine(ima, ima, 1) && c2d_sphere_fine(imb, imb, 1) &&
@@ -957,7 +962,7 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     pn = (1 + c->restitution) * d->mass * u;
     s1 = vt + d->radius * (cs * d->spin[2] - sn * wn);
     s2 = -sn * vn - d->radius * wt;
-    sl = fast ? C2D_R_SQRT(s1 * s1 + s2 * s2) : c2d_sphere_length(s1, s2); /* as for two balls */
+    sl = c2d_sphere_length(s1, s2);
     im = 1 / d->mass;
     ii = fast ? 1 / d->inertia : c2d_sphere_inverse(d->inertia);
     rr = d->radius * d->radius;
