@@ -718,7 +718,7 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
     }
     len = c2d_unit_normal(&nx, &ny, dh.x, dh.y);
     fast = balls_ordinary && c2d_balls_ordinary(balls, &dh);
-    if (fast) { /* finite masses and inertias: the same quotients */
+    if (fast != 0) { /* finite masses and inertias: the same quotients */
         ia = 1 / a->inertia;
         ib = 1 / b->inertia;
         ima = 1 / a->mass;
