@@ -253,7 +253,8 @@ static c2d_real c2d_unit_normal(c2d_real *nx, c2d_real *ny, c2d_real x, c2d_real
  * finite one; u - 1 takes zero to the largest integer, so the least u - 1
  * is the smallest nonzero magnitude's and zeros pass, as above.  One
  * compare-and-select per bound and input, no loop: the same verdict as
- * comparing the magnitudes (NaN never reaches it: validated inputs). */
+ * comparing the magnitudes.  It runs before validation: a NaN, whose u is
+ * above infinity's, fails it, and validation then runs in full. */
 typedef struct c2d_sphere_span { c2d_real_bits lo, hi; } c2d_sphere_span;
 
 static void c2d_span_start(c2d_sphere_span *s)
