@@ -379,6 +379,52 @@ C2D_W_HOT void c2d_w_nearest(const c2d_w_self *s, double *dx, double *dy)
     else if (*dy < s->nhh) *dy += s->height;
 }
 
+/* c2d_time_of_impact's plain path (lib/real/toi.h, c2d_toi_plain) for a
+ * pair in the relative frame (a at the origin at rest, b at d moving at
+ * v), operation for operation, so its time is the same bits: the
+ * subtractions b - a it starts with are exact against a zero (-0 - +0 is
+ * -0), and every quantity it forms is a product of two components, a
+ * square or an absolute value, so negating d and v (the higher index's
+ * view, c2d_w_try_straight) changes none of them.  Inlined, it costs no
+ * call, no argument checks and no bodies; its filters reuse the
+ * candidate test's products (the same expressions).  1: an impact at
+ * *t; 0: none (receding, a miss, no relative motion); -1: the plain path
+ * would not decide (outside its window, near touching, near a graze),
+ * and the library's call does. */
+C2D_W_HOT int c2d_w_toi_plain(double dx, double dy, double vx, double vy, double r, double *t)
+{
+    const double lo = 0x1p-100, hi = 0x1p100, u8 = 0x1p-50, u16 = 0x1p-49; /* C2D_R_TOI_WINDOW, 8u, 16u */
+    const double mx = C2D_W_FABS(dx) == 0 ? hi : C2D_W_FABS(dx), my = C2D_W_FABS(dy) == 0 ? hi : C2D_W_FABS(dy);
+    const double nx = C2D_W_FABS(vx) == 0 ? hi : C2D_W_FABS(vx), ny = C2D_W_FABS(vy) == 0 ? hi : C2D_W_FABS(vy);
+    const double mr = r == 0 ? hi : r;
+    const double least = (mx < my ? mx : my) < (nx < ny ? nx : ny) ? (mx < my ? mx : my) : (nx < ny ? nx : ny);
+    double dv, k, q, r2, a2, dist, speed, cross, h, kc;
+    if (!((C2D_W_FABS(dx) + C2D_W_FABS(dy)) + (C2D_W_FABS(vx) + C2D_W_FABS(vy)) + r <= hi && (least < mr ? least : mr) >= lo))
+        return -1;
+    if ((vx == 0 && vy == 0) || (dx == 0 && dy == 0)) return 0;
+    dv = dx * vx + dy * vy;
+    k = C2D_W_FABS(dx * vx) + C2D_W_FABS(dy * vy);
+    if (!(C2D_W_FABS(dv) > u8 * k)) return -1;
+    if (dv > 0) return 0;
+    q = dx * dx + dy * dy;
+    r2 = r * r;
+    if (!(C2D_W_FABS(q - r2) > u16 * (q > r2 ? q : r2))) return -1; /* touching: the library's c2d_toi_touching */
+    if (q < r2) {
+        *t = 0;
+        return 1;
+    }
+    a2 = vx * vx + vy * vy;
+    cross = dx * vy - dy * vx;
+    kc = C2D_W_FABS(dx * vy) + C2D_W_FABS(dy * vx);
+    if (!(C2D_W_FABS(cross * cross - r2 * a2) > u16 * (C2D_W_FABS(cross) * kc + r2 * a2))) return -1;
+    if (cross * cross > r2 * a2) return 0;
+    dist = C2D_W_SQRT(q);
+    speed = C2D_W_SQRT(a2);
+    h = C2D_W_FABS(cross) / speed;
+    *t = (dist - r) * (dist + r) / (speed * C2D_W_SQRT((r - h) * (r + h)) - dv);
+    return 1;
+}
+
 /* A straight pair (no acceleration on either): its relative state in the
  * canonical frame is q minus p, both at t0 = the later state time (each
  * x + v s with s >= 0 its own age at t0: the same bits whichever disk
@@ -425,10 +471,16 @@ C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, ui
     } else if (dvx == 0 && dvy == 0) {
         return;
     }
-    if (j < self->i) dx = -dx, dy = -dy, dvx = -dvx, dvy = -dvy;
-    a.pos.x = a.pos.y = a.vel.x = a.vel.y = 0, a.mass = 1;
-    b.pos.x = dx, b.pos.y = dy, b.vel.x = dvx, b.vel.y = dvy, b.mass = 1; /* masses: ignored */
-    if (C2D_W_TOI(&a, &b, rs, &toi) != C2D_OK) return;
+    switch (c2d_w_toi_plain(dx, dy, dvx, dvy, rs, &toi)) {
+    case 0: return;
+    case 1: break;
+    default:
+        if (j < self->i) dx = -dx, dy = -dy, dvx = -dvx, dvy = -dvy;
+        a.pos.x = a.pos.y = a.vel.x = a.vel.y = 0, a.mass = 1;
+        b.pos.x = dx, b.pos.y = dy, b.vel.x = dvx, b.vel.y = dvy, b.mass = 1; /* masses: ignored */
+        if (C2D_W_TOI(&a, &b, rs, &toi) != C2D_OK) return;
+        break;
+    }
     when = t0 + toi;
     if (when <= self->now) {
         const uint32_t lo = j < self->i ? j : self->i, hi = j < self->i ? self->i : j;
