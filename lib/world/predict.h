@@ -394,12 +394,14 @@ C2D_W_HOT void c2d_w_nearest(const c2d_w_self *s, double *dx, double *dy)
 C2D_W_HOT int c2d_w_toi_plain(double dx, double dy, double vx, double vy, double r, double *t)
 {
     const double lo = 0x1p-100, hi = 0x1p100, u8 = 0x1p-50, u16 = 0x1p-49; /* C2D_R_TOI_WINDOW, 8u, 16u */
-    const double mx = C2D_W_FABS(dx) == 0 ? hi : C2D_W_FABS(dx), my = C2D_W_FABS(dy) == 0 ? hi : C2D_W_FABS(dy);
-    const double nx = C2D_W_FABS(vx) == 0 ? hi : C2D_W_FABS(vx), ny = C2D_W_FABS(vy) == 0 ? hi : C2D_W_FABS(vy);
-    const double mr = r == 0 ? hi : r;
-    const double least = (mx < my ? mx : my) < (nx < ny ? nx : ny) ? (mx < my ? mx : my) : (nx < ny ? nx : ny);
+    const double ax = C2D_W_FABS(dx), ay = C2D_W_FABS(dy), bx = C2D_W_FABS(vx), by = C2D_W_FABS(vy);
     double dv, k, q, r2, a2, dist, speed, cross, h, kc;
-    if (!((C2D_W_FABS(dx) + C2D_W_FABS(dy)) + (C2D_W_FABS(vx) + C2D_W_FABS(vy)) + r <= hi && (least < mr ? least : mr) >= lo))
+    /* The window (every input 0 or within [lo, hi], their sum at most hi):
+     * first as all nonzero, the common case, then with zeros left out. */
+    if (!((ax + ay) + (bx + by) + r <= hi)) return -1;
+    if (!(ax >= lo && ay >= lo && bx >= lo && by >= lo && r >= lo) &&
+        !((ax == 0 || ax >= lo) && (ay == 0 || ay >= lo) && (bx == 0 || bx >= lo) && (by == 0 || by >= lo) &&
+          (r == 0 || r >= lo)))
         return -1;
     if ((vx == 0 && vy == 0) || (dx == 0 && dy == 0)) return 0;
     dv = dx * vx + dy * vy;
