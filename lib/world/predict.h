@@ -386,16 +386,17 @@ C2D_W_HOT void c2d_w_nearest(const c2d_w_self *s, double *dx, double *dy)
  * -0), and every quantity it forms is a product of two components, a
  * square or an absolute value, so negating d and v (the higher index's
  * view, c2d_w_try_straight) changes none of them.  Inlined, it costs no
- * call, no argument checks and no bodies; its filters reuse the
- * candidate test's products (the same expressions).  1: an impact at
+ * call, no argument checks and no bodies; dv = d.v and k = |dx vx| +
+ * |dy vy| are the candidate test's dot and mag (the same expressions, so
+ * the same bits).  1: an impact at
  * *t; 0: none (receding, a miss, no relative motion); -1: the plain path
  * would not decide (outside its window, near touching, near a graze),
  * and the library's call does. */
-C2D_W_HOT int c2d_w_toi_plain(double dx, double dy, double vx, double vy, double r, double *t)
+C2D_W_HOT int c2d_w_toi_plain(double dx, double dy, double vx, double vy, double r, double dv, double k, double *t)
 {
     const double lo = 0x1p-100, hi = 0x1p100, u8 = 0x1p-50, u16 = 0x1p-49; /* C2D_R_TOI_WINDOW, 8u, 16u */
     const double ax = C2D_W_FABS(dx), ay = C2D_W_FABS(dy), bx = C2D_W_FABS(vx), by = C2D_W_FABS(vy);
-    double dv, k, q, r2, a2, dist, speed, cross, h, kc;
+    double q, r2, a2, dist, speed, cross, h, kc;
     /* The window (every input 0 or within [lo, hi], their sum at most hi):
      * first as all nonzero, the common case, then with zeros left out. */
     if (!((ax + ay) + (bx + by) + r <= hi)) return -1;
@@ -404,8 +405,6 @@ C2D_W_HOT int c2d_w_toi_plain(double dx, double dy, double vx, double vy, double
           (r == 0 || r >= lo)))
         return -1;
     if ((vx == 0 && vy == 0) || (dx == 0 && dy == 0)) return 0;
-    dv = dx * vx + dy * vy;
-    k = C2D_W_FABS(dx * vx) + C2D_W_FABS(dy * vy);
     if (!(C2D_W_FABS(dv) > u8 * k)) return -1;
     if (dv > 0) return 0;
     q = dx * dx + dy * dy;
@@ -473,7 +472,7 @@ C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, ui
     } else if (dvx == 0 && dvy == 0) {
         return;
     }
-    switch (c2d_w_toi_plain(dx, dy, dvx, dvy, rs, &toi)) {
+    switch (c2d_w_toi_plain(dx, dy, dvx, dvy, rs, dot, mag, &toi)) {
     case 0: return;
     case 1: break;
     default:
