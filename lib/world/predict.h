@@ -363,6 +363,7 @@ static int c2d_w_pair_refused_now(const c2d_world *w, const c2d_w_disk *p, const
 /* What a prediction keeps of its own disk i for its straight candidates. */
 typedef struct c2d_w_self {
     double x, y, vx, vy, t, radius, now;
+    double x0, y0;                /* x + vx * 0 and y + vy * 0: the position at age +0 */
     double width, height, hw, hh; /* the box, and half of it (periodic) */
     double nhw, nhh;              /* minus the halves (the same bits as -hw, -hh), loaded not negated per candidate */
     int periodic;
@@ -449,10 +450,20 @@ C2D_W_HOT int c2d_w_toi_plain(double dx, double dy, double vx, double vy, double
 C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, uint32_t j, c2d_w_best *best)
 {
     const c2d_w_disk *q = &w->disk[j];
-    const double qt = q->t, t0 = qt > self->t ? qt : self->t, sp = t0 - self->t, sq = t0 - qt;
-    const double rs = self->radius + q->radius;
-    double dx = (q->x + q->vx * sq) - (self->x + self->vx * sp), dy = (q->y + q->vy * sq) - (self->y + self->vy * sp);
-    double dvx = q->vx - self->vx, dvy = q->vy - self->vy, dot, mag, toi, when;
+    const double qt = q->t, rs = self->radius + q->radius;
+    double t0, dx, dy, dvx = q->vx - self->vx, dvy = q->vy - self->vy, dot, mag, toi, when;
+    /* t0 = the later state time; when it is the predictor's own (most
+     * often: it has just had an impact), its age sp is +0 and its
+     * position x + vx sp is the frame's x0 (the same operation). */
+    if (qt <= self->t) {
+        const double sq = self->t - qt;
+        t0 = self->t;
+        dx = (q->x + q->vx * sq) - self->x0, dy = (q->y + q->vy * sq) - self->y0;
+    } else {
+        const double sp = qt - self->t, sq = qt - qt;
+        t0 = qt;
+        dx = (q->x + q->vx * sq) - (self->x + self->vx * sp), dy = (q->y + q->vy * sq) - (self->y + self->vy * sp);
+    }
     c2d_body a, b;
     if (self->periodic) c2d_w_nearest(self, &dx, &dy);
     dot = dx * dvx + dy * dvy;
@@ -497,6 +508,7 @@ static void c2d_w_self_of(const c2d_world *w, uint32_t i, c2d_w_self *self)
 {
     const c2d_w_disk *p = &w->disk[i];
     self->x = p->x, self->y = p->y, self->vx = p->vx, self->vy = p->vy, self->t = p->t, self->radius = p->radius;
+    self->x0 = p->x + p->vx * 0.0, self->y0 = p->y + p->vy * 0.0;
     self->now = w->now, self->i = i;
     self->width = w->width, self->height = w->height, self->hw = 0.5 * w->width, self->hh = 0.5 * w->height;
     self->nhw = -self->hw, self->nhh = -self->hh;
