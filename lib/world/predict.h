@@ -630,13 +630,27 @@ C2D_W_HOT size_t c2d_w_beyond(size_t c, size_t m, int periodic, int dir, size_t 
     return 1;
 }
 
+/* A cell's first disk j (C2D_W_NONE: empty) added to the candidates'
+ * starts, its state fetched ahead. */
+C2D_W_HOT size_t c2d_w_first(const c2d_w_disk *d, uint32_t *first, size_t n, uint32_t j)
+{
+    if (j == C2D_W_NONE) return n;
+    first[n] = j;
+#ifdef __GNUC__
+    __builtin_prefetch(&d[j]);
+#else
+    (void)d;
+#endif
+    return n + 1;
+}
+
 static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best, c2d_w_best *cross,
                                 uint32_t side)
 {
     const c2d_w_disk *d = w->disk, *p = &d[i];
     const size_t mx = w->mx, my = w->my, cx = p->cell % mx, cy = p->cell / mx;
     const int per = w->periodic;
-    size_t k, l, nc, nr, n = 0, col[3], row[3];
+    size_t k, l, nc, nr, n = 0, col[3] = {0, 0, 0}, row[3]; /* col zeroed: gcc cannot see nc == 3 fills it */
     uint32_t first[9];
     c2d_w_self self;
     {
@@ -660,15 +674,17 @@ static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *
     /* The cells' first disks, loaded (and their states fetched) all at
      * once before any is used: with many disks these are cache misses, and
      * independent ones overlap. */
-    for (l = 0; l < nr; l++)
-        for (k = 0; k < nc; k++) {
-            const uint32_t j = w->head[row[l] * mx + col[k]];
-            if (j == C2D_W_NONE) continue;
-            first[n++] = j;
-#ifdef __GNUC__
-            __builtin_prefetch(&d[j]);
-#endif
+    for (l = 0; l < nr; l++) {
+        const uint32_t *h = &w->head[row[l] * mx];
+        if (nc == 3) { /* unrolled: the common case (no loop per cell) */
+            const uint32_t j0 = h[col[0]], j1 = h[col[1]], j2 = h[col[2]];
+            n = c2d_w_first(d, first, n, j0);
+            n = c2d_w_first(d, first, n, j1);
+            n = c2d_w_first(d, first, n, j2);
+        } else {
+            for (k = 0; k < nc; k++) n = c2d_w_first(d, first, n, h[col[k]]);
         }
+    }
     c2d_w_self_of(w, i, &self);
     if (!w->accel) { /* every pair straight, and no removed disk in a cell */
         for (k = 0; k < n; k++) {
