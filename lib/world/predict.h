@@ -644,7 +644,7 @@ C2D_W_HOT size_t c2d_w_first(const c2d_w_disk *d, uint32_t *first, size_t n, uin
     return n + 1;
 }
 
-static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best, c2d_w_best *cross,
+C2D_W_NO_SLP static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best, c2d_w_best *cross,
                                 uint32_t side)
 {
     const c2d_w_disk *d = w->disk, *p = &d[i];
