@@ -199,10 +199,11 @@
  *   query otherwise; adding a disk larger than all before rebuilds the grid
  *   (O(N)); every round the calendar may be re-filed (O(N), amortised O(1)).
  *   Measured (bench/world.c, periodic gas, e = 1, gcc -O2, x86-64):
- *   N = 1,024 at eta 0.5: 4,212 instructions per collision (callgrind; the
- *   world with a 4-ary heap and the image from the cells, before the
- *   canonical rule: 4,071), at eta 0.2 5,087 (5,482); collisions per CPU
- *   second in bench/world.c's opening comment.
+ *   N = 1,024 at eta 0.5: 3,740 instructions per collision (callgrind;
+ *   4,169 before the straight candidate's time of impact was inlined and
+ *   the cell scan tightened), at eta 0.2 4,642 (5,008); about 84 % of them
+ *   are the predictions (4.7 candidates each, 2.6 predictions per
+ *   collision).  Collisions per CPU second: bench/RESULTS-world.md.
  *
  * CONFIGURATION
  *   C2D_NO_WORLD (when compiling the library): leave the world out.
