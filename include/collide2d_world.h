@@ -217,7 +217,7 @@
  *   broadphase's four, which run on the world's stack; the world's own
  *   depth under c2d_world_advance is about 5 KiB on Cortex-M0 and RV32
  *   (soft double), 4 KiB on Cortex-M7 (docs/SIZES.md, "+ callbacks"), and
- *   its code 20 to 36 KiB beyond the rest of the library (about 80 KiB with
+ *   its code 22 to 41 KiB beyond the rest of the library (about 88 KiB with
  *   the collisions it calls, on Cortex-M0).  The firmware builds with
  *   double (tests/mcu: m0, m7, rv32) include it; the world's hash scenes
  *   (22.5 KiB of world memory) run on m7 and rv32 and give x86-64's bits
