@@ -21,6 +21,8 @@ int bench_smoke(void);
 #define PAIRS_IN_CACHE 4096
 #define BENCH_OLD_REV_TEXT "commit " BENCH_OLD_REV
 #define CALLGRIND_PAIRS 1024
+/* calls per contender in the time of impact's callgrind passes */
+#define TOIA_CALLGRIND_CALLS 1024
 #define MAXK 32
 
 typedef struct options {
@@ -50,6 +52,7 @@ typedef struct results {
     rough_stats rough[RK_COUNT][2]; /* plain, extreme */
     toi_stats toi[TK_COUNT][2][2];  /* [contender][double, float][ordinary, extreme] */
     toia_stats toia[TA_COUNT];      /* time of impact under acceleration */
+    toia_stats toia_touch[TA_COUNT]; /* the same on touching pool balls */
     site_sizes sizes;
 } results;
 
@@ -127,6 +130,19 @@ static double ir_of(const ratios *r, const rstat *s, int scalar)
     return (v - (scalar ? base : 0)) / s->n;
 }
 
+/* Instructions per call of a time-of-impact callgrind pass (toi_accel.c
+ * toia_callgrind), less the loop's; -1 when unknown. */
+static double toia_ir(const char *set, const char *who)
+{
+    char key[64];
+    double v, base;
+    snprintf(key, sizeof key, "toia/%s/%s", set, who);
+    v = ir_get(key);
+    snprintf(key, sizeof key, "toia/%s/noop", set);
+    base = ir_get(key);
+    return v < 0 || base < 0 ? -1 : (v - base) / TOIA_CALLGRIND_CALLS;
+}
+
 /* bench/callsite.o's function sizes (nm -S --defined-only). */
 static void read_sizes(const char *path, site_sizes *z)
 {
@@ -202,7 +218,8 @@ static void measure_toi(const options *o, results *res)
 /* Cases per family: the plain set's size spread over the 14 families. */
 static void measure_toi_accel(const options *o, results *res)
 {
-    toia_measure(o->n_plain / 20 > 50 ? o->n_plain / 20 : 50, o->rounds / 4 > 11 ? o->rounds / 4 : 11, res->toia);
+    toia_measure(o->n_plain / 20 > 50 ? o->n_plain / 20 : 50, o->rounds / 4 > 11 ? o->rounds / 4 : 11, res->toia,
+                 res->toia_touch);
 }
 
 static void measure_rough(const options *o, results *res)
@@ -228,6 +245,7 @@ static int run_callgrind_driver(void)
         static ratios r;
         ratios_measure(&r, 1, PAIRS_IN_CACHE, 1);
     }
+    toia_callgrind(TOIA_CALLGRIND_CALLS);
     bench_box2d_fini();
     return 0;
 }
@@ -273,7 +291,17 @@ static void machine(FILE *f, const options *o)
     fprintf(f, "Machine: %s, %d logical CPUs. Compiler: gcc %s. Library and bench built with `%s`",
             model, cpus, __VERSION__, o->flags ? o->flags : "(flags not given)");
     fprintf(f, " (the flags a user gets from `make`; with `-march=native` the library's TwoProduct "
-               "uses FMA, results are bit-identical).\n\n");
+               "uses FMA, results are bit-identical).");
+    ci = fopen("/proc/loadavg", "r");
+    if (ci) {
+        double l1, l5, l15;
+        if (fscanf(ci, "%lf %lf %lf", &l1, &l5, &l15) == 3)
+            fprintf(f, " Load average when the report was written (1, 5, 15 min): %.2f, %.2f, %.2f; the timed "
+                       "figures are medians of the quiet rounds, the instruction counts do not depend on the load.",
+                    l1, l5, l15);
+        fclose(ci);
+    }
+    fprintf(f, "\n\n");
 }
 
 static void accuracy_table(FILE *f, const results *res, const options *o)
@@ -641,6 +669,43 @@ static void why(FILE *f, const results *res)
                 tx[1].ratio, instr(ir_of(r, &tx[1], 1), b[0]), instr(ir_of(r, &tx[0], 1), b[1]),
                 res->toi[TK_OLD][0][1].wrong_status, res->toi[TK_OLD][0][1].n);
     }
+    fprintf(f, "- Unit-distance pairs (`c2d_collide` %.2fx the seed, %s instructions against %s): centres 1 apart "
+               "anywhere in [-2, 2]^2, so in about one pair in nine (460 of 4096) a component of d = b - a is small "
+               "against the positions it is taken from and its rounding would break the error bound: those pairs "
+               "take the double-length d (`c2d_quick_cancelling`, `c2d_cancelling_fused`: 270 instructions each, "
+               "24%% of the set's instructions). The input checks (NULL, restitution, masses, finiteness) are 9%% "
+               "and the axis test 8%%; the seed has none of them and is wrong by its own rounding on those pairs.\n",
+            r->i22_unit[0][1].ratio, instr(ir_of(r, &r->i22_unit[0][1], 1), b[0]),
+            instr(ir_of(r, &r->i22_unit[0][0], 1), b[1]));
+    fprintf(f, "- Gas pairs in float (`c2d_collidef` %.2fx the bare formula, double %.2fx): the same %s instructions "
+               "as in double (unit disks in a box 100 wide: 382 of 4096 pairs, 9.3%%, cancel in d and take the "
+               "double-length tier, 21%% of the instructions), while the bare formula's division and square root "
+               "are cheaper in float than in double: the instruction ratio is the same, the time ratio grows.\n",
+            r->i22_mix[1][1][I22_LIB].ratio, r->i22_mix[1][0][I22_LIB].ratio,
+            instr(ir_of(r, &r->i22_mix[1][1][I22_LIB], 1), b[0]));
+    fprintf(f, "- The batch on the gas (%s the scalar loop in double): its vector kernel executes about 36 "
+               "instructions a pair, but the 9.3%% of pairs whose d cancels leave it for the whole scalar call "
+               "(253 instructions each, 29%% of the batch's instructions, and a branch per lane); on the random mix "
+               "22%% cancel. The goal needs those pairs resolved in a second vector pass.\n",
+            gain(&r->i22_batch[0][0][1], b[0]));
+    {
+        const double bil = toia_ir("billiards", "lib"), fer = toia_ir("billiards", "ferrari");
+        const double tch = toia_ir("touching", "lib"), pt = toia_ir("touching", "plain");
+        fprintf(f, "- The time of impact under acceleration on the billiards family (%s instructions against "
+                   "Ferrari's %s): Ferrari's closed form takes the quartic's rounded coefficients and is wrong on "
+                   "%ld of %ld statuses (table below); the library splits each input vector into exact parts "
+                   "(`c2d_toia_load_vec`, 15%%), scans the quartic with certified hulls and bounds "
+                   "(`c2d_toia_fast`, 45%%, of which the hull test 12%%), and polishes the root with a bracketed "
+                   "Newton step (9%%). On touching pool balls (%s instructions): the distance is R to rounding at "
+                   "t = 0, so every filter sees a tie and the exact scan runs (`c2d_toia_scan` 80%%: the split "
+                   "search, the exact value at the distance's minimum, the extended-precision root); the plain "
+                   "time of impact on the same pairs (%s) takes the discriminant's exact expansion when the gap's "
+                   "exact sign is positive (`c2d_toi_touching`, 93%%: `c2d_toi_mvalue` 34%%, `c2d_grow` 33%%). A "
+                   "cheaper exact sign for a gap of a few ulps (a double-length discriminant with a proven error "
+                   "bound before the expansions) is the next step for both.\n",
+                instr(bil, b[0]), instr(fer, b[1]), res->toia[TA_FERRARI].wrong, res->toia[TA_FERRARI].n,
+                instr(tch, b[2]), instr(pt, b[3]));
+    }
     fprintf(f, "- Rough disks: `c2d_rough_tangential` is nearly 90%% of `c2d_collide_rough`'s %s instructions "
                "(Walton plainly: %s): the slip speed in double length with an extended exponent runs on every call, "
                "with no plain-arithmetic path in front of it for the contacts that do not need it.\n\n",
@@ -819,6 +884,10 @@ static void rough_table(FILE *f, const results *res, const options *o)
                "wrong.\n\n");
 }
 
+/* The contenders' names in the callgrind dumps (toia_callgrind); the
+ * Sturm solver is not counted. */
+static const char *const kToiaWho[TA_COUNT] = {"lib", "libf", "ferrari", "sturm"};
+
 static void toi_accel_table(FILE *f, const results *res)
 {
     static const char *const name[TA_COUNT] = {"c2d_time_of_impact_accel (double)", "c2d_time_of_impact_accelf (float)",
@@ -839,16 +908,54 @@ static void toi_accel_table(FILE *f, const results *res)
                "per call over interleaved rounds, on the billiards family and on all families mixed.\n\n",
             lib->n, lib->band);
     fprintf(f, "| contender | wrong status | in-band disagreements | NaN/Inf t | worst units | > %g units | ns billiards "
-               "| ns all families |\n|---|---:|---:|---:|---:|---:|---:|---:|\n", TOIA_BEYOND_UNITS);
+               "| ns all families | instr billiards |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+            TOIA_BEYOND_UNITS);
     for (k = 0; k < TA_COUNT; k++) {
         const toia_stats *s = &res->toia[k];
-        fprintf(f, "| %s | %ld / %ld | %ld | %ld | %s | %ld | %.1f | %.1f |\n", name[k], s->wrong, s->n, s->band_wrong,
-                s->nan_inf, fmt(s->worst, b[0]), s->beyond, s->ns[TA_BILLIARDS], s->ns[TA_ALL]);
+        fprintf(f, "| %s | %ld / %ld | %ld | %ld | %s | %ld | %.1f | %.1f | %s |\n", name[k], s->wrong, s->n,
+                s->band_wrong, s->nan_inf, fmt(s->worst, b[0]), s->beyond, s->ns[TA_BILLIARDS], s->ns[TA_ALL],
+                instr(toia_ir("billiards", kToiaWho[k]), b[1]));
+    }
+    fprintf(f, "\n*Touching pool balls* (%ld cases, `toia_gen_touching`: centres 2R apart to rounding, one pushed "
+               "within 2 rad of the line of centres at 0.01-8 m/s, the other at rest or moving, cloth decelerations; "
+               "issue 22's goal of at most 2,500 instructions a call), the same referee:\n\n"
+               "| contender | wrong status | in-band disagreements | worst units | ns | instr |\n"
+               "|---|---:|---:|---:|---:|---:|\n", res->toia_touch[TA_LIB].n);
+    for (k = 0; k < TA_COUNT; k++) {
+        const toia_stats *s = &res->toia_touch[k];
+        fprintf(f, "| %s | %ld / %ld | %ld | %s | %.1f | %s |\n", name[k], s->wrong, s->n, s->band_wrong,
+                fmt(s->worst, b[0]), res->toia[k].ns[TA_TOUCHING], instr(toia_ir("touching", kToiaWho[k]), b[1]));
     }
     fprintf(f, "\nThe textbook solvers' errors and statuses come from forming the quartic's coefficients in double "
                "(cancellation in |d|^2 - R^2 near contact, and in c2 when the motion is nearly collinear) and from "
                "their epsilons; the library decides the status with certified error bounds and falls back to exact "
                "arithmetic near a tie.\n\n");
+}
+
+/* Issue 22's time-of-impact goals, in instructions (callgrind): under
+ * acceleration at most 3x Ferrari's on the billiards family and at most
+ * 2,500 on touching pool balls; the plain one on those touching balls at
+ * most 3x its own on ordinary pairs (the timed set above). */
+static void toi_goals(FILE *f, const results *res)
+{
+    const ratios *r = &res->rat;
+    char b[4][64];
+    int p;
+    for (p = 0; p < 2; p++) {
+        const char *lib = p ? "libf" : "lib";
+        const double bil = toia_ir("billiards", lib), fer = toia_ir("billiards", "ferrari");
+        const double tch = toia_ir("touching", lib), ord = ir_of(r, &r->toi[p][1], 1);
+        const double pt = toia_ir("touching", p ? "plainf" : "plain");
+        fprintf(f, "| `%s` <= 3x Ferrari's instructions on the billiards family | %s against %s (%.2fx) | %s |\n",
+                p ? "c2d_time_of_impact_accelf" : "c2d_time_of_impact_accel", instr(bil, b[0]), instr(fer, b[1]),
+                bil > 0 && fer > 0 ? bil / fer : 0.0, verdict(bil > 0 && fer > 0 && bil <= 3 * fer));
+        fprintf(f, "| `%s` <= 2,500 instructions on touching pool balls | %s | %s |\n",
+                p ? "c2d_time_of_impact_accelf" : "c2d_time_of_impact_accel", instr(tch, b[0]),
+                verdict(tch > 0 && tch <= 2500));
+        fprintf(f, "| `%s` on touching pool balls <= 3x its instructions on ordinary pairs | %s against %s (%.2fx) | "
+                   "%s |\n", p ? "c2d_time_of_impactf" : "c2d_time_of_impact", instr(pt, b[0]), instr(ord, b[1]),
+                pt > 0 && ord > 0 ? pt / ord : 0.0, verdict(pt > 0 && ord > 0 && pt <= 3 * ord));
+    }
 }
 
 /* Issue 22's goals on its own mixes (bench/ratio.c gen_unit, gen_break,
@@ -909,6 +1016,7 @@ static void issue22(FILE *f, const results *res)
                     p ? "c2d_collide_batchf" : "c2d_collide_batch", bset[m], gain(&g[1], b[0]), vs_bare, g[1].ns,
                     g[2].ns, verdict(1 / g[1].ratio >= 2 && vs_bare >= 1));
         }
+    toi_goals(f, res);
     fprintf(f, "\n");
 }
 

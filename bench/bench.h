@@ -200,14 +200,23 @@ double bench_now_ns(void);
  * (bench/quartic.c) on the unit test's families (referee/cases_toi_accel.c)
  * against the exact referee (referee/ref_toi_accel.c). */
 enum { TA_LIB, TA_LIBF, TA_FERRARI, TA_STURM, TA_COUNT };
-enum { TA_BILLIARDS, TA_ALL, TA_SETS };       /* timed sets: the billiards family, every family */
+/* timed sets: the billiards family, every family, touching pool balls
+ * (cases_toi_accel.h toia_gen_touching, not one of the families) */
+enum { TA_BILLIARDS, TA_ALL, TA_TOUCHING, TA_SETS };
 typedef struct toia_stats {
     long n, band, wrong, band_wrong, beyond, evaluated, nan_inf;
     double worst;        /* units (ulp(t) + ulp(|d|)/s) outside the band */
     double ns[TA_SETS];  /* median ns per call over interleaved rounds */
 } toia_stats;
 #define TOIA_BEYOND_UNITS 4.0
-/* n cases per family; rounds of interleaved timing. */
-void toia_measure(int n_per_family, int rounds, toia_stats out[TA_COUNT]);
+/* n cases per family; rounds of interleaved timing.  out: the families;
+ * touch: the touching set (n cases), decided by the same referee. */
+void toia_measure(int n_per_family, int rounds, toia_stats out[TA_COUNT], toia_stats touch[TA_COUNT]);
+/* Under callgrind: one pass of n calls per contender on the billiards
+ * family and on the touching set, each between client requests named
+ * "toia/<set>/<contender>" (contenders lib, libf, ferrari; on the touching
+ * set also plain and plainf, c2d_time_of_impact(f) on the same positions
+ * and velocities; noop, the loop alone). */
+void toia_callgrind(int n);
 
 #endif

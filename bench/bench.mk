@@ -128,7 +128,8 @@ TEST_TARGETS += test-bench
 # ------------------------------------------------------------------ sphere
 # Pool balls as spheres (bench/sphere.c): accuracy of the library and of a
 # plain transcription against the MPFR referee, and instructions per call
-# of each under callgrind (printed; the figures are quoted in
+# of each under callgrind, and of the float variant and the cushion in both
+# formats (printed; the figures are quoted in
 # bench/RESULTS-sphere.md, the README and docs/API.md).
 .PHONY: bench-sphere
 BENCH_SPHERE_N := 100000
@@ -138,7 +139,8 @@ $(BENCH_DIR)/sphere: bench/sphere.c referee/cases_sphere.c referee/cases.c refer
 
 bench-sphere: $(BENCH_DIR)/sphere
 	$(BENCH_DIR)/sphere accuracy $(BENCH_SPHERE_N)
-	@for w in lib:c2d_collide_balls plain:sphere_plain; do f=$${w#*:}; w=$${w%%:*}; \
+	@for w in lib:c2d_collide_balls plain:sphere_plain libf:c2d_collide_ballsf cushion:c2d_collide_cushion \
+	  cushionf:c2d_collide_cushionf; do f=$${w#*:}; w=$${w%%:*}; \
 	  valgrind --tool=callgrind --callgrind-out-file=$(BENCH_DIR)/sphere.$$w.cg --toggle-collect=$$f \
 	    $(BENCH_DIR)/sphere $$w $(BENCH_SPHERE_N) >/dev/null 2>&1 || exit 1; \
 	  ir=$$(sed -n 's/^summary: //p' $(BENCH_DIR)/sphere.$$w.cg); \

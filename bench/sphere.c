@@ -10,10 +10,13 @@
  *                          mu(v), half each) for instruction counts:
  *                          make bench-sphere runs both under callgrind with
  *                          --toggle-collect on the call and prints Ir/call.
+ *   sphere libf N          the same pairs rounded to float, c2d_collide_ballsf
+ *   sphere cushion|cushionf N   N rail impacts (gen_cushion), either format
  *
- * Measured (x86-64, gcc 12.2 -O2, 2026-12-02, N = 100,000; docs/API.md):
+ * Measured (x86-64, gcc 12.2 -O2, 2026-12-03, N = 100,000; docs/API.md):
  * accuracy worst 4.87 ulp (library) and 6.31 (plain), median 0.40 both;
- * 716 instructions per call against 248: 2.89x.  Printed, not asserted. */
+ * 688 instructions per call against 248: 2.77x (float 1,307; the cushion
+ * 424, float 937).  Printed, not asserted. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -63,6 +66,72 @@ static void make_pairs(pair *p, int n)
         ball_of(&p[i].a, &c.a), ball_of(&p[i].b, &c.b);
         p[i].s = ball_surface_of(&c);
     }
+}
+
+/* The float variant on the same pairs (rounded to float, ref_to_float) and
+ * the cushion (gen_cushion's rails) in both formats: printed, no plain
+ * counterpart (issue 21's target is for c2d_collide_balls). */
+typedef struct pairf { c2d_ballf a, b; c2d_ball_surfacef s; } pairf;
+typedef struct rail { c2d_ball a; c2d_cushion c; } rail;
+typedef struct railf { c2d_ballf a; c2d_cushionf c; } railf;
+
+static unsigned resolve_float(int n)
+{
+    pairf *p = malloc((size_t)n * sizeof *p);
+    unsigned ok = 0;
+    c2d_rng r;
+    int i;
+    if (p == NULL) return 0;
+    r.s = 81;
+    for (i = 0; i < n; i++) {
+        ref_balls_case c;
+        gen_pool_balls(&r, &c);
+        balls_case_to_float(&c);
+        ballf_of(&p[i].a, &c.a), ballf_of(&p[i].b, &c.b);
+        p[i].s.restitution = (float)c.e, p[i].s.friction = (float)c.mu;
+        p[i].s.friction_boost = (float)c.boost, p[i].s.friction_decay = (float)c.decay;
+    }
+    for (i = 0; i < n; i++) {
+        c2d_ballf a = p[i].a, b = p[i].b;
+        ok += c2d_collide_ballsf(&a, &b, p[i].s) == C2D_OK;
+    }
+    free(p);
+    return ok;
+}
+
+static unsigned resolve_cushion(int n, int single)
+{
+    rail *p = single ? NULL : malloc((size_t)n * sizeof *p);
+    railf *q = single ? malloc((size_t)n * sizeof *q) : NULL;
+    unsigned ok = 0;
+    c2d_rng r;
+    int i;
+    if (p == NULL && q == NULL) return 0;
+    r.s = 83;
+    for (i = 0; i < n; i++) {
+        ref_cushion_case c;
+        gen_cushion(&r, &c);
+        if (single) {
+            cushion_case_to_float(&c);
+            ballf_of(&q[i].a, &c.a);
+            q[i].c.normal.x = (float)c.n[0], q[i].c.normal.y = (float)c.n[1], q[i].c.height = (float)c.h;
+            q[i].c.restitution = (float)c.e, q[i].c.friction = (float)c.mu;
+        } else {
+            ball_of(&p[i].a, &c.a);
+            p[i].c = cushion_of(&c);
+        }
+    }
+    for (i = 0; i < n; i++) {
+        if (single) {
+            c2d_ballf a = q[i].a;
+            ok += c2d_collide_cushionf(&a, q[i].c) == C2D_OK;
+        } else {
+            c2d_ball a = p[i].a;
+            ok += c2d_collide_cushion(&a, p[i].c) == C2D_OK;
+        }
+    }
+    free(p), free(q);
+    return ok;
 }
 
 typedef c2d_status (*resolver)(c2d_ball *, c2d_ball *, c2d_ball_surface);
@@ -128,13 +197,19 @@ int main(int argc, char **argv)
     pair *p;
     unsigned ok;
     if (argc != 3 || (n = atoi(argv[2])) <= 0 ||
-        (strcmp(argv[1], "lib") && strcmp(argv[1], "plain") && strcmp(argv[1], "accuracy"))) {
-        fprintf(stderr, "usage: sphere accuracy|lib|plain N (N > 0)\n");
+        (strcmp(argv[1], "lib") && strcmp(argv[1], "plain") && strcmp(argv[1], "accuracy") &&
+         strcmp(argv[1], "libf") && strcmp(argv[1], "cushion") && strcmp(argv[1], "cushionf"))) {
+        fprintf(stderr, "usage: sphere accuracy|lib|plain|libf|cushion|cushionf N (N > 0)\n");
         return 2;
     }
     if (!strcmp(argv[1], "accuracy")) {
         accuracy(n);
         return 0;
+    }
+    if (!strcmp(argv[1], "libf") || !strcmp(argv[1], "cushion") || !strcmp(argv[1], "cushionf")) {
+        ok = !strcmp(argv[1], "libf") ? resolve_float(n) : resolve_cushion(n, !strcmp(argv[1], "cushionf"));
+        printf("%s: %u of %d impacts\n", argv[1], ok, n);
+        return ok > 0 ? 0 : 1;
     }
     p = malloc((size_t)n * sizeof *p);
     if (p == NULL) return 1;

@@ -22,11 +22,13 @@
 #include "bench.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
 #include "approaches.h"
+#include "callgrind.h"
 #include "cases_toi_accel.h"
 
 /* One case as every contender takes it (the float library reads the float
@@ -67,6 +69,26 @@ static c2d_status solve_sturm(const toia_call *c, double *t)
 
 static const toia_solver kSolver[TA_COUNT] = {solve_lib, solve_libf, solve_ferrari, solve_sturm};
 
+/* The plain time of impact on the same positions and velocities (the
+ * accelerations ignored), and the loop alone, for the instruction counts. */
+static c2d_status solve_plain(const toia_call *c, double *t) { return c2d_time_of_impact(&c->a, &c->b, c->r, t); }
+
+static c2d_status solve_plainf(const toia_call *c, double *t)
+{
+    c2d_bodyf a = {{(float)c->a.pos.x, (float)c->a.pos.y}, {(float)c->a.vel.x, (float)c->a.vel.y}, 1};
+    c2d_bodyf b = {{(float)c->b.pos.x, (float)c->b.pos.y}, {(float)c->b.vel.x, (float)c->b.vel.y}, 1};
+    float tf = -1;
+    c2d_status s = c2d_time_of_impactf(&a, &b, (float)c->r, &tf);
+    *t = tf;
+    return s;
+}
+
+static c2d_status solve_noop(const toia_call *c, double *t)
+{
+    *t = c->r;
+    return C2D_OK;
+}
+
 static toia_call to_call(const ref_toia_in *in)
 {
     toia_call c;
@@ -98,15 +120,16 @@ static void tally(toia_stats *s, c2d_status got, double t, const ref_toia_out *o
 /* Generate family f's cases for a format, decide each with the referee and
  * tally the contenders that run in that format; the calls are kept for the
  * timing. */
-static void evaluate_family(int f, int is_float, int n, toia_call *keep, toia_stats out[TA_COUNT], ref_toia_out *o)
+static void evaluate_family(const family *fam, unsigned long long seed, int is_float, int n, toia_call *keep,
+                            toia_stats out[TA_COUNT], ref_toia_out *o)
 {
     c2d_rng r;
     int i, k;
-    r.s = 424242u + (unsigned)f * 7919u + (unsigned)is_float;
+    r.s = seed + (unsigned)is_float;
     for (i = 0; i < n; i++) {
         ref_toia_in in;
         int band;
-        toia_families[f].gen(&r, is_float ? 24 : 53, &in);
+        fam->gen(&r, is_float ? 24 : 53, &in);
         if (is_float) toia_case_to_float(&in);
         ref_toia(&in, is_float ? 24 : 53, is_float ? -126 : -1022, o);
         band = toia_in_band(o, is_float, &in);
@@ -155,20 +178,35 @@ static void time_set(toia_call *const calls[2], long n, int rounds, int set, toi
     free(ns);
 }
 
-void toia_measure(int n_per_family, int rounds, toia_stats out[TA_COUNT])
+static int billiards_family(void)
+{
+    int f;
+    for (f = 0; f < toia_n_families; f++)
+        if (strcmp(toia_families[f].name, "billiards") == 0) return f;
+    return 0;
+}
+
+static const family kTouching = {"touching", toia_gen_touching};
+
+void toia_measure(int n_per_family, int rounds, toia_stats out[TA_COUNT], toia_stats touch[TA_COUNT])
 {
     const long total = (long)n_per_family * toia_n_families;
-    toia_call *calls[2];
+    const int billiards = billiards_family();
+    toia_call *calls[2], *touching[2];
     ref_toia_out o;
-    int f, p, billiards = 0;
+    int f, p;
     memset(out, 0, TA_COUNT * sizeof *out);
-    calls[0] = malloc((size_t)total * sizeof *calls[0]);
-    calls[1] = malloc((size_t)total * sizeof *calls[1]);
-    ref_toia_init(&o);
-    for (f = 0; f < toia_n_families; f++) {
-        if (strcmp(toia_families[f].name, "billiards") == 0) billiards = f;
-        for (p = 0; p < 2; p++) evaluate_family(f, p, n_per_family, calls[p] + (long)f * n_per_family, out, &o);
+    memset(touch, 0, TA_COUNT * sizeof *touch);
+    for (p = 0; p < 2; p++) {
+        calls[p] = malloc((size_t)total * sizeof *calls[p]);
+        touching[p] = malloc((size_t)n_per_family * sizeof *touching[p]);
     }
+    ref_toia_init(&o);
+    for (f = 0; f < toia_n_families; f++)
+        for (p = 0; p < 2; p++)
+            evaluate_family(&toia_families[f], 424242u + (unsigned)f * 7919u, p, n_per_family,
+                            calls[p] + (long)f * n_per_family, out, &o);
+    for (p = 0; p < 2; p++) evaluate_family(&kTouching, 525252u, p, n_per_family, touching[p], touch, &o);
     ref_toia_clear(&o);
     {
         toia_call *bil[2];
@@ -176,6 +214,50 @@ void toia_measure(int n_per_family, int rounds, toia_stats out[TA_COUNT])
         time_set(bil, n_per_family, rounds, TA_BILLIARDS, out);
     }
     time_set(calls, total, rounds, TA_ALL, out);
-    free(calls[0]);
-    free(calls[1]);
+    time_set(touching, n_per_family, rounds, TA_TOUCHING, out);
+    for (p = 0; p < 2; p++) free(calls[p]), free(touching[p]);
+}
+
+/* One dumped pass: the counts between the client requests are the pass's. */
+static void callgrind_pass(const char *set, const char *who, toia_solver solve, const toia_call *c, long n)
+{
+    char name[64];
+    snprintf(name, sizeof name, "toia/%s/%s", set, who);
+    CALLGRIND_ZERO_STATS;
+    (void)pass_ns(solve, c, n);
+    CALLGRIND_DUMP_STATS_AT(name);
+}
+
+static void make_calls(const family *fam, unsigned long long seed, int is_float, int n, toia_call *c)
+{
+    c2d_rng r;
+    int i;
+    r.s = seed + (unsigned)is_float;
+    for (i = 0; i < n; i++) {
+        ref_toia_in in;
+        fam->gen(&r, is_float ? 24 : 53, &in);
+        if (is_float) toia_case_to_float(&in);
+        c[i] = to_call(&in);
+    }
+}
+
+void toia_callgrind(int n)
+{
+    const family *sets[2] = {&toia_families[billiards_family()], &kTouching};
+    static const char *const set_name[2] = {"billiards", "touching"};
+    toia_call *c[2];
+    int s, p;
+    for (p = 0; p < 2; p++) c[p] = malloc((size_t)n * sizeof *c[p]);
+    for (s = 0; s < 2; s++) {
+        for (p = 0; p < 2; p++) make_calls(sets[s], 626262u + 2u * (unsigned)s, p, n, c[p]);
+        callgrind_pass(set_name[s], "noop", solve_noop, c[0], n);
+        callgrind_pass(set_name[s], "lib", solve_lib, c[0], n);
+        callgrind_pass(set_name[s], "libf", solve_libf, c[1], n);
+        callgrind_pass(set_name[s], "ferrari", solve_ferrari, c[0], n);
+        if (s == 1) {
+            callgrind_pass(set_name[s], "plain", solve_plain, c[0], n);
+            callgrind_pass(set_name[s], "plainf", solve_plainf, c[1], n);
+        }
+    }
+    for (p = 0; p < 2; p++) free(c[p]);
 }

@@ -67,7 +67,30 @@
  *   the crossing's 3-cell scan it replaces.  Also dropped: skipping the
  *   nearest image for cells far from the periodic sides (+79 per collision).
  * At N = 100,489 two thirds of the time were cache misses on the
- * neighbours' states and the cells' heads (perf), before the prefetch. */
+ * neighbours' states and the cells' heads (perf), before the prefetch.
+ * Branch w-world (issue 20's instruction target, the same events and hashes):
+ *   4,169  main at 7ac35fa (eta 0.2: 5,008)
+ *   3,961  a straight candidate's time of impact by c2d_time_of_impact's
+ *          plain path inlined in the relative frame (the same operations:
+ *          no call, checks, bodies or negation; the library's call where it
+ *          would not decide)
+ *   3,894  its window tested first as all inputs nonzero
+ *   3,869  a candidate older than the predictor (nine in ten) takes the
+ *          predictor's position at age +0 from the frame
+ *   3,828  the cells' first disks gathered three to a row, no loop per cell
+ *   3,740  the cell scan without gcc's SLP vectoriser (eta 0.2: 4,642)
+ *   tried and dropped: c2d_w_self_of or c2d_w_body_at always inlined (+46,
+ *   -2), an event staying in the window moved in place (+26), days of 1 or
+ *   4 events (-2, +14), the queue's insert and remove inlined (-16 for more
+ *   code), the SLP vectoriser off for the whole world (-33).
+ *   Where it goes now: 84 % predictions (2.6 per collision: the two disks
+ *   of the impact, stale events, crossings; 4.7 candidates each, about 60
+ *   instructions per candidate test, 120 per inlined time of impact, 470 of
+ *   fixed cost per prediction with its queue update).  Smallenburg's
+ *   structure (neighbour lists with "left my shell" events) would change
+ *   which events occur: the world hash mixes stats.events (crossings and
+ *   stale events count) and c2d_world_bytes, so it cannot be had with the
+ *   same hashes; the 1,300 target needs that decision. */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdint.h>

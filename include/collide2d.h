@@ -48,6 +48,9 @@
  *                  AVX-512 versions and the FMA double-double tier; same bits
  *                  either way).  Implied under ThreadSanitizer, which cannot
  *                  run the loader's choice (an ifunc resolver) before main.
+ *   C2D_SMALL      [1 under -Os/-Oz, else 0]  code size before speed: one copy
+ *                  of each collision tier (no separate accept test before the
+ *                  fast path, no batch kernel); the same bits either way.
  *   C2D_ALLOW_FAST_MATH [undefined]  build the library even under -ffast-math
  *                  or -ffinite-math-only, which otherwise stop its build with
  *                  an #error.  At your own risk: those flags let the compiler
@@ -360,12 +363,13 @@ typedef struct c2d_ball_surface { double restitution, friction, friction_boost, 
  *                otherwise): a light ball brushed by a much faster one
  *                gets an error of the fast one's scale.
  *   cost         c2d_collide's plus ~100 floating-point operations (exp
- *                adds ~40 when friction_boost != 0) and a range test of
- *                the inputs, exact products for a glancing normal speed
- *                only, double length where a step over- or underflows:
- *                1,132 instructions per pool pair against 248 for a plain
- *                transcription (make bench-sphere; 833 before the range
- *                test, in the same build). */
+ *                adds ~40 when friction_boost != 0) and a branch-free
+ *                range test of the inputs, exact products for a glancing
+ *                normal speed only, double length where a step over- or
+ *                underflows: 688 instructions per pool pair against 248
+ *                for a plain transcription, 2.8x (make bench-sphere; the
+ *                float twin 1,307: float's window, 2^+-7, holds no pool
+ *                ball's inertia, so its checks run). */
 c2d_status c2d_collide_balls(c2d_ball *a, c2d_ball *b, c2d_ball_surface s);
 
 /* A cushion (rail): normal = any finite non-zero horizontal vector from the
@@ -407,7 +411,8 @@ typedef struct c2d_cushion { c2d_vec2 normal; double height, restitution, fricti
  *                exponent; a subnormal exact spin as for two balls).
  *   cost         ~70 floating-point operations, two square roots, a range
  *                test of the inputs; double length where a step over- or
- *                underflows. */
+ *                underflows: 424 instructions per pool rail impact (make
+ *                bench-sphere; the float twin 937). */
 c2d_status c2d_collide_cushion(c2d_ball *ball, c2d_cushion c);
 #endif
 

@@ -199,10 +199,11 @@
  *   query otherwise; adding a disk larger than all before rebuilds the grid
  *   (O(N)); every round the calendar may be re-filed (O(N), amortised O(1)).
  *   Measured (bench/world.c, periodic gas, e = 1, gcc -O2, x86-64):
- *   N = 1,024 at eta 0.5: 4,212 instructions per collision (callgrind; the
- *   world with a 4-ary heap and the image from the cells, before the
- *   canonical rule: 4,071), at eta 0.2 5,087 (5,482); collisions per CPU
- *   second in bench/world.c's opening comment.
+ *   N = 1,024 at eta 0.5: 3,740 instructions per collision (callgrind;
+ *   4,169 before the straight candidate's time of impact was inlined and
+ *   the cell scan tightened), at eta 0.2 4,642 (5,008); about 84 % of them
+ *   are the predictions (4.7 candidates each, 2.6 predictions per
+ *   collision).  Collisions per CPU second: bench/RESULTS-world.md.
  *
  * CONFIGURATION
  *   C2D_NO_WORLD (when compiling the library): leave the world out.
@@ -216,7 +217,7 @@
  *   broadphase's four, which run on the world's stack; the world's own
  *   depth under c2d_world_advance is about 5 KiB on Cortex-M0 and RV32
  *   (soft double), 4 KiB on Cortex-M7 (docs/SIZES.md, "+ callbacks"), and
- *   its code 20 to 36 KiB beyond the rest of the library (about 80 KiB with
+ *   its code 22 to 41 KiB beyond the rest of the library (about 88 KiB with
  *   the collisions it calls, on Cortex-M0).  The firmware builds with
  *   double (tests/mcu: m0, m7, rv32) include it; the world's hash scenes
  *   (22.5 KiB of world memory) run on m7 and rv32 and give x86-64's bits

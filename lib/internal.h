@@ -40,11 +40,30 @@ float sqrtf(float x);
 #endif
 #endif
 
+/* C2D_SMALL: code size before speed, on by default where the compiler
+ * optimises for size (-Os, -Oz: gcc's and clang's __OPTIMIZE_SIZE__), 0 or 1
+ * to choose.  The same bits either way: it only drops routes that repeat
+ * another's arithmetic (real/collide/collide.h: the front end's accept test
+ * before the fast path that gives the same answer, tier 2's copy without the
+ * window checks) and lets the compiler decide what to inline (C2D_HOT), so a
+ * firmware linking c2d_collidef carries each tier once (docs/SIZES.md). */
+#ifndef C2D_SMALL
+#ifdef __OPTIMIZE_SIZE__
+#define C2D_SMALL 1
+#else
+#define C2D_SMALL 0
+#endif
+#endif
+
 /* The fast path must inline into each caller: called, it passes a dozen
  * floating values, more than the registers hold, and costs a third of the
- * work.  The cold tiers stay out of line so the fast path keeps no frame. */
-#ifdef __GNUC__
+ * work.  The cold tiers stay out of line so the fast path keeps no frame.
+ * Optimising for size (C2D_SMALL), the compiler chooses. */
+#if defined(__GNUC__) && !C2D_SMALL
 #define C2D_HOT static inline __attribute__((always_inline))
+#define C2D_COLD static __attribute__((noinline))
+#elif defined(__GNUC__)
+#define C2D_HOT static inline
 #define C2D_COLD static __attribute__((noinline))
 #else
 #define C2D_HOT static inline

@@ -37,6 +37,10 @@ typedef struct family {
 extern const family toia_families[];
 extern const int toia_n_families;
 
+/* Pool balls touching to rounding, a pushed into b or sliding along it,
+ * cloth decelerations (the benchmark's touching set; not in the families). */
+void toia_gen_touching(c2d_rng *r, int prec, ref_toia_in *in);
+
 /* a graze construction: the distance is stationary at tc with value exactly
  * R (1 + delta) (a minimum if want_min, else a maximum); big: far along the
  * path (delta >= 2^-(MANT-2) then) */

@@ -34,9 +34,10 @@ const char kUsage[] =
     "                              scenes: Box2D's b2DynamicTree (default) or the\n"
     "                              world's own cells (the same events, bit for bit)\n"
     "  --headless                  no window (automatic without a display)\n"
-    "  --game practice|8ball       practice: clear the table (the window's default);\n"
-    "                              8ball: two players, WPA-style rules\n"
-    "  --players A,B               8ball: each human or computer (window default\n"
+    "  --game practice|8ball|9ball practice: clear the table (the window's default);\n"
+    "                              8ball, 9ball: two players, WPA-style rules\n"
+    "                              (9ball: O declares a push-out, B passes it back)\n"
+    "  --players A,B               8ball, 9ball: each human or computer (window default\n"
     "                              human,computer; headless: computer,computer only)\n"
     "  --model sphere|sphere-alciatore|disk  the pool scenes' impacts: balls as\n"
     "                              spheres with 3-D spin, cushions 0.64 D high (default);\n"
@@ -206,15 +207,16 @@ std::string path_value(const std::string &flag, const std::string &v) {
 // 8-ball plays from the rack of the break scene, its shots chosen by the
 // players: options that set up another table or other shots do not apply.
 void check_game(const Options &o) {
-    if (o.players_given && o.game != GameMode::EightBall) fail("--players only applies to --game 8ball");
+    if (o.players_given && !rules_game(o.game)) fail("--players only applies to --game 8ball or 9ball");
     if (o.game == GameMode::None) return;
     if (o.config.scene != Scene::Break) fail("--game is played on the break scene's table (drop --scene)");
     if (!o.config.placements.empty()) fail("--place does not apply to --game (the game starts from the rack)");
     if (o.game == GameMode::Practice && o.headless) fail("--game practice is played in the window (drop --headless)");
-    if (o.game != GameMode::EightBall) return;
+    if (!rules_game(o.game)) return;
     for (const std::string &flag : o.headless_only)
         if (flag != "--json" && flag != "--screenshot")
-            fail(flag + " does not apply to --game 8ball (its shots are chosen by the players)");
+            fail(flag + " does not apply to --game " + (o.game == GameMode::NineBall ? "9ball" : "8ball") +
+                 " (its shots are chosen by the players)");
 }
 
 void check_consistency(const Options &o) {
@@ -315,7 +317,8 @@ Options parse(int argc, char **argv) {
             const std::string v = value();
             if (v == "practice") o.game = GameMode::Practice;
             else if (v == "8ball") o.game = GameMode::EightBall;
-            else fail("--game: unknown game '" + v + "' (practice or 8ball)");
+            else if (v == "9ball") o.game = GameMode::NineBall;
+            else fail("--game: unknown game '" + v + "' (practice, 8ball or 9ball)");
         } else if (flag == "--players") {
             const std::vector<std::string> f = fields(value());
             if (f.size() != 2) fail("--players: expected two players, e.g. human,computer");

@@ -16,7 +16,9 @@ extern const char kUsage[];
 
 // --game: none given (today's runs), practice (clear the table, the
 // window's default) or 8-ball; --players: who plays each side of 8-ball.
-enum class GameMode { None, Practice, EightBall };
+enum class GameMode { None, Practice, EightBall, NineBall };
+// A game by the rules, two players: 8-ball or 9-ball.
+inline bool rules_game(GameMode g) { return g == GameMode::EightBall || g == GameMode::NineBall; }
 
 struct Options {
     bool help = false;  // --help or -h: print kUsage, nothing else

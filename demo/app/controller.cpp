@@ -35,7 +35,8 @@ class Game : public Driver, public PlayingGame {
 public:
     Game(const SimConfig &config, const Players &players, Window &window, Audio &audio)
         : config_(config), match_(config, players), window_(window), audio_(audio), frequency_(static_cast<double>(SDL_GetPerformanceFrequency())),
-          deadline_(static_cast<double>(SDL_GetPerformanceCounter()) / frequency_) {}
+          deadline_(static_cast<double>(SDL_GetPerformanceCounter()) / frequency_),
+          help_(!(players.eight_ball && players.computer[0] && players.computer[1])) {}
     void start(const Simulation &sim);
     bool next_frame(Simulation &sim) override;
     bool before_step(Simulation &sim, bool was_at_rest) override;
@@ -80,7 +81,8 @@ private:
     BallPoses poses_;
     std::vector<Drop> drops_;
     AimState aim_;
-    bool dragging_ = false, dialing_ = false, help_ = true;
+    bool dragging_ = false, dialing_ = false;
+    bool help_;  // the keys' box: shown at the start unless no one at the window plays
     bool follow_mouse_ = true, was_ready_ = false;
     double press_x_ = 0, press_y_ = 0, mouse_x_ = 0, mouse_y_ = 0;  // canvas pixels
     int shots_ = 0, screenshots_ = 0, skipped_ = 0;
@@ -89,6 +91,7 @@ private:
     int rest_frames_ = 0;      // frames the table has been at rest
     int aim_frames_ = -1;      // the computer's shot: frames since it was planned (-1: not yet)
     Plan plan_;
+    double player_side_ = 0, player_topback_ = 0, player_elevation_ = 0;  // the player's, kept over the computer's turn
     Simulation *sim_ = nullptr;  // the one play_window runs
     long drawn_ = 0;
 };
@@ -151,9 +154,15 @@ void Game::judge_shot(Simulation &sim) {
 
 void Game::computer_turn(Simulation &sim) {
     if (rest_frames_ < kThinkFrames) return;
+    if (aim_frames_ < 0 && match_.computer_passes_back(sim.balls())) {
+        match_.pass_back();
+        return;
+    }
     if (aim_frames_ < 0) {
         plan_ = match_.plan(sim.balls());
         if (plan_.place_cue) put_cue(sim, plan_.cue);
+        // the player's own tip and elevation come back after the computer's shot
+        player_side_ = aim_.side, player_topback_ = aim_.topback, player_elevation_ = aim_.elevation;
         aim_.angle = plan_.shot.angle_deg * M_PI / 180;
         aim_.side = plan_.shot.side;
         aim_.topback = plan_.shot.topback;
@@ -166,6 +175,7 @@ void Game::computer_turn(Simulation &sim) {
     sim.shoot(plan_.shot);
     last_speed_ = plan_.shot.speed;
     aim_.power = 0;
+    aim_.side = player_side_, aim_.topback = player_topback_, aim_.elevation = player_elevation_;
     aim_frames_ = -1;
     ++shots_;
 }
@@ -205,12 +215,9 @@ void Game::shoot(Simulation &sim) {
     play(sim, Shot{aim_.angle * 180.0 / M_PI, speed, aim_.side, aim_.topback, aim_.elevation});
 }
 
-// Every shot starts the engine afresh from the position on the table (its
-// clock at 0, as a headless run and the opponent's trial runs start), so a
-// shot's outcome depends on the position and the shot alone, not on how long
-// the table stood still before it.
+// (Simulation::shoot starts the engine afresh from a table at rest: a shot's
+// outcome depends on the position and the shot alone.)
 void Game::play(Simulation &sim, const Shot &shot) {
-    sim.set_balls(sim.balls());
     match_.shot_started(sim.balls());
     sim.shoot(shot);
     ++shots_;
@@ -309,6 +316,13 @@ void Game::handle_key(Simulation &sim, const SDL_Keysym &key) {
     case SDLK_LEFT: aim_.side -= step; break;
     case SDLK_RIGHT: aim_.side += step; break;
     case SDLK_c: aim_.side = aim_.topback = 0; break;
+    // 9-ball: declare a push-out, or hand the shot back after one
+    case SDLK_o:
+        if (!match_.computer_to_play() && table_ready(sim)) match_.push_out();
+        break;
+    case SDLK_b:
+        if (!match_.computer_to_play() && table_ready(sim)) match_.pass_back();
+        break;
     // the cue's elevation in 5-degree steps: swerve, and masse when steep
     case SDLK_PAGEUP: aim_.elevation = std::min(kMaxElevation, aim_.elevation + 5); break;
     case SDLK_PAGEDOWN: aim_.elevation = std::max(0.0, aim_.elevation - 5); break;

@@ -29,8 +29,8 @@ public:
     virtual const Simulation &simulation() const = 0;
     // A shot as --shot takes it (validated the same way), played as every
     // shot of the window is: from the position on the table as if freshly set
-    // up (the engine's clock starts at 0, as a headless run's does: the
-    // result depends on the position and the shot alone).  False, and
+    // up (Simulation::shoot: the engine's clock starts at 0, as a headless
+    // run's does; the result depends on the position and the shot alone).  False, and
     // nothing played, unless the table is at rest and a human may shoot (not
     // the computer's turn, no ball in hand).
     virtual bool shoot(const Shot &shot) = 0;

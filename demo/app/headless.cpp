@@ -393,12 +393,13 @@ int write_outputs(const Simulation &sim, const Options &o) {
     return 0;
 }
 
-// --- 8-ball without a window: two computer players (game.h) ---------------
+// --- 8-ball and 9-ball without a window: two computer players (game.h) -----
 
 void print_game_json(const demo::GameRecord &g, const Options &o, const Simulation &table, double wall) {
-    std::printf("{\"scene\":\"break\",\"response\":\"%s\",\"game\":\"8ball\",\"players\":[\"computer\",\"computer\"],"
+    std::printf("{\"scene\":\"break\",\"response\":\"%s\",\"game\":\"%s\",\"players\":[\"computer\",\"computer\"],"
                 "\"seed\":%llu,\"shots\":[",
-                response_name(o.config.response), static_cast<unsigned long long>(o.config.seed));
+                response_name(o.config.response), o.game == demo::GameMode::NineBall ? "9ball" : "8ball",
+                static_cast<unsigned long long>(o.config.seed));
     for (size_t i = 0; i < g.shots.size(); ++i) {
         const demo::ShotRecord &r = g.shots[i];
         std::printf("%s{\"player\":%d,\"angle\":%.17g,\"speed\":%.17g,\"side\":%.17g,\"topback\":%.17g,", i ? "," : "",
@@ -423,7 +424,7 @@ void print_game_json(const demo::GameRecord &g, const Options &o, const Simulati
 }
 
 void print_game_summary(const demo::GameRecord &g, double wall) {
-    std::printf("billiards: 8-ball, computer against computer\n");
+    std::printf("billiards: %s, computer against computer\n", g.nine_ball ? "9-ball" : "8-ball");
     for (size_t i = 0; i < g.shots.size(); ++i) {
         const demo::ShotRecord &r = g.shots[i];
         std::string potted;
@@ -431,9 +432,13 @@ void print_game_summary(const demo::GameRecord &g, double wall) {
         std::printf("  %3zu  player %d%s  %7.2f deg %5.2f m/s tip %+.2f,%+.2f  potted [%s]%s%s\n", i + 1, r.player + 1,
                     r.placed ? " (ball in hand)" : "", r.shot.angle_deg, r.shot.speed, r.shot.side, r.shot.topback,
                     potted.c_str(), r.foul != demo::Foul::None ? "  foul: " : "",
-                    r.foul != demo::Foul::None ? demo::foul_name(r.foul) : "");
+                    r.foul != demo::Foul::None ? demo::foul_text(r.foul) : "");
     }
-    if (g.winner >= 0) std::printf("  player %d (%s) wins: %s\n", g.winner + 1, demo::group_name(g.groups[g.winner]), g.reason.c_str());
+    if (g.winner >= 0) {
+        const int shooter = g.shots.empty() ? g.winner : g.shots.back().player;
+        std::printf("  player %d (%s) wins: %s\n", g.winner + 1, g.nine_ball ? "9-ball" : demo::group_name(g.groups[g.winner]),
+                    demo::win_reason(g.winner, shooter, "player " + std::to_string(shooter + 1), g.reason).c_str());
+    }
     else std::printf("  %s\n", g.reason.c_str());
     std::printf("  %zu shots, %d fouls; the computer simulated %ld candidate shots in %.3f s (%.0f shots/s, %.1f ms a turn); "
                 "%.1f s of play simulated in %.3f s\n",
@@ -446,14 +451,15 @@ void print_game_summary(const demo::GameRecord &g, double wall) {
 
 void demo::check_headless(const Options &o) {
     if (o.game == demo::GameMode::Practice) throw UsageError{"--game practice is played in the window"};
-    if (o.game == demo::GameMode::EightBall && o.players_given && !(o.computer[0] && o.computer[1]))
-        throw UsageError{"--players: a human player needs the window; headless, --game 8ball is --players computer,computer"};
+    if (demo::rules_game(o.game) && o.players_given && !(o.computer[0] && o.computer[1]))
+        throw UsageError{"--players: a human player needs the window; headless, a game is --players computer,computer"};
     preflight(o);
 }
 
 int demo::run_game_headless(const Options &o) {
     const auto start = std::chrono::steady_clock::now();
-    const demo::GameRecord g = demo::play_computer_game(o.config, o.config.seed);
+    const demo::GameKind kind = o.game == demo::GameMode::NineBall ? demo::GameKind::NineBall : demo::GameKind::EightBall;
+    const demo::GameRecord g = demo::play_computer_game(o.config, o.config.seed, kind);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     demo::SimConfig final_table = o.config;
     for (const demo::Ball &b : g.balls)
@@ -462,7 +468,26 @@ int demo::run_game_headless(const Options &o) {
     if (o.json) print_game_json(g, o, table, wall);
     else print_game_summary(g, wall);
     std::string error;
-    if (!o.screenshot.empty() && !demo::screenshot_offscreen(table, o.screenshot, error)) {
+    // the game's panel: the players and their groups, the result, the tray
+    std::vector<std::string> lines;
+    std::string who = demo::game_name(kind);
+    for (int p = 0; p < 2; ++p) {
+        who += "   Player " + std::to_string(p + 1) + " (computer)";
+        if (g.groups[p] != demo::Group::Open) who += std::string(": ") + demo::group_name(g.groups[p]);
+    }
+    lines.push_back(who);
+    if (g.winner >= 0) {
+        const int shooter = g.shots.empty() ? g.winner : g.shots.back().player;
+        lines.push_back("Player " + std::to_string(g.winner + 1) + " wins: " +
+                        demo::win_reason(g.winner, shooter, "player " + std::to_string(shooter + 1), g.reason));
+    } else {
+        lines.push_back(g.reason);
+    }
+    lines.push_back(std::to_string(g.shots.size()) + " shots, " + std::to_string(g.fouls) + " fouls");
+    std::vector<int> pocketed;
+    for (const demo::Ball &b : g.balls)
+        if (!b.active && b.number != 0) pocketed.push_back(b.number);
+    if (!o.screenshot.empty() && !demo::screenshot_offscreen(table, o.screenshot, error, lines, pocketed)) {
         std::fprintf(stderr, "billiards: screenshot: %s\n", error.c_str());
         return 1;
     }

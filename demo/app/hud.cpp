@@ -145,15 +145,18 @@ void draw_help(Canvas &canvas, const Screen &layout, const std::string &title, c
     const RectF &t = layout.table;
     size_t longest = title.size();
     for (const std::string &l : lines) longest = std::max(longest, l.size());
+    // Above the centre line's balls: the box with its margins fits in the
+    // table's upper 40 % (the rack reaches 2 diameters, 9 % of the width,
+    // either side of the centre line; the head spot's cue ball is on it).
     int scale = text_scale(layout);
     const int max_w = static_cast<int>(t.w * 0.8f);
     while (scale > 1 && (text_width(std::string(longest, 'M'), scale) > max_w ||
-                         static_cast<float>((static_cast<int>(lines.size()) + 2) * kLineAdvance * scale) > t.h * 0.8f))
+                         static_cast<float>((static_cast<int>(lines.size()) + 3.5f) * kLineAdvance * scale) > t.h * 0.4f))
         --scale;
     const int w = text_width(std::string(longest, 'M'), scale), line_h = kLineAdvance * scale;
     const int h = (static_cast<int>(lines.size()) + 2) * line_h;
-    const float x0 = t.x + (t.w - static_cast<float>(w)) / 2, y0 = t.y + (t.h - static_cast<float>(h)) / 2;
     const float margin = static_cast<float>(line_h);
+    const float x0 = t.x + (t.w - static_cast<float>(w)) / 2, y0 = t.y + t.h * 0.4f - static_cast<float>(h) - margin * 0.5f;
     canvas.fill_rect(x0 - margin, y0 - margin, x0 + static_cast<float>(w) + margin, y0 + static_cast<float>(h) + margin * 0.5f,
                      {0, 0, 0}, 0.72f);
     draw_text(canvas, title, static_cast<int>(x0), static_cast<int>(y0), TextStyle{scale, rgb8(255, 225, 120), true});

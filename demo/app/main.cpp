@@ -48,13 +48,20 @@ int run(const Options &o) {
     if (!o.headless && display) {
         if (!o.headless_only.empty())
             throw UsageError{joined(o.headless_only) + ": only for a headless run (add --headless)"};
-        if (demo::play_window(o.config, demo::Players{o.game == demo::GameMode::EightBall, {o.computer[0], o.computer[1]}}, why) == demo::WindowResult::Ok) return 0;
+        const bool nine = o.game == demo::GameMode::NineBall;
+        demo::SimConfig config = o.config;
+        if (nine)  // the window racks from placements: the 9-ball diamond of the same seed
+            for (const demo::Ball &b : demo::set_up_nine_ball(config.table, config.seed).balls)
+                config.placements.push_back(demo::Placement{b.number, b.x, b.y});
+        const demo::Players players{demo::rules_game(o.game), {o.computer[0], o.computer[1]},
+                                    nine ? demo::GameKind::NineBall : demo::GameKind::EightBall};
+        if (demo::play_window(config, players, why) == demo::WindowResult::Ok) return 0;
     }
     // a run that headless would refuse says only why (exit 2), not that it
     // falls back to headless first
     demo::check_headless(o);
     if (!o.headless) std::fprintf(stderr, "billiards: %s; running headless\n", why.c_str());
-    if (o.game == demo::GameMode::EightBall) return demo::run_game_headless(o);
+    if (demo::rules_game(o.game)) return demo::run_game_headless(o);
     return demo::run_scene_headless(o);
 }
 

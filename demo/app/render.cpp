@@ -60,13 +60,15 @@ Overlay still_overlay(const Simulation &sim) {
     return o;
 }
 
-void draw_still(Canvas &frame, const Simulation &sim, const Screen &layout) {
+void draw_still(Canvas &frame, const Simulation &sim, const Screen &layout, const Overlay &overlay) {
     const TableShape shape = table_shape(sim.table());
     BallPoses poses;
     poses.reset(sim.balls());
     Backdrop backdrop;
-    draw_frame(frame, backdrop.get(sim, shape, layout), layout, sim, shape, poses, still_overlay(sim));
+    draw_frame(frame, backdrop.get(sim, shape, layout), layout, sim, shape, poses, overlay);
 }
+
+void draw_still(Canvas &frame, const Simulation &sim, const Screen &layout) { draw_still(frame, sim, layout, still_overlay(sim)); }
 
 // Without DISPLAY or WAYLAND_DISPLAY SDL is not asked at all (it would print
 // its own complaints about XDG_RUNTIME_DIR before ours), unless the user
@@ -118,6 +120,15 @@ void draw_frame(Canvas &frame, const Canvas &backdrop, const Screen &layout, con
         draw_falling(frame, layout.view, d.x, d.y, d.hole_x, d.hole_y, d.number, d.pose, d.age / kDropSeconds);
     draw_balls(frame, layout.view, sim.balls(), poses);
     if (overlay.aiming) draw_aim(frame, layout.view, shape, sim.balls(), overlay.aim);
+    // the panel's rows as the backdrop has them: a cue drawn back over the
+    // panel (a long stroke from near the head rail) goes under it
+    if (overlay.aiming && layout.panel.h > 0) {
+        const int y0 = std::max(0, static_cast<int>(layout.panel.y)), w = frame.width();
+        const int y1 = std::min(frame.height(), static_cast<int>(std::ceil(layout.panel.y + layout.panel.h)));
+        if (y0 < y1 && frame.pixels().size() == backdrop.pixels().size())
+            std::copy(backdrop.pixels().begin() + static_cast<long>(y0) * w, backdrop.pixels().begin() + static_cast<long>(y1) * w,
+                      frame.pixels().begin() + static_cast<long>(y0) * w);
+    }
     draw_panel(frame, layout, overlay.panel);
     if (overlay.help) draw_help(frame, layout, "collide2d billiards - keys", std::vector<std::string>(std::begin(kHelp), std::end(kHelp)));
     else if (!overlay.banner.empty()) draw_banner(frame, layout, overlay.banner);
@@ -161,6 +172,18 @@ bool screenshot_offscreen(const Simulation &sim, const std::string &path, std::s
     fit_size(sim, kDefaultWidth, kDefaultWidth, width, height);
     Canvas frame(width, height);
     draw_still(frame, sim, layout_for(sim, width, height));
+    return write_png(path, width, height, frame.rgb(), error);
+}
+
+bool screenshot_offscreen(const Simulation &sim, const std::string &path, std::string &error,
+                          const std::vector<std::string> &panel_lines, const std::vector<int> &pocketed) {
+    int width = 0, height = 0;
+    fit_size(sim, kDefaultWidth, kDefaultWidth, width, height);
+    Canvas frame(width, height);
+    Overlay o = still_overlay(sim);
+    o.panel.lines = panel_lines;
+    o.panel.pocketed = pocketed;
+    draw_still(frame, sim, layout_for(sim, width, height), o);
     return write_png(path, width, height, frame.rgb(), error);
 }
 

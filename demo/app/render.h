@@ -7,6 +7,7 @@
 #define C2D_DEMO_RENDER_H
 
 #include <string>
+#include <vector>
 
 #include "pool/sim.h"
 
@@ -16,6 +17,10 @@ enum class WindowResult { Ok, Unavailable, Failed };
 
 // The final frame, drawn offscreen into a PNG.
 bool screenshot_offscreen(const Simulation &sim, const std::string &path, std::string &error);
+// The same with the panel's lines and the tray's pocketed balls given (a
+// game's: the players, the result), instead of the run's figures.
+bool screenshot_offscreen(const Simulation &sim, const std::string &path, std::string &error,
+                          const std::vector<std::string> &panel_lines, const std::vector<int> &pocketed);
 
 // Whether a window can be opened (a display SDL can use), checked before a
 // run that ends with screenshot_window; false with the reason in error.

@@ -156,7 +156,7 @@ std::vector<Ball> with_cue_at(const std::vector<Ball> &balls, Point p) {
 // before it) already make it a foul or a loss, whatever else happens: the
 // cue ball pocketed (a scratch), its first contact with a ball not
 // `state`'s shooter may hit first, the 8 pocketed before the group is
-// cleared (rules.cpp: foul_of, apply_shot).  Each such shot scores
+// cleared in 8-ball (rules.cpp: foul_of, apply_shot).  Each such shot scores
 // kFoulScore or less (a loss, a foul, or unsettled below that).  (8: the
 // eight ball, rules.cpp's kEight.)  `seen`
 // carries the events already read and the first contact across calls.
@@ -164,11 +164,11 @@ struct Doom {
     size_t seen = 0;
     bool hit = false;
     bool check(const GameState &state, const std::vector<Ball> &from, const std::vector<Event> &events) {
-        const bool on_the_eight = group_cleared(state, from);
+        const bool eight = state.game == GameKind::EightBall, on_the_eight = eight && group_cleared(state, from);
         for (; seen < events.size(); ++seen) {
             const Event &e = events[seen];
             const int n = from[static_cast<size_t>(e.ball)].number;
-            if (e.kind == EventKind::Pocket && (n == 0 || (n == 8 && !on_the_eight))) return true;
+            if (e.kind == EventKind::Pocket && (n == 0 || (eight && n == 8 && !on_the_eight))) return true;
             if (e.kind == EventKind::BallBall && n == 0 && !hit) {
                 hit = true;
                 if (!legal_target(state, from[static_cast<size_t>(e.other)].number, from)) return true;

@@ -15,6 +15,8 @@ namespace demo {
 namespace {
 
 constexpr int kEight = 8;
+constexpr int kNine = 9;
+constexpr int kFoulsToLose = 3;  // WPA 9-ball: three successive fouls
 constexpr int kBreakRailBalls = 4;  // WPA: four object balls to a rail, or a pot
 
 bool on_table(const std::vector<Ball> &balls, int number) {
@@ -72,12 +74,101 @@ Verdict apply_break(GameState &state, const ShotFacts &f) {
         v.reason = "potted on the break: the table is open";
         return v;
     }
-    v.reason = v.foul == Foul::None ? "nothing potted on the break" : std::string("foul on the break: ") + foul_name(v.foul);
+    v.reason = v.foul == Foul::None ? "nothing potted on the break" : std::string("foul on the break: ") + foul_text(v.foul);
+    pass_turn(state, v);
+    return v;
+}
+
+// --- 9-ball
+
+bool any_object(const ShotFacts &f) {
+    return std::any_of(f.potted.begin(), f.potted.end(), [](int n) { return n != 0; });
+}
+
+// A 9-ball foul: the cue ball down, no contact, the lowest ball not hit
+// first, or nothing down and no rail after the contact; on the break also
+// fewer than four balls to a cushion with nothing down.  A push-out fouls
+// only by a scratch.
+Foul nine_foul(const GameState &state, const ShotFacts &f, const std::vector<Ball> &before) {
+    if (potted(f, 0)) return Foul::Scratch;
+    if (state.push_out) return Foul::None;
+    if (f.first_hit < 0) return Foul::NoBallHit;
+    if (f.first_hit != lowest_ball(before)) return Foul::WrongBallFirst;
+    if (state.breaking) return !any_object(f) && f.balls_to_rail < kBreakRailBalls ? Foul::IllegalBreak : Foul::None;
+    if (!any_object(f) && !f.rail_after_contact) return Foul::NoRail;
+    return Foul::None;
+}
+
+// The fouling player's count; the third in a row loses.
+bool third_foul(GameState &state, Verdict &v, int shooter) {
+    if (++state.fouls_in_row[shooter] < kFoulsToLose) return false;
+    end_game(state, v, 1 - shooter, std::string("a third foul in a row (") + foul_text(v.foul) + ")");
+    return true;
+}
+
+Verdict apply_nine(GameState &state, const ShotFacts &f, const std::vector<Ball> &before) {
+    Verdict v;
+    const int shooter = state.turn;
+    const bool was_break = state.breaking, was_push = state.push_out;
+    v.foul = nine_foul(state, f, before);
+    state.breaking = false;
+    state.push_out = false;
+    state.push_out_allowed = was_break && v.foul == Foul::None && !potted(f, kNine);
+    state.may_pass_back = false;
+    if (v.foul != Foul::None) {
+        v.respot_nine = potted(f, kNine);
+        if (third_foul(state, v, shooter)) return v;
+        v.reason = std::string(was_break ? "foul on the break: " : "foul: ") + foul_text(v.foul) +
+                   (state.fouls_in_row[shooter] == kFoulsToLose - 1 ? " (two fouls in a row: a third loses)" : "");
+        pass_turn(state, v);
+        return v;
+    }
+    state.fouls_in_row[shooter] = 0;
+    if (was_push) {
+        v.respot_nine = potted(f, kNine);
+        v.reason = "push-out: the other player shoots or passes it back";
+        state.may_pass_back = true;
+        pass_turn(state, v);
+        return v;
+    }
+    if (potted(f, kNine)) {
+        end_game(state, v, shooter, was_break ? "potted the 9 on the break" : "potted the 9");
+        return v;
+    }
+    state.ball_in_hand = false;
+    if (any_object(f)) {
+        v.keeps_turn = true;
+        v.reason = was_break ? "potted on the break" : "potted";
+        return v;
+    }
+    v.reason = was_break ? "nothing potted on the break" : "nothing potted";
     pass_turn(state, v);
     return v;
 }
 
 }  // namespace
+
+const char *game_name(GameKind g) { return g == GameKind::NineBall ? "9-ball" : "8-ball"; }
+
+int lowest_ball(const std::vector<Ball> &before) {
+    int lowest = 0;
+    for (const Ball &b : before)
+        if (b.active && b.number > 0 && (lowest == 0 || b.number < lowest)) lowest = b.number;
+    return lowest;
+}
+
+bool declare_push_out(GameState &state) {
+    if (state.game != GameKind::NineBall || !state.push_out_allowed || state.over()) return false;
+    state.push_out = true;
+    return true;
+}
+
+bool pass_back(GameState &state) {
+    if (state.game != GameKind::NineBall || !state.may_pass_back || state.over()) return false;
+    state.may_pass_back = false;
+    state.turn = 1 - state.turn;
+    return true;
+}
 
 const char *group_name(Group g) { return g == Group::Solids ? "solids" : g == Group::Stripes ? "stripes" : "open"; }
 
@@ -95,6 +186,17 @@ const char *foul_name(Foul f) {
     case Foul::NoRail: return "no_rail";
     case Foul::IllegalBreak: return "illegal_break";
     default: return "none";
+    }
+}
+
+const char *foul_text(Foul f) {
+    switch (f) {
+    case Foul::Scratch: return "the cue ball fell in";
+    case Foul::NoBallHit: return "the cue ball hit no ball";
+    case Foul::WrongBallFirst: return "the wrong ball hit first";
+    case Foul::NoRail: return "no ball went to a rail";
+    case Foul::IllegalBreak: return "fewer than four balls went to a rail";
+    default: return "no foul";
     }
 }
 
@@ -133,6 +235,7 @@ bool group_cleared(const GameState &state, const std::vector<Ball> &before) {
 
 bool legal_target(const GameState &state, int number, const std::vector<Ball> &before) {
     if (!on_table(before, number) || number == 0) return false;
+    if (state.game == GameKind::NineBall) return state.push_out || number == lowest_ball(before);
     if (state.breaking) return true;
     if (state.open()) return number != kEight;
     if (group_cleared(state, before)) return number == kEight;
@@ -141,6 +244,7 @@ bool legal_target(const GameState &state, int number, const std::vector<Ball> &b
 
 Verdict apply_shot(GameState &state, const ShotFacts &f, const std::vector<Ball> &before) {
     if (state.over()) return Verdict{};
+    if (state.game == GameKind::NineBall) return apply_nine(state, f, before);
     if (state.breaking) return apply_break(state, f);
     Verdict v;
     const int shooter = state.turn;
@@ -148,12 +252,12 @@ Verdict apply_shot(GameState &state, const ShotFacts &f, const std::vector<Ball>
     v.foul = foul_of(state, f, before);
     if (potted(f, kEight)) {
         if (on_the_eight && v.foul == Foul::None) end_game(state, v, shooter, "potted the 8 after clearing the group");
-        else if (v.foul != Foul::None) end_game(state, v, 1 - shooter, std::string("potted the 8 with a foul (") + foul_name(v.foul) + ")");
+        else if (v.foul != Foul::None) end_game(state, v, 1 - shooter, std::string("potted the 8 with a foul (") + foul_text(v.foul) + ")");
         else end_game(state, v, 1 - shooter, "potted the 8 before clearing the group");
         return v;
     }
     if (v.foul != Foul::None) {
-        v.reason = std::string("foul: ") + foul_name(v.foul);
+        v.reason = std::string("foul: ") + foul_text(v.foul);
         pass_turn(state, v);
         return v;
     }
@@ -186,11 +290,13 @@ bool cue_placement_ok(const Table &table, const std::vector<Ball> &balls, double
     });
 }
 
-Point eight_spot(const Table &table, const std::vector<Ball> &balls) {
+Point eight_spot(const Table &table, const std::vector<Ball> &balls) { return spot_point(table, balls, kEight); }
+
+Point spot_point(const Table &table, const std::vector<Ball> &balls, int number) {
     const double y = table.width / 2, foot = 0.75 * table.length;
     const auto free_at = [&](double x) {
         return std::none_of(balls.begin(), balls.end(), [&](const Ball &b) {
-            return b.active && b.number != kEight && det_hypot(b.x - x, b.y - y) < kBallDiameter * 1.001;
+            return b.active && b.number != number && det_hypot(b.x - x, b.y - y) < kBallDiameter * 1.001;
         });
     };
     // quarter-radius steps towards the foot rail, then towards the head rail

@@ -22,15 +22,46 @@ Ball make_ball(double x, double y, int number) { return Ball{x, y, 0, 0, number,
 double head_spot_x(const Table &t) { return 0.25 * t.length; }
 double centre_line_y(const Table &t) { return 0.5 * t.width; }
 
-// 15 balls in a triangle behind the foot spot, touching: the 1 at the apex,
-// the 8 in the middle of the third row, the others shuffled by the seed.
-void rack(std::vector<Ball> &balls, const Table &t, uint64_t seed) {
+// 15 balls in a triangle behind the foot spot: the 1 at the apex, the 8 in
+// the middle of the third row, one solid and one stripe in the back corners
+// (WPA), the others shuffled by the seed.  The order is the seed's shuffle
+// of 2-15 without the 8; if both back corners (the fifth row's ends) are of
+// one group, the right one (+y) changes places with the nearest ball of the
+// other group before it in the order (in the fifth row if there is one, else
+// the fourth, ...; rows read from the apex, each from -y to +y).
+// gap > 0 (the break; scene.h, kRackGap): the triangle's pitch is 2 (R + gap)
+// instead of 2 R and each ball is moved from its place by a seeded offset
+// uniform in the disk of radius gap, so no two balls overlap and neighbours
+// are 0 to 4 gap apart (2 gap on average).  The offsets are drawn after the
+// shuffle (the order is each seed's as before), by rejection from the
+// square, so no trigonometry and the same bits everywhere.
+// A ball of the rack at its place plus the seeded offset (rack's comment).
+Ball racked(Rng &rng, double x, double y, double gap, int number) {
+    double dx = 0, dy = 0;
+    if (gap > 0) {
+        do {
+            dx = 2 * rng.uniform() - 1, dy = 2 * rng.uniform() - 1;
+        } while (dx * dx + dy * dy >= 1);
+    }
+    return make_ball(x + gap * dx, y + gap * dy, number);
+}
+
+void rack(std::vector<Ball> &balls, const Table &t, uint64_t seed, double gap) {
     std::vector<int> order = {2, 3, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15};
     Rng rng(seed);
     for (size_t i = order.size() - 1; i > 0; --i)
         std::swap(order[i], order[static_cast<size_t>(rng.next() % (i + 1))]);
+    // order[8..12] is the fifth row: corners order[8] and order[12]
+    const auto stripe = [](int n) { return n > 8; };
+    if (stripe(order[8]) == stripe(order[12])) {
+        for (size_t k = 12; k-- > 0;)
+            if (k != 8 && stripe(order[k]) != stripe(order[12])) {
+                std::swap(order[k], order[12]);
+                break;
+            }
+    }
     const double apex_x = 0.75 * t.length, cy = centre_line_y(t);
-    const double row_step = kBallRadius * std::sqrt(3.0);
+    const double pitch = kBallDiameter + 2 * gap, row_step = 0.5 * pitch * std::sqrt(3.0);
     size_t next = 0;
     for (int row = 0; row < 5; ++row) {
         for (int k = 0; k <= row; ++k) {
@@ -38,10 +69,28 @@ void rack(std::vector<Ball> &balls, const Table &t, uint64_t seed) {
             if (row == 0) number = 1;
             else if (row == 2 && k == 1) number = 8;
             else number = order[next++];
-            balls.push_back(make_ball(apex_x + row * row_step,
-                                      cy + (k - 0.5 * row) * kBallDiameter, number));
+            balls.push_back(racked(rng, apex_x + row * row_step, cy + (k - 0.5 * row) * pitch, gap, number));
         }
     }
+}
+
+// 9-ball: balls 1-9 in a diamond (rows of 1, 2, 3, 2, 1) behind the foot
+// spot, the 1 at the apex, the 9 in the middle, 2-8 shuffled by the seed;
+// the same pitch and seeded offsets as rack's.
+void nine_rack(std::vector<Ball> &balls, const Table &t, uint64_t seed, double gap) {
+    static const int kRow[5] = {1, 2, 3, 2, 1};
+    std::vector<int> order = {2, 3, 4, 5, 6, 7, 8};
+    Rng rng(seed);
+    for (size_t i = order.size() - 1; i > 0; --i)
+        std::swap(order[i], order[static_cast<size_t>(rng.next() % (i + 1))]);
+    const double apex_x = 0.75 * t.length, cy = centre_line_y(t);
+    const double pitch = kBallDiameter + 2 * gap, row_step = 0.5 * pitch * std::sqrt(3.0);
+    size_t next = 0;
+    for (int row = 0; row < 5; ++row)
+        for (int k = 0; k < kRow[row]; ++k) {
+            const int number = row == 0 ? 1 : row == 2 && k == 1 ? 9 : order[next++];
+            balls.push_back(racked(rng, apex_x + row * row_step, cy + (k - 0.5 * (kRow[row] - 1)) * pitch, gap, number));
+        }
 }
 
 void gas(std::vector<Ball> &balls, double side, int count, uint64_t seed) {
@@ -96,7 +145,15 @@ Setup set_up(Scene scene, const TableSpec &spec, int count, uint64_t seed, const
         return s;
     }
     s.balls.push_back(make_ball(head_spot_x(s.table), centre_line_y(s.table), 0));
-    rack(s.balls, s.table, seed);
+    rack(s.balls, s.table, seed, scene == Scene::Break ? kRackGap : 0.0);
+    return s;
+}
+
+Setup set_up_nine_ball(const TableSpec &spec, uint64_t seed) {
+    Setup s;
+    s.table = pool_table(spec);
+    s.balls.push_back(make_ball(head_spot_x(s.table), centre_line_y(s.table), 0));
+    nine_rack(s.balls, s.table, seed, kRackGap);
     return s;
 }
 

@@ -43,12 +43,27 @@ struct Setup {
     std::vector<Ball> balls;  // break and elastic: the cue ball first
 };
 
+// The break's rack is not tight: a real rack's balls are never all
+// touching (the balls' diameters alone vary by +-0.127 mm, WPA's 2.25 in
+// +- 0.005 in, and a rack leaves gaps).  The model is pooltool's
+// (pooltool/layouts.py, EightBallRack: spacing_factor 1e-3): the triangle's
+// pitch is 2 (R + kRackGap) and each ball is moved from its place by an
+// offset uniform in the disk of radius kRackGap drawn from the seed, so
+// neighbours are 0 to 4 kRackGap apart (2 kRackGap = 0.057 mm on average),
+// never overlapping.  The elastic scene's rack stays tight (a Newton's
+// cradle of the whole rack, energy compared with Box2D's).
+constexpr double kRackGap = 1e-3 * kBallRadius;  // m
+
 // The seed shuffles the rack (break, elastic) or places the gas.  With
 // placements (break, elastic) only those balls are on the table, in the
 // order given.  count: the gas's disks, or the cradle's row (1 to
 // kMaxCradleBalls).
 Setup set_up(Scene scene, const TableSpec &spec, int count, uint64_t seed,
              const std::vector<Placement> &placements = {});
+// The 9-ball break: the cue ball on the head spot, balls 1-9 in a diamond
+// behind the foot spot (the 1 at the apex, the 9 in the middle, 2-8
+// shuffled by the seed), with the break rack's gaps (kRackGap).
+Setup set_up_nine_ball(const TableSpec &spec, uint64_t seed);
 
 // The table of the break (pockets) or elastic and cradle (a closed box) scene.
 Table scene_table(Scene scene, const TableSpec &spec);

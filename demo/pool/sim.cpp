@@ -66,6 +66,11 @@ bool Simulation::cue_on_table() const {
 
 void Simulation::shoot(const Shot &shot) {
     if (!cue_on_table()) return;
+    // From a table at rest the engine starts afresh at time 0, as
+    // simulate_shot's does: the world's clock then reads the same at every
+    // event, so the window's game, frame by frame, is the headless game bit
+    // for bit (test_game: window_plays_the_headless_game).
+    if (at_rest()) set_balls(balls());
     strikes_.push_back(strike_cue(*engine_, cue_index(balls()), shot, config_.model));
 }
 

@@ -107,6 +107,8 @@ public:
     Simulation &operator=(Simulation &&) noexcept;  // the window's re-rack
 
     // Strikes the cue ball (break scenes; ignored if it is off the table).
+    // From a table at rest the engine restarts at time 0 first (set_balls),
+    // so a shot gives the bits simulate_shot gives from the same table.
     void shoot(const Shot &shot);
     // Advances one frame of kFrameDt.
     void step();

@@ -515,4 +515,20 @@ bad --game 8ball --scene elastic
 bad --game 8ball --seconds 10
 bad --game practice
 
+# --- 9-ball, computer against computer: a winner by the 9 (or three fouls),
+# the game named in the JSON, the same game from the same seed
+for seed in 1 2; do
+    "$BIN" --headless --game 9ball --seed $seed --json > "$TMP/nine$seed.json"
+    winner=$(json_get "$TMP/nine$seed.json" winner)
+    echo "    9-ball seed $seed: $(json_get "$TMP/nine$seed.json" shot_count) shots, winner $winner, $(json_get "$TMP/nine$seed.json" reason)"
+    { [ "$winner" = 0 ] || [ "$winner" = 1 ]; } && grep -q '"game":"9ball"' "$TMP/nine$seed.json" &&
+        { grep -q '"number":9,[^}]*"on_table":false' "$TMP/nine$seed.json" || grep -q 'third foul' "$TMP/nine$seed.json"; } &&
+        ! grep -q '"number":1[0-5],' "$TMP/nine$seed.json"
+    check "9-ball seed $seed: runs to a winner, nine balls only, named in the JSON" $?
+done
+"$BIN" --headless --game 9ball --seed 1 --json > "$TMP/nine-again.json"
+[ "$(strip_clock "$TMP/nine1.json")" = "$(strip_clock "$TMP/nine-again.json")" ]; check "9-ball: same seed, same JSON" $?
+bad --game 9ball --players human,computer
+bad --game 9ball --shot 0,3
+
 c2d_summary

@@ -85,6 +85,18 @@ void fouls() {
                 eight_first = eight_first && v.foul == Foul::WrongBallFirst && s.open() && s.turn == 1 - turn;
             }
     check(cases == 2 * 2 * 14, "fouls: every case ran (2 players x 2 groups x the 14 balls but the 8)");
+    bool words = true;
+    for (Foul f : {Foul::Scratch, Foul::NoBallHit, Foul::WrongBallFirst, Foul::NoRail, Foul::IllegalBreak}) {
+        GameState s = after_break(Group::Solids);
+        const Verdict v = f == Foul::Scratch ? apply_shot(s, facts(3, {0}, true), table_with(all_but({})))
+                        : f == Foul::NoBallHit ? apply_shot(s, facts(-1, {}, false), table_with(all_but({})))
+                        : f == Foul::WrongBallFirst ? apply_shot(s, facts(12, {}, true), table_with(all_but({})))
+                        : f == Foul::NoRail ? apply_shot(s, facts(3, {}, false), table_with(all_but({})))
+                                            : Verdict{};
+        words = words && std::string(foul_text(f)).find('_') == std::string::npos &&
+                (f == Foul::IllegalBreak || (v.foul == f && v.reason == std::string("foul: ") + foul_text(f)));
+    }
+    check(words, "a foul's verdict says it in words (foul_text), not its JSON name");
     check(scratch, "a scratch is a foul after any first contact: turn passes, ball in hand");
     check(no_hit, "hitting no ball is a foul: turn passes, ball in hand");
     check(wrong, "each of the opponent's balls first is a foul, for either group and player");
@@ -151,7 +163,7 @@ void break_shot() {
 
 // --- the 8 after the break: win only with the group cleared and no foul
 void eight_ball() {
-    bool all = true;
+    bool all = true, words = true, said = true;
     for (int turn = 0; turn < 2; ++turn)
         for (Group g : {Group::Solids, Group::Stripes})
             for (bool cleared : {false, true})
@@ -169,8 +181,15 @@ void eight_ball() {
                     const Verdict v = apply_shot(s, facts(first, potted, true), before);
                     const int expected = cleared && foul == 0 ? turn : 1 - turn;
                     all = all && v.winner == expected && s.winner == expected && s.over();
+                    // the verdict in words; the winner's line says who did it
+                    words = words && v.reason.find('_') == std::string::npos;
+                    const std::string line = win_reason(expected, turn, "Player " + std::to_string(turn + 1), v.reason);
+                    said = said && (expected == turn ? line == v.reason
+                                                     : line == "Player " + std::to_string(turn + 1) + " " + v.reason);
                 }
     check(all, "the 8 wins with the group cleared and no foul; loses early, on a scratch or a wrong first ball");
+    check(words, "the verdicts on the 8 name no internal foul names (no '_')");
+    check(said, "the winner's line names the loser when the loser's shot ended the game");
     GameState s = after_break(Group::Solids);
     std::vector<Ball> before = table_with(all_but({1, 2, 3, 4, 5, 6, 7}));
     const Verdict v = apply_shot(s, facts(8, {}, true), before);
@@ -260,6 +279,252 @@ void games(int count) {
     }
 }
 
+// --- 9-ball (rules.h): every lowest ball against every first contact
+
+std::vector<Ball> nine_table(int lowest) {
+    std::vector<int> n;
+    for (int k = lowest; k <= 9; ++k) n.push_back(k);
+    return table_with(n);
+}
+
+GameState nine_after_break(int turn = 0) {
+    GameState s;
+    s.game = GameKind::NineBall;
+    s.breaking = false;
+    s.turn = turn;
+    return s;
+}
+
+void nine_ball_first_contact() {
+    bool lowest = true, wrong = true, legal = true, no_rail = true, eight_is_a_ball = true;
+    int cases = 0;
+    for (int low = 1; low <= 9; ++low) {
+        const std::vector<Ball> t = nine_table(low);
+        lowest = lowest && lowest_ball(t) == low;
+        for (int hit = low; hit <= 9; ++hit)
+            for (int turn = 0; turn < 2; ++turn) {
+                ++cases;
+                GameState s = nine_after_break(turn);
+                Verdict v = apply_shot(s, facts(hit, {}, true), t);
+                if (hit != low) wrong = wrong && v.foul == Foul::WrongBallFirst && s.turn == 1 - turn && s.ball_in_hand;
+                else legal = legal && v.foul == Foul::None && s.turn == 1 - turn && !s.ball_in_hand && !s.over();
+                s = nine_after_break(turn);
+                v = apply_shot(s, facts(low, {}, false), t);
+                no_rail = no_rail && v.foul == Foul::NoRail && s.ball_in_hand;
+                if (low <= 8 && hit == low) {
+                    s = nine_after_break(turn);
+                    v = apply_shot(s, facts(low, {8}, false), t);
+                    eight_is_a_ball = eight_is_a_ball && v.foul == Foul::None && v.keeps_turn && !s.over() && s.turn == turn;
+                }
+            }
+    }
+    std::printf("    9-ball first contact: %d cases\n", cases);
+    check(cases == 90, "9-ball: 90 lowest-ball and first-contact cases were judged");
+    check(lowest, "9-ball: the lowest-numbered ball on the table is the one to hit");
+    check(wrong, "9-ball: hitting any other ball first is a foul, ball in hand to the other player");
+    check(legal, "9-ball: hitting the lowest first with a rail and nothing down is legal and passes the turn");
+    check(no_rail, "9-ball: nothing down and no rail after the contact is a foul");
+    check(eight_is_a_ball, "9-ball: the 8 is an ordinary ball (potted, it keeps the table)");
+}
+
+void nine_ball_the_nine() {
+    bool wins = true, combination = true, spotted = true;
+    int cases = 0;
+    for (int low = 1; low <= 8; ++low)
+        for (int turn = 0; turn < 2; ++turn) {
+            const std::vector<Ball> t = nine_table(low);
+            ++cases;
+            GameState s = nine_after_break(turn);
+            Verdict v = apply_shot(s, facts(low, {low, 9}, false), t);
+            combination = combination && s.winner == turn && v.winner == turn;
+            s = nine_after_break(turn);
+            v = apply_shot(s, facts(low, {9}, true), t);
+            wins = wins && s.winner == turn && v.foul == Foul::None;
+            s = nine_after_break(turn);
+            v = apply_shot(s, facts(low == 8 ? 9 : low + 1, {9}, true), t);
+            spotted = spotted && v.respot_nine && !s.over() && v.foul == Foul::WrongBallFirst && s.turn == 1 - turn;
+            s = nine_after_break(turn);
+            v = apply_shot(s, facts(low, {9, 0}, true), t);
+            spotted = spotted && v.respot_nine && !s.over() && v.foul == Foul::Scratch && s.ball_in_hand;
+        }
+    check(cases == 16, "9-ball: the 9's fate judged with every lowest ball, for both players");
+    check(wins, "9-ball: the 9 potted on a legal shot wins");
+    check(combination, "9-ball: the 9 potted in a combination off the lowest ball wins");
+    check(spotted, "9-ball: the 9 potted on a foul is spotted, no winner, ball in hand to the other player");
+}
+
+void nine_ball_three_fouls() {
+    const std::vector<Ball> t = nine_table(3);
+    GameState s = nine_after_break(0);
+    bool going = true;
+    for (int k = 0; k < 2; ++k) {
+        apply_shot(s, facts(5, {}, true), t);   // player 0 fouls
+        apply_shot(s, facts(3, {}, true), t);   // player 1 plays a legal miss
+        going = going && !s.over() && s.turn == 0 && s.fouls_in_row[0] == k + 1 && s.fouls_in_row[1] == 0;
+    }
+    const Verdict third = apply_shot(s, facts(-1, {}, false), t);
+    check(going, "9-ball: fouls count per player while he makes no legal shot");
+    check(third.winner == 1 && s.winner == 1, "9-ball: a third foul in a row loses the game");
+    s = nine_after_break(0);
+    apply_shot(s, facts(5, {}, true), t);
+    apply_shot(s, facts(3, {}, true), t);
+    apply_shot(s, facts(5, {}, true), t);
+    apply_shot(s, facts(3, {}, true), t);
+    apply_shot(s, facts(3, {3}, true), t);  // player 0: a legal pot in between
+    check(s.fouls_in_row[0] == 0 && !s.over(), "9-ball: a legal shot clears the player's fouls");
+}
+
+void nine_ball_break_and_push_out() {
+    const std::vector<Ball> t = nine_table(1);
+    GameState s;
+    s.game = GameKind::NineBall;
+    ShotFacts f = facts(2, {4}, true);
+    Verdict v = apply_shot(s, f, t);
+    check(v.foul == Foul::WrongBallFirst && !s.push_out_allowed, "9-ball: the break must hit the 1 first");
+    s = GameState{};
+    s.game = GameKind::NineBall;
+    f = facts(1, {}, true);
+    f.balls_to_rail = 3;
+    v = apply_shot(s, f, t);
+    check(v.foul == Foul::IllegalBreak, "9-ball: nothing down and three balls to a rail is an illegal break");
+    s = GameState{};
+    s.game = GameKind::NineBall;
+    v = apply_shot(s, facts(1, {9}, true), t);
+    check(s.winner == 0 && v.winner == 0, "9-ball: the 9 on a legal break wins");
+    s = GameState{};
+    s.game = GameKind::NineBall;
+    f = facts(1, {}, true);
+    f.balls_to_rail = 4;
+    apply_shot(s, f, t);
+    check(s.turn == 1 && s.push_out_allowed && !s.ball_in_hand, "9-ball: after a legal dry break the other player may push out");
+    GameState pushed = s;
+    check(declare_push_out(pushed) && pushed.push_out, "9-ball: the shot after the break can be declared a push-out");
+    v = apply_shot(pushed, facts(-1, {}, false), t);
+    check(v.foul == Foul::None && pushed.turn == 0 && pushed.may_pass_back, "9-ball: a push-out needs no contact nor rail; the other player chooses");
+    GameState back = pushed;
+    check(pass_back(back) && back.turn == 1 && !back.may_pass_back && !back.ball_in_hand, "9-ball: passed back, the pusher shoots again");
+    check(!pass_back(back), "9-ball: a shot can be passed back only once, right after the push-out");
+    apply_shot(pushed, facts(1, {}, true), t);
+    check(!declare_push_out(pushed), "9-ball: only the shot right after the break can be a push-out");
+    GameState p9 = s;
+    declare_push_out(p9);
+    v = apply_shot(p9, facts(4, {9}, false), t);
+    check(v.respot_nine && !p9.over(), "9-ball: the 9 potted on a push-out is spotted");
+    GameState scratch = s;
+    declare_push_out(scratch);
+    v = apply_shot(scratch, facts(1, {0}, true), t);
+    check(v.foul == Foul::Scratch && scratch.ball_in_hand && !scratch.may_pass_back, "9-ball: a scratch on a push-out is a foul");
+    GameState eight;
+    check(!declare_push_out(eight), "8-ball has no push-out");
+}
+
+// --- the window's game is the headless one: the same seed played frame by
+// frame through a Simulation as the window plays it (the main loop's rule:
+// at rest, a pocketed cue ball back on the head spot; the shot from the
+// table at rest; frames of kFrameDt until at rest) gives the same shots and
+// the same table as play_computer_game, bit for bit
+GameRecord play_framed_game(const SimConfig &config, uint64_t seed, GameKind kind) {
+    GameRecord game;
+    SimConfig c = config;
+    if (kind == GameKind::NineBall)
+        for (const Ball &b : set_up_nine_ball(config.table, config.seed).balls) c.placements.push_back(Placement{b.number, b.x, b.y});
+    Simulation sim(c);
+    GameState state;
+    state.game = kind;
+    Opponent players[2] = {Opponent(config, seed), Opponent(config, seed + 1)};
+    while (!state.over() && static_cast<int>(game.shots.size()) < kMaxGameShots) {
+        sim.respot_cue();
+        std::vector<Ball> balls = sim.balls();
+        const Plan plan = players[state.turn].choose(state, balls);
+        if (plan.place_cue)
+            for (Ball &b : balls)
+                if (b.number == 0) b = Ball{plan.cue.x, plan.cue.y, 0, 0, 0, true};
+        if (plan.place_cue) sim.set_balls(balls);
+        const std::vector<Ball> before = sim.balls();
+        std::vector<Event> events;
+        sim.shoot(plan.shot);
+        do {
+            sim.step();
+            events.insert(events.end(), sim.frame_events().begin(), sim.frame_events().end());
+        } while (!sim.at_rest());
+        const Verdict v = apply_shot(state, shot_facts(events, before), before);
+        ShotRecord r;
+        r.player = 1 - state.turn;
+        r.shot = plan.shot;
+        r.potted = shot_facts(events, before).potted;
+        game.shots.push_back(r);
+        if (v.respot_eight || v.respot_nine) {
+            balls = sim.balls();
+            respot(sim.table(), balls, v.respot_nine ? 9 : 8);
+            sim.set_balls(balls);
+        }
+    }
+    game.balls = sim.balls();
+    game.winner = state.winner;
+    return game;
+}
+
+void window_plays_the_headless_game() {
+    SimConfig config;
+    int compared = 0;
+    for (GameKind kind : {GameKind::EightBall, GameKind::NineBall})
+        for (int seed = 1; seed <= 2; ++seed) {
+            config.seed = static_cast<uint64_t>(seed);
+            const GameRecord h = play_computer_game(config, config.seed, kind);
+            const GameRecord w = play_framed_game(config, config.seed, kind);
+            bool same = h.shots.size() == w.shots.size() && h.winner == w.winner && h.balls.size() == w.balls.size();
+            for (size_t i = 0; same && i < h.shots.size(); ++i)
+                same = h.shots[i].shot.angle_deg == w.shots[i].shot.angle_deg && h.shots[i].shot.speed == w.shots[i].shot.speed &&
+                       h.shots[i].potted == w.shots[i].potted;
+            for (size_t i = 0; same && i < h.balls.size(); ++i)
+                same = h.balls[i].active == w.balls[i].active && (!h.balls[i].active || (h.balls[i].x == w.balls[i].x && h.balls[i].y == w.balls[i].y));
+            std::printf("    %s seed %d: headless %zu shots, framed %zu shots\n", game_name(kind), seed, h.shots.size(), w.shots.size());
+            ++compared;
+            check(same, std::string(game_name(kind)) + " seed " + std::to_string(seed) +
+                            ": played frame by frame as in the window, the same shots and table as headless");
+        }
+    check(compared == 4, "four games compared frame by frame against headless");
+}
+
+// --- 9-ball, computer against computer: the diamond rack, and games that
+// end by the 9 or by three fouls, the turn passing as the rules say
+void nine_ball_games(int count) {
+    SimConfig config;
+    const Setup rack = set_up_nine_ball(config.table, 1);
+    bool diamond = rack.balls.size() == 10;
+    for (const Ball &b : rack.balls) diamond = diamond && b.number >= 0 && b.number <= 9;
+    const auto at = [&](int n) {
+        for (const Ball &b : rack.balls)
+            if (b.number == n) return b;
+        return Ball{};
+    };
+    // the 1 at the apex (nearest the head rail of the nine), the 9 at the centre (two rows behind it)
+    for (const Ball &b : rack.balls)
+        if (b.number > 1) diamond = diamond && b.x > at(1).x;
+    diamond = diamond && std::fabs(at(9).y - at(1).y) < kBallRadius && at(9).x > at(1).x + 3 * kBallRadius;
+    check(diamond, "the 9-ball rack: balls 1-9, the 1 at the apex, the 9 in the middle");
+    for (int seed = 1; seed <= count; ++seed) {
+        config.seed = static_cast<uint64_t>(seed);
+        const GameRecord g = play_computer_game(config, config.seed, GameKind::NineBall);
+        bool turns = true, nine_down = false;
+        for (size_t i = 0; i + 1 < g.shots.size(); ++i) {
+            const ShotRecord &r = g.shots[i];
+            turns = turns && (g.shots[i + 1].player == (r.keeps_turn ? r.player : 1 - r.player));
+            turns = turns && (g.shots[i + 1].placed == (r.foul != Foul::None));
+        }
+        for (const Ball &b : g.balls)
+            if (b.number == 9) nine_down = !b.active;
+        const bool by_nine = g.reason.find("potted the 9") != std::string::npos;
+        const bool by_fouls = g.reason.find("third foul") != std::string::npos;
+        std::printf("    9-ball seed %d: %zu shots, %d fouls, winner %d (%s)\n", seed, g.shots.size(), g.fouls, g.winner,
+                    g.reason.c_str());
+        const std::string s = " (9-ball seed " + std::to_string(seed) + ")";
+        check(g.winner == 0 || g.winner == 1, "the game ends with a winner" + s);
+        check((by_nine && nine_down) || by_fouls, "it ends with the 9 down or on a third foul" + s);
+        check(turns, "the turn passes exactly when the rules say, ball in hand after each foul" + s);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -270,6 +535,12 @@ int main(int argc, char **argv) {
     eight_ball();
     facts_from_events();
     placement();
+    nine_ball_first_contact();
+    nine_ball_the_nine();
+    nine_ball_three_fouls();
+    nine_ball_break_and_push_out();
     games(count);
+    nine_ball_games(count);
+    window_plays_the_headless_game();
     return demo_tests::check_summary("test_game");
 }

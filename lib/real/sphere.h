@@ -109,15 +109,31 @@
  *   range, an impulse (mass x speed), R^2/I or R w may overflow, or a
  *   product underflow to a subnormal or to zero (a light ball's impulse,
  *   then divided by its tiny mass; a subnormal spin's product, which R
- *   makes count).  So the plain path is taken only where c2d_sphere_ordinary
- *   (every input within 2^+-EMAX/16) or the step-by-step check
- *   (c2d_sphere_fine: every impulse, inverse mass, R/I, R^2/I, slip and
- *   spin change finite and normal, or exactly zero from a zero factor)
- *   says no step left the normal range; elsewhere the same equations run
+ *   makes count).  So the plain path is taken only where the window test
+ *   (every input - masses, radii, inertias, velocities, spins, the normal
+ *   and mu - zero or within 2^+-EMAX/16, C2D_SPHERE_WINDOW below) or the
+ *   step-by-step check (c2d_sphere_fine: every impulse, inverse mass, R/I,
+ *   R^2/I, slip and spin change finite and normal, or exactly zero from a
+ *   zero factor) says no step left the normal range; the window implies
+ *   every check, so which of the two decides changes no bit (the window
+ *   only skips the checks, the inverses' guards and the outputs' finite
+ *   test, all of which it makes pass).  The window test
+ *   itself is branch-free on the bits (c2d_span_add: the least u - 1 and
+ *   the largest u of u = bits << 1, zeros passing) for the fields that may
+ *   be zero, and the least and largest value of the masses, inertias and
+ *   radii, which it needs positive; run before validation, so that inside
+ *   it only the positions are left to check.  Elsewhere the same equations run
  *   in double length with an extended exponent (real/arith/dd.h) and each
  *   output is rounded once on top of its start: C2D_RANGE only when an
  *   output itself overflows.  Everywhere else, bit for bit the plain path.
- *   The glancing normal speed's scaled exact products fall back to exact
+ *   The glancing normal speed's exact products run unscaled inside the
+ *   window (and with dl, the position difference's rounding error, zero or
+ *   at least 2^-W): every term is then a product of two inputs or of their
+ *   rounding errors, nonzero ones within 2^+-(2 W + 4 MANT), so no step
+ *   over- or underflows and the scaling below changes no bit; with FMA
+ *   where run-time dispatch finds it (the same bits: the TwoProduct's error
+ *   is exact either way).  Outside, they are scaled by powers of two, and
+ *   fall back to exact
  *   sums with extended exponents (c2d_normal_speed_dd) where the scaling
  *   would lose a component far below the largest, and a speed too small
  *   for the format stays an approach (the smallest subnormal, then the
@@ -186,9 +202,8 @@ static int c2d_ball_valid(const c2d_real_ball *d)
  * two finite; friction may be INFINITY (never slides). */
 static int c2d_ball_surface_valid(const c2d_real_ball_surface *s)
 {
-    return s->restitution >= 0 && s->restitution <= 1 && s->friction >= 0 &&
-           c2d_finite4(s->friction_boost, s->friction_decay, 0, 0) && s->friction_boost >= 0 &&
-           s->friction_decay >= 0;
+    return s->restitution >= 0 && s->restitution <= 1 && s->friction >= 0 && s->friction_boost >= 0 &&
+           s->friction_boost <= C2D_R_MAX && s->friction_decay >= 0 && s->friction_decay <= C2D_R_MAX;
 }
 
 static c2d_real c2d_ball_friction(const c2d_real_ball_surface *s, c2d_real slip)
@@ -219,6 +234,118 @@ static c2d_real c2d_unit_normal(c2d_real *nx, c2d_real *ny, c2d_real x, c2d_real
     *ny = y / l;
     return l * m;
 }
+
+/* The fast test that makes the checks below unnecessary: every nonzero
+ * input magnitude (masses, radii, inertias, velocity and spin components,
+ * the normal, mu; the cushion's cos(th)) within 2^+-W, W = EMAX / 16
+ * (double 63, float 7).  Each
+ * quantity the plain path forms is then a product or quotient of at most
+ * ten of them, or a cancelling sum of such (at least a product of two
+ * input ulps when nonzero): within 2^+-(10 W + 2 MANT + 8), inside the
+ * normal range, so no step over- or underflows, and every output (a
+ * start, itself such a quantity or c2d_collide's finite result of them,
+ * plus changes of that size) is finite.  Infinite masses and inertias fail
+ * it (the checks then decide). */
+#define C2D_SPHERE_WINDOW (C2D_R_EMAX / 16)
+
+/* The test by the bits, branch-free: u = bits << 1 (the sign shifted out)
+ * orders the magnitudes as integers, +0 at u = 0 and infinity above every
+ * finite one; u - 1 takes zero to the largest integer, so the least u - 1
+ * is the smallest nonzero magnitude's and zeros pass, as above.  One
+ * compare-and-select per bound and input, no loop: the same verdict as
+ * comparing the magnitudes.  It runs before validation: a NaN, whose u is
+ * above infinity's, fails it, and validation then runs in full. */
+typedef struct c2d_sphere_span { c2d_real_bits lo, hi; } c2d_sphere_span;
+
+static void c2d_span_start(c2d_sphere_span *s)
+{
+    s->lo = (c2d_real_bits)~(c2d_real_bits)0;
+    s->hi = 0;
+}
+
+static void c2d_span_add(c2d_sphere_span *s, c2d_real x)
+{
+    const c2d_real_bits u = (c2d_real_bits)(c2d_bits(x) << 1), v = (c2d_real_bits)(u - 1u);
+    s->lo = v < s->lo ? v : s->lo;
+    s->hi = u > s->hi ? u : s->hi;
+}
+
+static int c2d_span_ordinary(const c2d_sphere_span *s)
+{
+    return s->lo >= (c2d_real_bits)((c2d_real_bits)(c2d_bits(c2d_pow2(-C2D_SPHERE_WINDOW)) << 1) - 1u) &&
+           s->hi <= (c2d_real_bits)(c2d_bits(c2d_pow2(C2D_SPHERE_WINDOW)) << 1);
+}
+
+/* mu in the window (or 0, or INFINITY, which is never multiplied). */
+static int c2d_sphere_mu_ordinary(c2d_real mu)
+{
+    return (mu >= c2d_pow2(-C2D_SPHERE_WINDOW) && mu <= c2d_pow2(C2D_SPHERE_WINDOW)) || mu == 0 || mu > C2D_R_MAX;
+}
+
+/* A ball's fields that may be zero: velocity, spin. */
+C2D_HOT void c2d_ball_span(c2d_sphere_span *s, const c2d_real_ball *d)
+{
+    c2d_span_add(s, d->vel.x);
+    c2d_span_add(s, d->vel.y);
+    c2d_span_add(s, d->spin[0]);
+    c2d_span_add(s, d->spin[1]);
+    c2d_span_add(s, d->spin[2]);
+}
+
+/* The masses, inertias and radii in the window by their least and largest
+ * value, all positive (so inside it they are valid too; a radius of zero,
+ * valid, fails it and the checks decide); a NaN, which the selections may
+ * drop, makes the sum fail. */
+C2D_HOT int c2d_balls_sizes_ordinary(const c2d_real_ball *a, const c2d_real_ball *b)
+{
+    c2d_real lo = a->mass < a->inertia ? a->mass : a->inertia, hi = a->mass > a->inertia ? a->mass : a->inertia;
+    lo = a->radius < lo ? a->radius : lo;
+    lo = b->mass < lo ? b->mass : lo;
+    lo = b->inertia < lo ? b->inertia : lo;
+    lo = b->radius < lo ? b->radius : lo;
+    hi = a->radius > hi ? a->radius : hi;
+    hi = b->mass > hi ? b->mass : hi;
+    hi = b->inertia > hi ? b->inertia : hi;
+    hi = b->radius > hi ? b->radius : hi;
+    return lo >= c2d_pow2(-C2D_SPHERE_WINDOW) && hi <= c2d_pow2(C2D_SPHERE_WINDOW) &&
+           ((a->mass + a->inertia) + a->radius) + ((b->mass + b->inertia) + b->radius) <=
+               c2d_pow2(C2D_SPHERE_WINDOW + 3);
+}
+
+/* Both balls in the window (their span and masses, from
+ * c2d_real_collide_balls) and the position difference dh. */
+static int c2d_balls_ordinary(const c2d_sphere_span *balls, const c2d_real_vec *dh)
+{
+    c2d_sphere_span s;
+    s.lo = balls->lo;
+    s.hi = balls->hi;
+    c2d_span_add(&s, dh->x);
+    c2d_span_add(&s, dh->y);
+    return c2d_span_ordinary(&s);
+}
+
+/* dl, the position difference's rounding error, zero or at least 2^-W
+ * (at most ulp(dh) / 2, so below 2^W with dh): what c2d_normal_speed's
+ * unscaled exact products need on top of the window. */
+static int c2d_sphere_low_ordinary(const c2d_real_vec *dl)
+{
+    const c2d_real_bits lo = (c2d_real_bits)((c2d_real_bits)(c2d_bits(c2d_pow2(-C2D_SPHERE_WINDOW)) << 1) - 1u);
+    return (c2d_real_bits)((c2d_real_bits)(c2d_bits(dl->x) << 1) - 1u) >= lo &&
+           (c2d_real_bits)((c2d_real_bits)(c2d_bits(dl->y) << 1) - 1u) >= lo;
+}
+
+#ifdef C2D_R_FUSED
+/* c2d_dot2 compiled for x86-64-v3, its TwoProducts fused (the same bits:
+ * the error term is exact either way), for c2d_normal_speed's unscaled
+ * exact products where run-time dispatch finds FMA. */
+__attribute__((target("arch=x86-64-v3"))) C2D_COLD c2d_real c2d_sphere_dot2_fused(const c2d_real_vec *nh,
+                                                                                   const c2d_real_vec *nl,
+                                                                                   const c2d_real_vec *va,
+                                                                                   const c2d_real_vec *vb)
+{
+    return c2d_dot2_as(nh, nl, va, vb, 1);
+}
+#endif
 
 /* (vb - va).n^ to a few u of itself.  A glancing impact's normal speed is a
  * cancelling sum, and the normal impulse it gives reaches the spins through
@@ -295,13 +422,11 @@ C2D_COLD c2d_real c2d_normal_speed_dd(const c2d_real_vec *dh, const c2d_real_vec
  * same bits) wherever the unscaled evaluation neither overflows nor
  * underflows; elsewhere only components below 2^EMIN of the largest lose
  * bits, far inside the ~u^2 of the terms the double-double allows. */
-static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len, c2d_real nx,
-                                 c2d_real ny, const c2d_real_vec *va, const c2d_real_vec *vb)
+C2D_COLD c2d_real c2d_normal_speed_scaled(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len,
+                                          const c2d_real_vec *va, const c2d_real_vec *vb)
 {
-    c2d_real dvx = vb->x - va->x, dvy = vb->y - va->y, gn = dvx * nx + dvy * ny;
     c2d_real_vec h, l, a, b;
     int kn, kv;
-    if (2 * c2d_abs(gn) >= c2d_abs(dvx) + c2d_abs(dvy)) return gn;
     kn = c2d_sphere_scale_of(dh->x, dh->y, 0, 0);
     kv = c2d_sphere_scale_of(va->x, va->y, vb->x, vb->y);
     c2d_sphere_scale_vec(&h, dh, -kn);
@@ -316,18 +441,44 @@ static c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl,
     return c2d_sphere_keep_sign(c2d_dot2(&h, &l, &a, &b) / len, kv);
 }
 
-/* |(x, y)|: plainly, or scaled by a power of two where the squares would
- * overflow or underflow (the same bits wherever they do not). */
-static c2d_real c2d_sphere_length(c2d_real x, c2d_real y)
+/* The plain value, or inside the window (ordinary: both balls and dh, and
+ * here dl) the exact products unscaled: every term they form is a product
+ * of at most two inputs or their rounding errors, within 2^+-(2 W + 4 MANT)
+ * when nonzero, so no step over- or underflows and scaling by powers of two
+ * would change no bit (c2d_normal_speed_scaled's result, for less). */
+C2D_HOT c2d_real c2d_normal_speed(const c2d_real_vec *dh, const c2d_real_vec *dl, c2d_real len, c2d_real nx,
+                                  c2d_real ny, const c2d_real_vec *va, const c2d_real_vec *vb, int ordinary)
 {
-    c2d_real s = C2D_R_SQRT(x * x + y * y);
-    int k;
-    if ((s <= C2D_R_MAX && s >= c2d_pow2(C2D_R_EMIN / 2)) || !c2d_finite4(x, y, 0, 0) || (x == 0 && y == 0))
-        return s;
-    k = c2d_sphere_scale_of(x, y, 0, 0);
+    c2d_real dvx = vb->x - va->x, dvy = vb->y - va->y, gn = dvx * nx + dvy * ny;
+    if (2 * c2d_abs(gn) >= c2d_abs(dvx) + c2d_abs(dvy)) return gn;
+    if (ordinary != 0 && c2d_sphere_low_ordinary(dl)) {
+#ifdef C2D_R_FUSED
+        if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+            return c2d_sphere_dot2_fused(dh, dl, va, vb) / len;
+#endif
+        return c2d_dot2(dh, dl, va, vb) / len;
+    }
+    return c2d_normal_speed_scaled(dh, dl, len, va, vb);
+}
+
+/* |(x, y)| scaled by a power of two (the squares would over- or underflow). */
+C2D_COLD c2d_real c2d_sphere_length_scaled(c2d_real x, c2d_real y)
+{
+    const int k = c2d_sphere_scale_of(x, y, 0, 0);
     x = c2d_scale2(x, -k);
     y = c2d_scale2(y, -k);
     return c2d_scale2(C2D_R_SQRT(x * x + y * y), k);
+}
+
+/* |(x, y)|: plainly, or scaled by a power of two where the squares would
+ * overflow or underflow (the same bits wherever they do not); the plain
+ * test inline, the scaled tier out of line. */
+C2D_HOT c2d_real c2d_sphere_length(c2d_real x, c2d_real y)
+{
+    const c2d_real s = C2D_R_SQRT(x * x + y * y);
+    if ((s <= C2D_R_MAX && s >= c2d_pow2(C2D_R_EMIN / 2)) || !c2d_finite4(x, y, 0, 0) || (x == 0 && y == 0))
+        return s;
+    return c2d_sphere_length_scaled(x, y);
 }
 
 static void c2d_ball_body(c2d_real_body *body, const c2d_real_ball *d)
@@ -376,43 +527,6 @@ static void c2d_ball_friction_apply(c2d_ball_out *o, const c2d_real_vec *v_norma
 static int c2d_sphere_fine(c2d_real p, c2d_real x, c2d_real y)
 {
     return c2d_finite4(p, 0, 0, 0) && (p == 0 ? (x == 0 || y == 0) : c2d_abs(p) >= c2d_pow2(C2D_R_EMIN));
-}
-
-/* The fast test that makes the checks below unnecessary: every nonzero
- * magnitude in x within 2^+-W, W = EMAX / 16 (double 63, float 7).  Each
- * quantity the plain path forms is then a product or quotient of at most
- * ten of them, or a cancelling sum of such (at least a product of two
- * input ulps when nonzero): within 2^+-(10 W + 2 MANT + 8), inside the
- * normal range, so no step over- or underflows.  Infinite masses and
- * inertias fail it (the checks then decide). */
-#define C2D_SPHERE_WINDOW (C2D_R_EMAX / 16)
-
-static int c2d_sphere_ordinary(const c2d_real *x, int n)
-{
-    c2d_real lo = 1, hi = 1;
-    int i;
-    for (i = 0; i < n; i++) {
-        c2d_real t = c2d_abs(x[i]);
-        if (t != 0) {
-            lo = t < lo ? t : lo;
-            hi = t > hi ? t : hi;
-        }
-    }
-    return lo >= c2d_pow2(-C2D_SPHERE_WINDOW) && hi <= c2d_pow2(C2D_SPHERE_WINDOW);
-}
-
-/* mu in the window (or 0, or INFINITY, which is never multiplied). */
-static int c2d_sphere_mu_ordinary(c2d_real mu)
-{
-    return mu == 0 || mu > C2D_R_MAX || (mu >= c2d_pow2(-C2D_SPHERE_WINDOW) && mu <= c2d_pow2(C2D_SPHERE_WINDOW));
-}
-
-static int c2d_balls_ordinary(const c2d_real_ball *a, const c2d_real_ball *b, const c2d_real_vec *dh)
-{
-    const c2d_real x[18] = {a->mass,    a->radius,  a->inertia, a->vel.x,   a->vel.y,   a->spin[0],
-                            a->spin[1], a->spin[2], b->mass,    b->radius,  b->inertia, b->vel.x,
-                            b->vel.y,   b->spin[0], b->spin[1], b->spin[2], dh->x,      dh->y};
-    return c2d_sphere_ordinary(x, 18);
 }
 
 /* A subnormal spin loses bits in every product the plain path takes of it,
@@ -588,7 +702,8 @@ C2D_COLD c2d_status c2d_balls_friction_dd(c2d_real_ball *a, c2d_real_ball *b, co
  * subnormal or an underflow to zero, which would cost the result its
  * bound; any such sends the pair to the slow path. */
 static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_body *ta,
-                                     const c2d_real_body *tb, const c2d_real_ball_surface *s)
+                                     const c2d_real_body *tb, const c2d_real_ball_surface *s,
+                                     const c2d_sphere_span *balls, int balls_ordinary)
 {
     c2d_real nx, ny, gn, gt, gz, g, qa, qb, ia, ib, ka, kb, ima, imb, inv_mn, inv_mt, len, jn, f;
     c2d_real jt, jz;
@@ -603,22 +718,29 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
         dh.y = c2d_two_sum(b->pos.y * (c2d_real)0.5, -a->pos.y * (c2d_real)0.5, &dl.y);
     }
     len = c2d_unit_normal(&nx, &ny, dh.x, dh.y);
-    ia = c2d_sphere_inverse(a->inertia);
-    ib = c2d_sphere_inverse(b->inertia);
+    fast = balls_ordinary && c2d_balls_ordinary(balls, &dh);
+    if (fast != 0) { /* finite masses and inertias: the same quotients */
+        ia = 1 / a->inertia;
+        ib = 1 / b->inertia;
+        ima = 1 / a->mass;
+        imb = 1 / b->mass;
+    } else {
+        ia = c2d_sphere_inverse(a->inertia);
+        ib = c2d_sphere_inverse(b->inertia);
+        ima = c2d_sphere_inverse(a->mass);
+        imb = c2d_sphere_inverse(b->mass);
+    }
     qa = a->radius * ia;
     qb = b->radius * ib;
-    ima = c2d_sphere_inverse(a->mass);
-    imb = c2d_sphere_inverse(b->mass);
     inv_mn = ima + imb;
     ka = a->radius * qa;
     kb = b->radius * qb;
     inv_mt = inv_mn + ka + kb;
-    gn = c2d_normal_speed(&dh, &dl, len, nx, ny, &a->vel, &b->vel);
+    gn = c2d_normal_speed(&dh, &dl, len, nx, ny, &a->vel, &b->vel, fast);
     gt = (dvy * nx - dvx * ny) - (a->radius * a->spin[2] + b->radius * b->spin[2]);
     gz = -(a->radius * (a->spin[0] * ny - a->spin[1] * nx) + b->radius * (b->spin[0] * ny - b->spin[1] * nx));
     g = c2d_sphere_length(gt, gz);
     jn = gn < 0 ? -(1 + s->restitution) * gn / inv_mn : 0;
-    fast = c2d_balls_ordinary(a, b, &dh);
     fine = fast || (c2d_sphere_fine(ia, ia, 1) && c2d_sphere_fine(ib, ib, 1) && c2d_sphere_fine(qa, a->radius, ia) &&
            c2d_sphere_fine(qb, b->radius, ib) && c2d_sphere_fine(ima, ima, 1) && c2d_sphere_fine(imb, imb, 1) &&
            c2d_sphere_fine(ka, a->radius, qa) && c2d_sphere_fine(kb, b->radius, qb) &&
@@ -639,19 +761,34 @@ static c2d_status c2d_balls_friction(c2d_real_ball *a, c2d_real_ball *b, const c
                              c2d_sphere_fine(qb * jt, qb, jt) && c2d_sphere_fine(qb * jz, qb, jz)));
     c2d_ball_friction_apply(&oa, &ta->vel, a, ima, qa, nx, ny, jt, jz, -1);
     c2d_ball_friction_apply(&ob, &tb->vel, b, imb, qb, nx, ny, jt, jz, 1);
-    fine = fine && c2d_ball_out_finite(&oa) && c2d_ball_out_finite(&ob);
+    fine = fine && (fast || (c2d_ball_out_finite(&oa) && c2d_ball_out_finite(&ob)));
     if (!fine) return c2d_balls_friction_dd(a, b, ta, tb, s);
     c2d_ball_write(a, &oa);
     c2d_ball_write(b, &ob);
     return C2D_OK;
 }
 
+/* Both balls valid when both are in the window (every field but the
+ * position finite, masses, inertias and radii positive): the positions
+ * finite. */
+static int c2d_balls_valid_ordinary(const c2d_real_ball *a, const c2d_real_ball *b)
+{
+    return c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y);
+}
+
 static c2d_status c2d_real_collide_balls(c2d_real_ball *a, c2d_real_ball *b, const c2d_real_ball_surface *s)
 {
     c2d_real_body ta, tb;
     c2d_status st;
-    if (a == NULL || b == NULL || !c2d_ball_valid(a) || !c2d_ball_valid(b) || !c2d_ball_surface_valid(s))
-        return C2D_INVALID;
+    c2d_sphere_span w;
+    int valid, ordinary;
+    if (a == NULL || b == NULL) return C2D_INVALID;
+    c2d_span_start(&w);
+    c2d_ball_span(&w, a);
+    c2d_ball_span(&w, b);
+    ordinary = c2d_span_ordinary(&w) && c2d_balls_sizes_ordinary(a, b);
+    valid = ordinary ? c2d_balls_valid_ordinary(a, b) : (c2d_ball_valid(a) && c2d_ball_valid(b));
+    if (!valid || !c2d_ball_surface_valid(s)) return C2D_INVALID;
     if (a == b) return C2D_DEGENERATE;
     c2d_ball_body(&ta, a);
     c2d_ball_body(&tb, b);
@@ -664,7 +801,7 @@ static c2d_status c2d_real_collide_balls(c2d_real_ball *a, c2d_real_ball *b, con
         b->vel.y = tb.vel.y;
         return C2D_OK;
     }
-    return c2d_balls_friction(a, b, &ta, &tb, s);
+    return c2d_balls_friction(a, b, &ta, &tb, s, &w, ordinary);
 }
 
 /* A rail: restitution in [0, 1], friction >= 0 (INFINITY: never slides),
@@ -802,12 +939,22 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     c2d_real nx, ny, sn, cs, vn, vt, wn, wt, pn, s1, s2, sl, f, len, im, ii, rr, k, u, q, f1, f2, qf;
     c2d_real_vec zero = {0, 0};
     c2d_ball_out o;
-    int fine, fast;
-    if (d == NULL || !c2d_ball_valid(d) || !c2d_cushion_valid(c, d)) return C2D_INVALID;
+    c2d_sphere_span w;
+    int fine, fast, ordinary;
+    if (d == NULL) return C2D_INVALID;
+    c2d_span_start(&w);
+    c2d_ball_span(&w, d);
+    ordinary = c2d_span_ordinary(&w) && c2d_balls_sizes_ordinary(d, d);
+    if (!(ordinary ? c2d_finite4(d->pos.x, d->pos.y, 0, 0) : c2d_ball_valid(d)) || !c2d_cushion_valid(c, d))
+        return C2D_INVALID;
     if (c->normal.x == 0 && c->normal.y == 0) return C2D_DEGENERATE;
     len = c2d_unit_normal(&nx, &ny, c->normal.x, c->normal.y);
     sn = c2d_cushion_tilt(d->radius, c->height, &cs);
-    vn = c2d_normal_speed(&c->normal, &zero, len, nx, ny, &zero, &d->vel);
+    c2d_span_add(&w, c->normal.x);
+    c2d_span_add(&w, c->normal.y);
+    c2d_span_add(&w, cs);
+    fast = ordinary && c2d_span_ordinary(&w) && c2d_sphere_mu_ordinary(c->friction);
+    vn = c2d_normal_speed(&c->normal, &zero, len, nx, ny, &zero, &d->vel, fast);
     if (!(vn > 0) || sn == 1) return C2D_SEPARATING; /* sn = 1 exactly when h = 2R */
     u = cs * vn;
     vt = d->vel.y * nx - d->vel.x * ny;
@@ -818,15 +965,10 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
     s2 = -sn * vn - d->radius * wt;
     sl = c2d_sphere_length(s1, s2);
     im = 1 / d->mass;
-    ii = c2d_sphere_inverse(d->inertia);
+    ii = fast ? 1 / d->inertia : c2d_sphere_inverse(d->inertia);
     rr = d->radius * d->radius;
     k = rr * ii;
     q = d->radius * ii;
-    {
-        const c2d_real x[11] = {d->mass,    d->radius,  d->inertia,  d->vel.x,    d->vel.y, d->spin[0],
-                                d->spin[1], d->spin[2], c->normal.x, c->normal.y, cs};
-        fast = c2d_sphere_ordinary(x, 11) && c2d_sphere_mu_ordinary(c->friction);
-    }
     fine = fast || (c2d_sphere_fine(vn, 1, 1) && c2d_sphere_fine(u, 1, 1) && c2d_sphere_fine(pn, 1, 1) &&
                     c2d_finite4(sl, 0, 0, 0) && c2d_sphere_fine(im, 1, 1) && c2d_sphere_fine(ii, ii, 1) &&
                     c2d_sphere_fine(rr, 1, 1) && c2d_sphere_fine(k, ii, 1) && c2d_sphere_fine(q, ii, 1) &&
@@ -845,7 +987,7 @@ static c2d_status c2d_real_collide_cushion(c2d_real_ball *d, const c2d_real_cush
                              c2d_sphere_fine(q * f2, q, f2) && c2d_sphere_fine(pn * cs, 1, 1) &&
                              c2d_sphere_fine(f2 * sn, f2, sn)));
     c2d_cushion_apply(&o, d, nx, ny, sn, cs, pn, f1, f2);
-    if (!fine || !c2d_ball_out_finite(&o)) return c2d_cushion_dd(d, c);
+    if (!fine || (!fast && !c2d_ball_out_finite(&o))) return c2d_cushion_dd(d, c);
     c2d_ball_write(d, &o);
     return C2D_OK;
 }

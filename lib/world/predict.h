@@ -363,6 +363,7 @@ static int c2d_w_pair_refused_now(const c2d_world *w, const c2d_w_disk *p, const
 /* What a prediction keeps of its own disk i for its straight candidates. */
 typedef struct c2d_w_self {
     double x, y, vx, vy, t, radius, now;
+    double x0, y0;                /* x + vx * 0 and y + vy * 0: the position at age +0 */
     double width, height, hw, hh; /* the box, and half of it (periodic) */
     double nhw, nhh;              /* minus the halves (the same bits as -hw, -hh), loaded not negated per candidate */
     int periodic;
@@ -377,6 +378,53 @@ C2D_W_HOT void c2d_w_nearest(const c2d_w_self *s, double *dx, double *dy)
     else if (*dx < s->nhw) *dx += s->width;
     if (*dy > s->hh) *dy -= s->height;
     else if (*dy < s->nhh) *dy += s->height;
+}
+
+/* c2d_time_of_impact's plain path (lib/real/toi.h, c2d_toi_plain) for a
+ * pair in the relative frame (a at the origin at rest, b at d moving at
+ * v), operation for operation, so its time is the same bits: the
+ * subtractions b - a it starts with are exact against a zero (-0 - +0 is
+ * -0), and every quantity it forms is a product of two components, a
+ * square or an absolute value, so negating d and v (the higher index's
+ * view, c2d_w_try_straight) changes none of them.  Inlined, it costs no
+ * call, no argument checks and no bodies; dv = d.v and k = |dx vx| +
+ * |dy vy| are the candidate test's dot and mag (the same expressions, so
+ * the same bits).  1: an impact at
+ * *t; 0: none (receding, a miss, no relative motion); -1: the plain path
+ * would not decide (outside its window, near touching, near a graze),
+ * and the library's call does. */
+C2D_W_HOT int c2d_w_toi_plain(double dx, double dy, double vx, double vy, double r, double dv, double k, double *t)
+{
+    const double lo = 0x1p-100, hi = 0x1p100, u8 = 0x1p-50, u16 = 0x1p-49; /* C2D_R_TOI_WINDOW, 8u, 16u */
+    const double ax = C2D_W_FABS(dx), ay = C2D_W_FABS(dy), bx = C2D_W_FABS(vx), by = C2D_W_FABS(vy);
+    double q, r2, a2, dist, speed, cross, h, kc;
+    /* The window (every input 0 or within [lo, hi], their sum at most hi):
+     * first as all nonzero, the common case, then with zeros left out. */
+    if (!((ax + ay) + (bx + by) + r <= hi)) return -1;
+    if (!(ax >= lo && ay >= lo && bx >= lo && by >= lo && r >= lo) &&
+        !((ax == 0 || ax >= lo) && (ay == 0 || ay >= lo) && (bx == 0 || bx >= lo) && (by == 0 || by >= lo) &&
+          (r == 0 || r >= lo)))
+        return -1;
+    if ((vx == 0 && vy == 0) || (dx == 0 && dy == 0)) return 0;
+    if (!(C2D_W_FABS(dv) > u8 * k)) return -1;
+    if (dv > 0) return 0;
+    q = dx * dx + dy * dy;
+    r2 = r * r;
+    if (!(C2D_W_FABS(q - r2) > u16 * (q > r2 ? q : r2))) return -1; /* touching: the library's c2d_toi_touching */
+    if (q < r2) {
+        *t = 0;
+        return 1;
+    }
+    a2 = vx * vx + vy * vy;
+    cross = dx * vy - dy * vx;
+    kc = C2D_W_FABS(dx * vy) + C2D_W_FABS(dy * vx);
+    if (!(C2D_W_FABS(cross * cross - r2 * a2) > u16 * (C2D_W_FABS(cross) * kc + r2 * a2))) return -1;
+    if (cross * cross > r2 * a2) return 0;
+    dist = C2D_W_SQRT(q);
+    speed = C2D_W_SQRT(a2);
+    h = C2D_W_FABS(cross) / speed;
+    *t = (dist - r) * (dist + r) / (speed * C2D_W_SQRT((r - h) * (r + h)) - dv);
+    return 1;
 }
 
 /* A straight pair (no acceleration on either): its relative state in the
@@ -402,10 +450,20 @@ C2D_W_HOT void c2d_w_nearest(const c2d_w_self *s, double *dx, double *dy)
 C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, uint32_t j, c2d_w_best *best)
 {
     const c2d_w_disk *q = &w->disk[j];
-    const double qt = q->t, t0 = qt > self->t ? qt : self->t, sp = t0 - self->t, sq = t0 - qt;
-    const double rs = self->radius + q->radius;
-    double dx = (q->x + q->vx * sq) - (self->x + self->vx * sp), dy = (q->y + q->vy * sq) - (self->y + self->vy * sp);
-    double dvx = q->vx - self->vx, dvy = q->vy - self->vy, dot, mag, toi, when;
+    const double qt = q->t, rs = self->radius + q->radius;
+    double t0, dx, dy, dvx = q->vx - self->vx, dvy = q->vy - self->vy, dot, mag, toi, when;
+    /* t0 = the later state time; when it is the predictor's own (most
+     * often: it has just had an impact), its age sp is +0 and its
+     * position x + vx sp is the frame's x0 (the same operation). */
+    if (qt <= self->t) {
+        const double sq = self->t - qt;
+        t0 = self->t;
+        dx = (q->x + q->vx * sq) - self->x0, dy = (q->y + q->vy * sq) - self->y0;
+    } else {
+        const double sp = qt - self->t, sq = qt - qt;
+        t0 = qt;
+        dx = (q->x + q->vx * sq) - (self->x + self->vx * sp), dy = (q->y + q->vy * sq) - (self->y + self->vy * sp);
+    }
     c2d_body a, b;
     if (self->periodic) c2d_w_nearest(self, &dx, &dy);
     dot = dx * dvx + dy * dvy;
@@ -425,10 +483,16 @@ C2D_W_HOT void c2d_w_try_straight(const c2d_world *w, const c2d_w_self *self, ui
     } else if (dvx == 0 && dvy == 0) {
         return;
     }
-    if (j < self->i) dx = -dx, dy = -dy, dvx = -dvx, dvy = -dvy;
-    a.pos.x = a.pos.y = a.vel.x = a.vel.y = 0, a.mass = 1;
-    b.pos.x = dx, b.pos.y = dy, b.vel.x = dvx, b.vel.y = dvy, b.mass = 1; /* masses: ignored */
-    if (C2D_W_TOI(&a, &b, rs, &toi) != C2D_OK) return;
+    switch (c2d_w_toi_plain(dx, dy, dvx, dvy, rs, dot, mag, &toi)) {
+    case 0: return;
+    case 1: break;
+    default:
+        if (j < self->i) dx = -dx, dy = -dy, dvx = -dvx, dvy = -dvy;
+        a.pos.x = a.pos.y = a.vel.x = a.vel.y = 0, a.mass = 1;
+        b.pos.x = dx, b.pos.y = dy, b.vel.x = dvx, b.vel.y = dvy, b.mass = 1; /* masses: ignored */
+        if (C2D_W_TOI(&a, &b, rs, &toi) != C2D_OK) return;
+        break;
+    }
     when = t0 + toi;
     if (when <= self->now) {
         const uint32_t lo = j < self->i ? j : self->i, hi = j < self->i ? self->i : j;
@@ -444,6 +508,7 @@ static void c2d_w_self_of(const c2d_world *w, uint32_t i, c2d_w_self *self)
 {
     const c2d_w_disk *p = &w->disk[i];
     self->x = p->x, self->y = p->y, self->vx = p->vx, self->vy = p->vy, self->t = p->t, self->radius = p->radius;
+    self->x0 = p->x + p->vx * 0.0, self->y0 = p->y + p->vy * 0.0;
     self->now = w->now, self->i = i;
     self->width = w->width, self->height = w->height, self->hw = 0.5 * w->width, self->hh = 0.5 * w->height;
     self->nhw = -self->hw, self->nhh = -self->hh;
@@ -565,13 +630,27 @@ C2D_W_HOT size_t c2d_w_beyond(size_t c, size_t m, int periodic, int dir, size_t 
     return 1;
 }
 
-static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best, c2d_w_best *cross,
+/* A cell's first disk j (C2D_W_NONE: empty) added to the candidates'
+ * starts, its state fetched ahead. */
+C2D_W_HOT size_t c2d_w_first(const c2d_w_disk *d, uint32_t *first, size_t n, uint32_t j)
+{
+    if (j == C2D_W_NONE) return n;
+    first[n] = j;
+#ifdef __GNUC__
+    __builtin_prefetch(&d[j]);
+#else
+    (void)d;
+#endif
+    return n + 1;
+}
+
+C2D_W_NO_SLP static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *a, c2d_w_best *best, c2d_w_best *cross,
                                 uint32_t side)
 {
     const c2d_w_disk *d = w->disk, *p = &d[i];
     const size_t mx = w->mx, my = w->my, cx = p->cell % mx, cy = p->cell / mx;
     const int per = w->periodic;
-    size_t k, l, nc, nr, n = 0, col[3], row[3];
+    size_t k, l, nc, nr, n = 0, col[3] = {0, 0, 0}, row[3]; /* col zeroed: gcc cannot see nc == 3 fills it */
     uint32_t first[9];
     c2d_w_self self;
     {
@@ -595,15 +674,17 @@ static void c2d_w_predict_cells(const c2d_world *w, uint32_t i, const c2d_body *
     /* The cells' first disks, loaded (and their states fetched) all at
      * once before any is used: with many disks these are cache misses, and
      * independent ones overlap. */
-    for (l = 0; l < nr; l++)
-        for (k = 0; k < nc; k++) {
-            const uint32_t j = w->head[row[l] * mx + col[k]];
-            if (j == C2D_W_NONE) continue;
-            first[n++] = j;
-#ifdef __GNUC__
-            __builtin_prefetch(&d[j]);
-#endif
+    for (l = 0; l < nr; l++) {
+        const uint32_t *h = &w->head[row[l] * mx];
+        if (nc == 3) { /* unrolled: the common case (no loop per cell) */
+            const uint32_t j0 = h[col[0]], j1 = h[col[1]], j2 = h[col[2]];
+            n = c2d_w_first(d, first, n, j0);
+            n = c2d_w_first(d, first, n, j1);
+            n = c2d_w_first(d, first, n, j2);
+        } else {
+            for (k = 0; k < nc; k++) n = c2d_w_first(d, first, n, h[col[k]]);
         }
+    }
     c2d_w_self_of(w, i, &self);
     if (!w->accel) { /* every pair straight, and no removed disk in a cell */
         for (k = 0; k < n; k++) {

@@ -44,6 +44,7 @@ MCU_m0_ARCH := -mcpu=cortex-m0 -mthumb
 MCU_m0_OPTS :=
 MCU_m0_DESC := Cortex-M0, soft float; double, float, Q16.16
 MCU_m0_QEMU := qemu-system-arm -M microbit
+MCU_m0_CHECKS := --profile c2d_collidef
 MCU_m0_RAM := 16K
 
 MCU_m4f_CC := arm-none-eabi-gcc
@@ -52,7 +53,7 @@ MCU_m4f_OPTS := -DC2D_NO_DOUBLE
 MCU_m4f_DESC := Cortex-M4F, single-precision FPU; float, Q16.16 (C2D_NO_DOUBLE)
 MCU_m4f_QEMU := qemu-system-arm -M mps2-an386
 MCU_m4f_RAM := 16K
-MCU_m4f_CHECKS := --forbid '^__aeabi_d' --inline sqrtf=vsqrt.f32
+MCU_m4f_CHECKS := --forbid '^__aeabi_d' --inline sqrtf=vsqrt.f32 --profile c2d_collidef --profile library
 
 MCU_m7_CC := arm-none-eabi-gcc
 MCU_m7_ARCH := -mcpu=cortex-m7 -mfloat-abi=hard -mfpu=fpv5-d16

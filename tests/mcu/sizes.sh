@@ -11,18 +11,22 @@
 # world's indirect calls are the caller's callbacks (on_event, resolvers,
 # broadphase): its functions' stack is the library's part, "+ callbacks".
 #
-# Usage: sizes.sh [--forbid REGEX] [--inline SYMBOL=INSN]... [--rows FILE]
-#                 NAME DESCRIPTION OBJECT CC ARCH-FLAGS...
+# Usage: sizes.sh [--forbid REGEX] [--inline SYMBOL=INSN]... [--profile FUNCTION]...
+#                 [--rows FILE] NAME DESCRIPTION OBJECT CC ARCH-FLAGS...
 #   --forbid REGEX        no outside symbol may match (e.g. '^__aeabi_d')
 #   --inline SYMBOL=INSN  SYMBOL must not be called, INSN must be in the code
+#   --profile FUNCTION    where the bytes go: the source files and largest
+#                         symbols of FUNCTION's closure with its helpers
+#                         (`library`: of all public functions linked)
 #   --rows FILE           append this target's summary row to FILE
 set -eu
 
-forbid='' inline='' rows=/dev/null
+forbid='' inline='' profile='' rows=/dev/null
 while [ $# -gt 0 ]; do
     case $1 in
     --forbid) forbid=$2; shift 2 ;;
     --inline) inline="$inline $2"; shift 2 ;;
+    --profile) profile="$profile $2"; shift 2 ;;
     --rows) rows=$2; shift 2 ;;
     *) break ;;
     esac
@@ -195,6 +199,7 @@ echo "| all public functions linked (--gc-sections) | $all_code | 0 | 0 |"
 echo "| the same with the libgcc helpers it pulls in | $all_total | 0 | 0 |"
 part_rows '^c2d_world_' 'the event-driven world: its functions linked (with the calls it makes)'
 part_rows '^c2d_collide_(balls|cushion)f?$' 'the sphere contacts: `c2d_collide_balls`, `c2d_collide_cushion` (and `f`) linked'
+part_rows '^c2d_time_of_impact_accelf?$' 'the accelerated time of impact: `c2d_time_of_impact_accel` (and `f`) linked'
 echo
 echo "| function | code | + helpers | stack | compiler helpers and outside symbols called |"
 echo "|---|---:|---:|---:|---|"
@@ -211,12 +216,78 @@ for f in $(cat "$tmp/public"); do
     echo "| \`$f\` | $code | $((total - code)) | $stack | ${called:--} |"
 done
 echo
+
+# ------------------------------------------------------------ where the bytes go
+# The linked closure's functions (nm -S: their sizes, alignment padding
+# aside), each charged to the lib/ file that defines it: its name without
+# the instance suffix (_f64, _f32) and gcc's clone suffixes (.constprop.0,
+# .part.0, .isra.0), found as a definition in lib/; libgcc's helpers as one
+# group.  The largest symbols follow (the helpers among them as well).
+src=$(cd "$(dirname "$0")/../.." && pwd)
+for f in $(cd "$src" && find lib -name '*.[ch]' | sort); do
+    # A definition: a line at column 0 naming c2d_...( whose declaration
+    # reaches a brace before a semicolon.
+    awk -v file="${f#lib/}" '
+    cand == "" && /^[A-Za-z_]/ && match($0, /c2d_[A-Za-z0-9_]*[(]/) { cand = substr($0, RSTART, RLENGTH - 1) }
+    cand != "" {
+        b = index($0, "{"); c = index($0, ";")
+        if (b && (!c || b < c)) { print cand, file; cand = "" } else if (c) cand = ""
+    }' "$src/$f"
+done | awk '!($1 in f) { f[$1] = 1; print }' >"$tmp/defs"
+profile_of() { # ELF TITLE
+    "${tools}nm" -S --size-sort "$1" | awk 'NF == 4 && $3 ~ /^[tTwW]$/ { print $1, $2, $4 }' >"$tmp/syms"
+    awk -v title="$2" -v rows="$tmp/rows" -v top="$tmp/top" '
+    FILENAME == ARGV[1] { file[$1] = $2; next }
+    function hex(h,   i, v) {
+        v = 0; h = tolower(h)
+        for (i = 1; i <= length(h); i++) v = v * 16 + index("0123456789abcdef", substr(h, i, 1)) - 1
+        return v
+    }
+    {
+        n = hex($2); s = $3
+        if ($1 in seen) next # an alias (folded identical code, libgcc entry points) counts once
+        seen[$1] = 1
+        b = s; sub(/[.].*$/, "", b); sub(/_f(32|64)$/, "", b)
+        f = (b in file) ? "`lib/" file[b] "`" : (s ~ /^c2d_/ ? "(not found in lib/)" : "libgcc helpers")
+        bytes[f] += n; count[f]++; total += n; nsym++
+        printf "%d\t`%s`\t%s\n", n, s, f >top
+    }
+    END {
+        for (f in bytes) printf "%d\t%s\t%.1f %%\t%d\n", bytes[f], f, 100 * bytes[f] / total, count[f] >rows
+        printf "%s: %d bytes in %d functions.\n", title, total, nsym
+    }' "$tmp/defs" "$tmp/syms"
+    echo
+    echo "| file | bytes | share | functions |"
+    echo "|---|---:|---:|---:|"
+    sort -t "$(printf '\t')" -k1,1nr -k2,2 "$tmp/rows" | awk -F '\t' '{ printf "| %s | %d | %s | %d |\n", $2, $1, $3, $4 }'
+    echo
+    echo "| largest symbols | bytes | file |"
+    echo "|---|---:|---|"
+    sort -t "$(printf '\t')" -k1,1nr -k2,2 "$tmp/top" | head -n 15 | awk -F '\t' '{ printf "| %s | %d | %s |\n", $2, $1, $3 }'
+    rm -f "$tmp/rows" "$tmp/top"
+}
 list() { if [ -n "$1" ]; then echo "$1" | tr ' ' '\n' | sed '/^$/d' | sed 's/.*/`&`/' | tr '\n' ' ' | sed 's/ $//'; else echo "none"; fi; }
 echo "Outside symbols: compiler helpers (libgcc): $(list "$helpers")"
 echo "C library: $(list "$libm")"
 echo "GCC freestanding requirements: $(list "$freestanding")"
 if [ -n "$other" ]; then echo "**Not allowed:** $(list "$other")"; fi
 echo
+if [ -n "$profile" ]; then
+    echo "#### Where the bytes go"
+    echo
+    echo "Each function's bytes charged to the lib/ file defining it (what gcc inlined counts where it landed);"
+    echo "sizes from the symbol table (nm -S), without alignment padding."
+    echo
+    for f in $profile; do
+        if [ "$f" = library ]; then
+            profile_of "$tmp/allh.elf" "All public functions linked, with the libgcc helpers"
+        else
+            link "$tmp/p.elf" -Wl,-e,"$f" "$obj" -lgcc
+            profile_of "$tmp/p.elf" "\`$f\` linked alone, with the libgcc helpers"
+        fi
+        echo
+    done
+fi
 
 outside=$(echo $libm $freestanding)
 printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "$desc" "$obj_text" "$obj_data" "$obj_bss" \

@@ -182,7 +182,9 @@ static size_t c2d_real_collide_batch(const c2d_real_pairs *p, size_t count, c2d_
     for (base = 0; base < count; base += C2D_BLOCK) {
         c2d_real_bits lane[C2D_BLOCK];
         const size_t width = c2d_block_width(count - base);
-        if (width == (size_t)C2D_BLOCK && e_ok != 0) {
+        /* Optimising for size (C2D_SMALL, internal.h), every lane takes the
+         * scalar call, whose bits the kernel's lanes have: no kernel code. */
+        if (!C2D_SMALL && width == (size_t)C2D_BLOCK && e_ok != 0) {
             c2d_batch_kernel(p, base, e1, lane);
         } else {
             size_t j;

@@ -133,6 +133,7 @@ C2D_COLD c2d_status c2d_collide_accurate(c2d_real_body *a, c2d_real_body *b, c2d
 C2D_COLD c2d_status c2d_axis_impact(c2d_real_body *a, c2d_real_body *b, const c2d_real_vec *given, int axis, int sign,
                                     c2d_real restitution);
 
+#if !C2D_SMALL
 /* Tier 2 for a pair the front end (c2d_quick) found valid and inside its
  * window, but whose d cancels: c2d_accurate's arithmetic without the checks
  * the window makes redundant.  With k, n.n and the masses in [W^-1, W] and
@@ -167,7 +168,9 @@ C2D_HOT c2d_status c2d_cancelling_as(c2d_real_body *a, c2d_real_body *b, const c
     return C2D_OK;
 }
 
-#ifdef C2D_R_FUSED
+#endif /* !C2D_SMALL */
+
+#if defined(C2D_R_FUSED) && !C2D_SMALL
 /* The tier compiled for x86-64-v3 (which has FMA), with fused TwoProducts. */
 __attribute__((target("arch=x86-64-v3"))) C2D_COLD c2d_status c2d_cancelling_fused(c2d_real_body *a, c2d_real_body *b,
                                                                                      const c2d_real_vec *nh,
@@ -193,6 +196,7 @@ C2D_COLD c2d_status c2d_collide_fallback(c2d_real_body *a, c2d_real_body *b, c2d
     return c2d_verdict_status(v);
 }
 
+#if !C2D_SMALL
 /* Tier 2 for the front end: with FMA when the CPU has it (chosen at run
  * time under C2D_DISPATCH), Dekker's split otherwise; the same bits.  The
  * normal is the given one (nl = 0), or with `given` NULL the exact position
@@ -220,10 +224,31 @@ C2D_COLD c2d_status c2d_quick_cancelling(c2d_real_body *a, c2d_real_body *b, con
 #endif
     return c2d_cancelling_as(a, b, &nh, &nl, restitution, 0);
 }
+#endif /* !C2D_SMALL */
 
-/* c2d_collide: the input-only front end (real/collide/fast.h), else the fallback. */
+/* c2d_collide: the input-only front end (real/collide/fast.h), else the fallback.
+ *
+ * OPTIMISING FOR SIZE (C2D_SMALL)
+ *   Only the axis test is kept: every other pair goes to the fallback, whose
+ *   fast path gives the front end's answers with the same bits (fast.h: the
+ *   accept test takes the fast path's operations in its order; a pair it
+ *   calls undecided is one whose d cancels, the fast path's ACCURATE, and
+ *   c2d_cancelling_as is c2d_resolve's route inside the window).  One copy
+ *   of the formula instead of two. */
 static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2d_real restitution)
 {
+#if C2D_SMALL
+    c2d_real nx, ny;
+    if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
+    nx = b->pos.x - a->pos.x;
+    ny = b->pos.y - a->pos.y;
+    if (nx == 0 || ny == 0) { /* c2d_quick's C2D_VERDICT_AXIS */
+        const int on_y = b->pos.x == a->pos.x;
+        const c2d_real pa = on_y != 0 ? a->pos.y : a->pos.x, pb = on_y != 0 ? b->pos.y : b->pos.x;
+        return c2d_axis_impact(a, b, NULL, on_y, pb > pa ? 1 : (pb < pa ? -1 : 0), restitution);
+    }
+    return c2d_collide_fallback(a, b, restitution);
+#else
     c2d_real out[4];
     c2d_pair p;
     c2d_verdict v;
@@ -243,6 +268,7 @@ static inline c2d_status c2d_real_collide(c2d_real_body *a, c2d_real_body *b, c2
     /* A valid pair whose d cancels: where the fast path would send it. */
     if (v == C2D_VERDICT_ACCURATE) return c2d_quick_cancelling(a, b, NULL, restitution);
     return c2d_collide_fallback(a, b, restitution);
+#endif
 }
 
 /* What c2d_collide_normal's fast path declined, out of line. */
@@ -293,6 +319,19 @@ C2D_COLD c2d_status c2d_collide_normal_fallback(c2d_real_body *a, c2d_real_body 
 static inline c2d_status c2d_collide_normal_front(c2d_real_body *a, c2d_real_body *b, c2d_real nx, c2d_real ny,
                                                   c2d_real restitution)
 {
+#if C2D_SMALL /* as c2d_real_collide: the axis test, then the fallback's fast path */
+    c2d_real_vec n;
+    if (a == NULL || b == NULL || !(restitution >= 0 && restitution <= 1)) return C2D_INVALID;
+    if (!c2d_finite4(a->pos.x, a->pos.y, b->pos.x, b->pos.y)) return C2D_INVALID;
+    n.x = nx;
+    n.y = ny;
+    if (a != b && (nx == 0 || ny == 0)) {
+        const int on_y = nx == 0;
+        const c2d_real ni = on_y != 0 ? ny : nx;
+        return c2d_axis_impact(a, b, &n, on_y, ni > 0 ? 1 : (ni < 0 ? -1 : 0), restitution);
+    }
+    return c2d_collide_normal_fallback(a, b, &n, restitution);
+#else
     c2d_real out[4];
     c2d_real_vec n;
     c2d_pair p;
@@ -315,6 +354,7 @@ static inline c2d_status c2d_collide_normal_front(c2d_real_body *a, c2d_real_bod
     }
     if (v == C2D_VERDICT_ACCURATE) return c2d_quick_cancelling(a, b, &n, restitution);
     return c2d_collide_normal_fallback(a, b, &n, restitution);
+#endif
 }
 
 /* The same for a normal given by address (c2d_collide_rough_normal). */
