@@ -25,11 +25,12 @@
 // degrees, speed +-4%, uniform), so a game depends on --seed only and is
 // the same on every machine.  The break: 12 m/s from the head spot at the
 // apex ball, with the same error.
-// Cost: about 105 candidates a turn on seeds 1-8, 10 ms of CPU
-// (build/opponent_bench; docs/GAME.md has the figures), nearly all of it
-// the world's predictions in the library, so the work is cut only where it
-// cannot change the choice: the candidate runs find pairs with a plain list of the
-// 16 boxes (WorldBroadphase::List) instead of Box2D's tree; once a shot
+// Cost: about 105 candidates a turn on seeds 1-8, 46 M instructions and
+// 3.5 ms of CPU (build/opponent_bench; docs/GAME.md has the figures), most
+// of it the world's predictions in the library, so the work is cut only
+// where it cannot change the choice: the candidate runs find pairs with a
+// plain list of the 16 boxes (WorldBroadphase::List, its margin 3 R) instead
+// of Box2D's tree; once a shot
 // scoring a foul or better is known, a run whose events already make it a
 // foul or a loss (a scratch, a wrong first contact, the 8 too early) ends
 // there; once a win is known the rest are not played.  A later candidate

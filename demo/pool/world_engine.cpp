@@ -65,6 +65,17 @@ constexpr int kCushionOfWall[4] = {2, 3, 0, 1};
 // coordinate by at most half an ulp of the shifted value.
 constexpr double kMargin = 0.25;
 
+// How far a ball's centre moves before the world moves its box in the box
+// list (c2d_world_broadphase.margin; the world's default is half a radius).
+// The events are the same bits for any margin (collide2d_world.h); what it
+// trades is the box events (a ball rolling 1 m with the default crosses
+// its box about 70 times, each a full prediction) against candidates per
+// prediction (more pairs and statics in a bigger box).  Measured on the
+// opponent's candidates (build/opponent_bench, callgrind): 0.5 R 121 M
+// instructions a turn, 1 R 104 M, 2 R 60 M, 3 R (0.086 m) 46 M, 4 R 46 M,
+// 6 R 50 M, once the statics are cut to those in reach (GAME.md).
+constexpr double kListMargin = 3 * kBallRadius;
+
 // The box's cushions as closed_box makes them: the table's rectangle.
 bool is_closed_box(const Table &table) {
     const std::vector<Segment> &c = table.cushions;
@@ -107,7 +118,7 @@ private:
     void add_statics(size_t &count, bool add);
     size_t add(size_t i);
     int overlapped(const Ball &b) const;
-    void advance(double world_t, Stats &stats, FrameLog &log, bool record_paths);
+    void advance(double world_t, Stats &stats, FrameLog &log, bool record_paths, bool sample_after = true);
     void sample();
     bool moving() const;
 
@@ -116,7 +127,7 @@ private:
     Ball state_of(size_t disk, double t) const;
     Ball ball_at(int i, double t) const;
     Motion motion_of(const Ball &b) const;
-    void restart(int i, const Ball &b, double t, bool set_velocity);
+    void restart(int i, const Ball &b, double t, bool set_velocity, bool fresh = false);
 
     // contacts
     c2d_status resolve_pair(const c2d_world_contact &c, c2d_body &a, c2d_body &b);
@@ -259,7 +270,7 @@ void WorldEngine::build() {
             boxes_.clear();
             listed_.clear();
             tree_calls_ = c2d_world_broadphase{&WorldEngine::list_insert, &WorldEngine::list_move,
-                                               &WorldEngine::list_remove, &WorldEngine::list_query, this, 0};
+                                               &WorldEngine::list_remove, &WorldEngine::list_query, this, kListMargin};
         } else {
             tree_ = make_dynamic_tree();
             proxy_.clear();
@@ -290,7 +301,7 @@ void WorldEngine::build() {
         ball_of_.push_back(static_cast<int>(i));
     }
     for (size_t i = 0; i < balls_.size(); ++i)
-        if (balls_[i].active) restart(static_cast<int>(i), balls_[i], 0, false);
+        if (balls_[i].active) restart(static_cast<int>(i), balls_[i], 0, false, true);
 }
 
 // Ball i into the world.  Touching balls (a rack, the cradle's row) can be
@@ -364,14 +375,21 @@ Ball WorldEngine::ball_at(int i, double t) const {
 
 // Ball i takes state b (its motion state set) at world time t: a new track,
 // and in the world its acceleration and a timer at the track's end
-// (set_velocity: its velocity too, when the world has not set it).
-void WorldEngine::restart(int i, const Ball &b, double t, bool set_velocity) {
+// (set_velocity: its velocity too, when the world has not set it).  fresh:
+// the disk was just added to a new world (at its time 0, with no
+// acceleration and no timer), so setting an acceleration of +0 or no timer
+// would change nothing but the disk's count and cost a prediction each
+// (a ball at rest: two of the three predictions of every ball in every new
+// world, the opponent's candidates' included); they are left out.
+void WorldEngine::restart(int i, const Ball &b, double t, bool set_velocity, bool fresh) {
     const size_t k = static_cast<size_t>(i), disk = world_index_[k];
     track_[k] = make_track(b, t, model_.cloth, model_.friction);
     if (set_velocity) c2d_world_set_velocity(world_, disk, c2d_vec2{b.vx, b.vy});
     if (model_.friction) {
-        c2d_world_set_acceleration(world_, disk, c2d_vec2{track_[k].ax, track_[k].ay});
-        c2d_world_set_timer(world_, disk, track_[k].t_end);
+        const Track &n = track_[k];
+        const bool no_acceleration = n.ax == 0 && n.ay == 0 && !std::signbit(n.ax) && !std::signbit(n.ay);
+        if (!(fresh && no_acceleration)) c2d_world_set_acceleration(world_, disk, c2d_vec2{n.ax, n.ay});
+        if (!(fresh && n.t_end == INFINITY)) c2d_world_set_timer(world_, disk, n.t_end);
     }
     waypoint(i);
 }
@@ -852,12 +870,15 @@ void WorldEngine::pocket(const c2d_world_event &e) {
 
 // --- running -------------------------------------------------------------
 
-void WorldEngine::advance(double world_t, Stats &stats, FrameLog &log, bool record_paths) {
+// sample_after false: balls_ keeps the states of the last sample (settle
+// samples once at its end: nothing during a run reads an active ball's
+// state from balls_, only its number and whether it is on the table).
+void WorldEngine::advance(double world_t, Stats &stats, FrameLog &log, bool record_paths, bool sample_after) {
     stats_ = &stats, log_ = &log, frame_start_ = world_now_, record_paths_ = record_paths;
     c2d_world_advance(world_, world_t);
     world_now_ = world_t;
     stats_ = nullptr, log_ = nullptr;
-    sample();
+    if (sample_after) sample();
 }
 
 void WorldEngine::sample() {
@@ -894,9 +915,10 @@ bool WorldEngine::settle(double max_seconds, Stats &stats, FrameLog &log) {
     last_event_ = world_now_;
     const double stretch = stop_ ? kStopStretch : 1.0;
     while (moving() && world_now_ < end) {
-        advance(std::min(end, world_now_ + stretch), stats, log, false);
+        advance(std::min(end, world_now_ + stretch), stats, log, false, false);
         if (stop_ && moving() && stop_(log.events)) break;
     }
+    sample();
     settled_ = !moving();
     return settled_;
 }
