@@ -16,11 +16,16 @@ void respot_eight(const Table &table, std::vector<Ball> &balls) {
 }
 
 GameRecord play_computer_game(const SimConfig &config, uint64_t seed) {
+    const Search both[2] = {Search::Position, Search::Position};
+    return play_computer_game(config, seed, both);
+}
+
+GameRecord play_computer_game(const SimConfig &config, uint64_t seed, const Search search[2]) {
     GameRecord game;
     const Setup setup = set_up(Scene::Break, config.table, 0, config.seed);
     std::vector<Ball> balls = setup.balls;
     GameState state;
-    Opponent players[2] = {Opponent(config, seed), Opponent(config, seed + 1)};
+    Opponent players[2] = {Opponent(config, seed, search[0]), Opponent(config, seed + 1, search[1])};
     while (!state.over() && static_cast<int>(game.shots.size()) < kMaxGameShots) {
         ShotRecord r;
         r.player = state.turn;

@@ -54,6 +54,8 @@ struct Players {
 // Two computer players, the rack shuffled by config.seed, execution errors
 // from seed.  Ends with a winner or after kMaxGameShots shots.
 GameRecord play_computer_game(const SimConfig &config, uint64_t seed);
+// The same with each player's search (opponent.h: player 0 breaks).
+GameRecord play_computer_game(const SimConfig &config, uint64_t seed, const Search search[2]);
 
 // The window's 8-ball: the rules' state between the frames of the shared
 // main loop.  The window tells it when a shot starts, hands it each frame's

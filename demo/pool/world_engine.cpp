@@ -146,6 +146,9 @@ private:
     static constexpr long kMostAtOnce = 8;
     std::vector<double> instant_;  // per ball: the instant of its last contact (world time)
     std::vector<long> at_once_;    // per ball: its contacts at that instant
+    // the same for its contacts with cushions, jaws and noses, apart
+    std::vector<double> fixed_instant_;
+    std::vector<long> fixed_at_once_;
     void take_resting_acceleration(int i);
     void impact(const c2d_world_event &e);
     void fixed(const c2d_world_event &e);
@@ -290,6 +293,8 @@ void WorldEngine::build() {
     world_now_ = 0;
     instant_.assign(balls_.size(), -1);  // the new world's clock starts at 0
     at_once_.assign(balls_.size(), 0);
+    fixed_instant_.assign(balls_.size(), -1);
+    fixed_at_once_.assign(balls_.size(), 0);
     world_index_.assign(balls_.size(), kNoDisk);
     ball_of_.clear();
     for (size_t i = 0; i < balls_.size(); ++i) {
@@ -443,6 +448,16 @@ c2d_status WorldEngine::resolve_pair(const c2d_world_contact &c, c2d_body &a, c2
 // else rough against an immovable wall at the contact point or the nose.
 c2d_status WorldEngine::resolve_fixed(const c2d_world_contact &c, c2d_body &a) {
     const int i = ball_of_[c.a];
+    // More than kMostAtOnce contacts of a ball with the statics at one
+    // instant: the world's own resolution (its collapse rule ends it).
+    // Without it a ball pressed into a jaw by its slide took the pool
+    // model's absorbed contact again and again at one instant for ever (an
+    // opponent's position-play run, seed 6).  Counted apart from the
+    // ball-ball contacts, so no pair's count changes.
+    const size_t k = static_cast<size_t>(i);
+    if (fixed_instant_[k] == c.time) ++fixed_at_once_[k];
+    else fixed_instant_[k] = c.time, fixed_at_once_[k] = 1;
+    if (fixed_at_once_[k] > kMostAtOnce) return C2D_INVALID;
     const Feature &f = statics_[c.b];
     const Ball sa = with_spin(i, c.time, a.pos.x - offset_, a.pos.y - offset_, a.vel.x, a.vel.y);
     const double d = std::hypot(c.normal.x, c.normal.y), nx = c.normal.x / d, ny = c.normal.y / d;
