@@ -299,17 +299,25 @@ Plan Opponent::choose(const GameState &state, const std::vector<Ball> &balls) {
             if (out.stopped) continue;
             GameState next;
             score[k] = score_of(state, table_, from, out, next);
-            if (score[k] >= kKeepTurn && score[k] < kWin) kept.push_back(Kept{k, next, out.balls});
+            if ((score[k] >= kKeepTurn && score[k] < kWin) || (score[k] > kFoulScore && score[k] <= 0))
+                kept.push_back(Kept{k, next, out.balls});
             best = std::max(best, score[k]);
         }
         if (search_ == Search::Position && best < kWin) {
-            // the kDeepened best that keep the table (ties: the earlier), weighed again
+            // the kDeepened best that keep the table (ties: the earlier),
+            // weighed again by the shooter's next shot; if none keeps it, the
+            // kDeepened best safeties by the opponent's next shot
+            const bool keeping = best >= kKeepTurn;
+            kept.erase(std::remove_if(kept.begin(), kept.end(),
+                                      [&](const Kept &d) { return (score[d.index] >= kKeepTurn) != keeping; }),
+                       kept.end());
             std::stable_sort(kept.begin(), kept.end(),
                              [&](const Kept &a, const Kept &b) { return score[a.index] > score[b.index]; });
             if (kept.size() > static_cast<size_t>(kDeepened)) kept.resize(kDeepened);
             for (const Kept &d : kept) {
                 int tried = 0;
-                score[d.index] = with_position(score[d.index], position_value(config_, table_, d.next, d.balls, &tried));
+                const double value = position_value(config_, table_, d.next, d.balls, &tried);
+                score[d.index] = keeping ? with_position(score[d.index], value) : score[d.index] - kNextWeight * value;
                 plan.candidates += tried;
             }
         }

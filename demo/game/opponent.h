@@ -24,13 +24,14 @@
 // (Search::Position, the default): the 4 best candidates that keep the
 // table are weighed again by the next shot from where each leaves the cue
 // ball (position_value, with_position): up to 27 more shots each, simulated
-// the same way.
+// the same way; when none keeps the table, the 4 best safeties lose 100
+// times the value of the table they leave the opponent.
 // The chosen shot is played with a seeded execution error (angle +-0.25
 // degrees, speed +-4%, uniform), so a game depends on --seed only and is
 // the same on every machine.  The break: 12 m/s from the head spot at the
 // apex ball, with the same error.
 // Cost: about 105 candidates a turn on seeds 1-8, 46 M instructions and
-// 3.5 ms of CPU without position play, 150 shots, 61 M and 5.8 ms with it
+// 3.5 ms of CPU without position play, 149 shots, 61.5 M and 6.5 ms with it
 // (build/opponent_bench; docs/GAME.md has the figures), most
 // of it the world's predictions in the library, so the work is cut only
 // where it cannot change the choice: the candidate runs find pairs with a
@@ -54,7 +55,8 @@ namespace demo {
 
 // How deep the opponent looks: Plain scores each candidate by its own run
 // (the score above); Position (the default) then weighs the best that keep
-// the table again by the next shot they leave (position_value).
+// the table (or, if none does, the best safeties) again by the next shot
+// they leave (position_value).
 enum class Search { Plain, Position };
 
 struct Plan {
