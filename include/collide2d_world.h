@@ -521,7 +521,9 @@ c2d_status c2d_world_set_timer(c2d_world *world, size_t index, double t);
  * 3 x 3 cells around its own (at least a diameter beyond its cell), or
  * with a caller's broadphase its box grown by its radius; a static that
  * comes into reach at a cell crossing is tried there, a box left predicts
- * the disk anew.  A static's time is computed from the disk's reference
+ * the disk anew; a segment's end is tried only when the end itself is in
+ * reach, and a disk at rest (no velocity, no acceleration) tries none.
+ * A static's time is computed from the disk's reference
  * state whenever it is tried, so the culling changes no time (the pool
  * table's 36 statics: the break 3x fewer instructions; exceptions, none
  * met in the tests: a static tried again at a later crossing and found

@@ -18,6 +18,11 @@ void respot(const Table &table, std::vector<Ball> &balls, int number) {
 void respot_eight(const Table &table, std::vector<Ball> &balls) { respot(table, balls, 8); }
 
 GameRecord play_computer_game(const SimConfig &config, uint64_t seed, GameKind kind) {
+    const Search both[2] = {Search::Position, Search::Position};
+    return play_computer_game(config, seed, both, kind);
+}
+
+GameRecord play_computer_game(const SimConfig &config, uint64_t seed, const Search search[2], GameKind kind) {
     GameRecord game;
     const Setup setup = kind == GameKind::NineBall ? set_up_nine_ball(config.table, config.seed)
                                                    : set_up(Scene::Break, config.table, 0, config.seed);
@@ -25,7 +30,7 @@ GameRecord play_computer_game(const SimConfig &config, uint64_t seed, GameKind k
     GameState state;
     state.game = kind;
     game.nine_ball = kind == GameKind::NineBall;
-    Opponent players[2] = {Opponent(config, seed), Opponent(config, seed + 1)};
+    Opponent players[2] = {Opponent(config, seed, search[0]), Opponent(config, seed + 1, search[1])};
     while (!state.over() && static_cast<int>(game.shots.size()) < kMaxGameShots) {
         ShotRecord r;
         r.player = state.turn;

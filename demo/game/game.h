@@ -58,6 +58,9 @@ struct Players {
 // kind: 8-ball (the 15-ball rack) or 9-ball (the diamond, set_up_nine_ball);
 // the computer never declares a 9-ball push-out.
 GameRecord play_computer_game(const SimConfig &config, uint64_t seed, GameKind kind = GameKind::EightBall);
+// The same with each player's search (opponent.h: player 0 breaks).
+GameRecord play_computer_game(const SimConfig &config, uint64_t seed, const Search search[2],
+                              GameKind kind = GameKind::EightBall);
 
 // The window's 8-ball: the rules' state between the frames of the shared
 // main loop.  The window tells it when a shot starts, hands it each frame's

@@ -38,6 +38,15 @@ struct Tip {
 };
 const Tip kTips[] = {{0, 0}, {0, 0.35}, {0, -0.35}, {-0.3, 0}, {0.3, 0}};  // centre, follow, draw, left, right
 const double kPlaceDistances[] = {0.25, 0.45};     // ball in hand, behind the ghost ball
+// Position play (Search::Position): the kDeepened best candidates that keep
+// the table are weighed again by the shooter's best next shot from where
+// they leave the balls, tried on the kNextLines easiest potting lines at 3
+// speeds and 3 tips (position_value).
+constexpr int kDeepened = 4;
+constexpr size_t kNextLines = 3;
+constexpr double kNextWeight = 100;
+const double kNextSpeeds[] = {1.2, 2.0, 3.0};
+const Tip kNextTips[] = {{0, 0}, {0, 0.35}, {0, -0.35}};  // centre, follow, draw
 
 // Where a ball aims to enter a pocket: a third of the way from the middle of
 // the mouth to the hole's centre.
@@ -178,7 +187,58 @@ struct Doom {
     }
 };
 
+// The score of a shot from `from` whose run is `out` (see opponent.h); next
+// gets the rules' state after it.
+double score_of(const GameState &state, const Table &table, const std::vector<Ball> &from, const ShotOutcome &out,
+                GameState &next) {
+    next = state;
+    const Verdict v = apply_shot(next, shot_facts(out.events, from), from);
+    if (!out.settled) return kUnsettled;
+    if (v.winner >= 0) return v.winner == state.turn ? kWin : -kWin;
+    if (v.foul != Foul::None) return kFoulScore;
+    if (v.keeps_turn) return kKeepTurn + kPositionWeight * best_ease(next, table, out.balls);
+    return -kSafetyWeight * best_ease(next, table, out.balls);
+}
+
+// A run of shot c from `from`; once `best` is kFoulScore or more, a run
+// bound to foul or lose is ended (out.stopped: it cannot beat best).
+ShotOutcome run(const SimConfig &config, const GameState &state, const std::vector<Ball> &from, const Shot &shot,
+                double best) {
+    Doom doom;
+    return best >= kFoulScore
+               ? simulate_shot(config, from, shot,
+                               [&](const std::vector<Event> &events) { return doom.check(state, from, events); })
+               : simulate_shot(config, from, shot);
+}
+
 }  // namespace
+
+double position_value(const SimConfig &config, const Table &table, const GameState &state,
+                      const std::vector<Ball> &balls, int *tried) {
+    const Ball *cue = cue_of(balls);
+    if (tried) *tried = 0;
+    if (!cue || !cue->active) return 0;
+    std::vector<Line> lines = potting_lines(state, table, balls, cue->x, cue->y, true);
+    std::stable_sort(lines.begin(), lines.end(), [](const Line &a, const Line &b) { return ease(a) > ease(b); });
+    if (lines.size() > kNextLines) lines.resize(kNextLines);
+    double best = -INFINITY;
+    for (const Line &l : lines)
+        for (double v : kNextSpeeds)
+            for (const Tip &tip : kNextTips) {
+                if (best >= kWin) break;
+                const Shot shot{l.angle_deg, v, tip.side, tip.topback};
+                const ShotOutcome out = run(config, state, balls, shot, best);
+                if (tried) ++*tried;
+                if (out.stopped) continue;
+                GameState next;
+                best = std::max(best, score_of(state, table, balls, out, next));
+            }
+    if (best >= kWin) return 1;
+    if (best >= kKeepTurn) return 0.5 + 0.5 * std::min(1.0, (best - kKeepTurn) / kPositionWeight);
+    return 0;
+}
+
+double with_position(double score, double value) { return score + kNextWeight * value; }
 
 double best_ease(const GameState &state, const Table &table, const std::vector<Ball> &balls) {
     const Ball *cue = cue_of(balls);
@@ -188,8 +248,9 @@ double best_ease(const GameState &state, const Table &table, const std::vector<B
     return best;
 }
 
-Opponent::Opponent(const SimConfig &config, uint64_t seed)
-    : config_(config), table_(scene_table(config.scene, config.table)), rng_(seed ^ 0x6f70706f6e656e74ULL) {
+Opponent::Opponent(const SimConfig &config, uint64_t seed, Search search)
+    : config_(config), table_(scene_table(config.scene, config.table)), rng_(seed ^ 0x6f70706f6e656e74ULL),
+      search_(search) {
     if (config_.broadphase == WorldBroadphase::Tree) config_.broadphase = WorldBroadphase::List;
 }
 
@@ -222,34 +283,56 @@ Plan Opponent::choose(const GameState &state, const std::vector<Ball> &balls) {
         // Two cuts that never change the choice (a later candidate replaces
         // the best only with a strictly higher score): once a win is found
         // nothing can beat it, and once a shot scoring kFoulScore or more is
-        // found a run bound to foul or lose (Doom) is ended at once.
-        for (const Candidate &c : cands) {
+        // found a run bound to foul or lose (Doom) is ended at once.  (Position
+        // play only raises the scores of shots that keep the table, which stay
+        // below kWin: both cuts hold.)
+        std::vector<double> score(cands.size(), -INFINITY);
+        struct Kept {
+            size_t index;
+            GameState next;
+            std::vector<Ball> balls;
+        };
+        std::vector<Kept> kept;  // the candidates that keep the table, for position play
+        for (size_t k = 0; k < cands.size(); ++k) {
+            const Candidate &c = cands[k];
             if (best >= kWin) break;
             const std::vector<Ball> from = c.place_cue ? with_cue_at(balls, c.cue) : balls;
-            Doom doom;
-            const ShotOutcome out =
-                best >= kFoulScore
-                    ? simulate_shot(config_, from, c.shot,
-                                    [&](const std::vector<Event> &events) { return doom.check(state, from, events); })
-                    : simulate_shot(config_, from, c.shot);
+            const ShotOutcome out = run(config_, state, from, c.shot, best);
             if (out.stopped) continue;
-            GameState next = state;
-            const Verdict v = apply_shot(next, shot_facts(out.events, from), from);
-            double score;
-            if (!out.settled) score = kUnsettled;
-            else if (v.winner >= 0) score = v.winner == state.turn ? kWin : -kWin;
-            else if (v.foul != Foul::None) score = kFoulScore;
-            else if (v.keeps_turn) score = kKeepTurn + kPositionWeight * best_ease(next, table_, out.balls);
-            else score = -kSafetyWeight * best_ease(next, table_, out.balls);
-            if (score > best) {
-                best = score;
-                plan.shot = c.shot;
-                plan.place_cue = c.place_cue;
-                plan.cue = c.cue;
-                plan.score = score;
+            GameState next;
+            score[k] = score_of(state, table_, from, out, next);
+            if ((score[k] >= kKeepTurn && score[k] < kWin) || (score[k] > kFoulScore && score[k] <= 0))
+                kept.push_back(Kept{k, next, out.balls});
+            best = std::max(best, score[k]);
+        }
+        if (search_ == Search::Position && best < kWin) {
+            // the kDeepened best that keep the table (ties: the earlier),
+            // weighed again by the shooter's next shot; if none keeps it, the
+            // kDeepened best safeties by the opponent's next shot
+            const bool keeping = best >= kKeepTurn;
+            kept.erase(std::remove_if(kept.begin(), kept.end(),
+                                      [&](const Kept &d) { return (score[d.index] >= kKeepTurn) != keeping; }),
+                       kept.end());
+            std::stable_sort(kept.begin(), kept.end(),
+                             [&](const Kept &a, const Kept &b) { return score[a.index] > score[b.index]; });
+            if (kept.size() > static_cast<size_t>(kDeepened)) kept.resize(kDeepened);
+            for (const Kept &d : kept) {
+                int tried = 0;
+                const double value = position_value(config_, table_, d.next, d.balls, &tried);
+                score[d.index] = keeping ? with_position(score[d.index], value) : score[d.index] - kNextWeight * value;
+                plan.candidates += tried;
             }
         }
-        plan.candidates = static_cast<int>(cands.size());
+        best = -INFINITY;
+        for (size_t k = 0; k < cands.size(); ++k)
+            if (score[k] > best) {
+                best = score[k];
+                plan.shot = cands[k].shot;
+                plan.place_cue = cands[k].place_cue;
+                plan.cue = cands[k].cue;
+                plan.score = score[k];
+            }
+        plan.candidates += static_cast<int>(cands.size());
     }
     plan.shot.angle_deg += kAngleError * (2 * rng_.uniform() - 1);
     plan.shot.speed = std::min(kMaxShotSpeed, plan.shot.speed * (1 + kSpeedError * (2 * rng_.uniform() - 1)));

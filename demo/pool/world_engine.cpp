@@ -66,6 +66,17 @@ constexpr int kCushionOfWall[4] = {2, 3, 0, 1};
 // coordinate by at most half an ulp of the shifted value.
 constexpr double kMargin = 0.25;
 
+// How far a ball's centre moves before the world moves its box in the box
+// list (c2d_world_broadphase.margin; the world's default is half a radius).
+// The events are the same bits for any margin (collide2d_world.h); what it
+// trades is the box events (a ball rolling 1 m with the default crosses
+// its box about 70 times, each a full prediction) against candidates per
+// prediction (more pairs and statics in a bigger box).  Measured on the
+// opponent's candidates (build/opponent_bench, callgrind): 0.5 R 121 M
+// instructions a turn, 1 R 104 M, 2 R 60 M, 3 R (0.086 m) 46 M, 4 R 46 M,
+// 6 R 50 M, once the statics are cut to those in reach (GAME.md).
+constexpr double kListMargin = 3 * kBallRadius;
+
 // The box's cushions as closed_box makes them: the table's rectangle.
 bool is_closed_box(const Table &table) {
     const std::vector<Segment> &c = table.cushions;
@@ -108,7 +119,7 @@ private:
     void add_statics(size_t &count, bool add);
     size_t add(size_t i);
     int overlapped(const Ball &b) const;
-    void advance(double world_t, Stats &stats, FrameLog &log, bool record_paths);
+    void advance(double world_t, Stats &stats, FrameLog &log, bool record_paths, bool sample_after = true);
     void sample();
     bool moving() const;
 
@@ -117,7 +128,7 @@ private:
     Ball state_of(size_t disk, double t) const;
     Ball ball_at(int i, double t) const;
     Motion motion_of(const Ball &b) const;
-    void restart(int i, const Ball &b, double t, bool set_velocity);
+    void restart(int i, const Ball &b, double t, bool set_velocity, bool fresh = false);
 
     // contacts
     c2d_status resolve_pair(const c2d_world_contact &c, c2d_body &a, c2d_body &b);
@@ -136,6 +147,9 @@ private:
     static constexpr long kMostAtOnce = 8;
     std::vector<double> instant_;  // per ball: the instant of its last contact (world time)
     std::vector<long> at_once_;    // per ball: its contacts at that instant
+    // the same for its contacts with cushions, jaws and noses, apart
+    std::vector<double> fixed_instant_;
+    std::vector<long> fixed_at_once_;
     void take_resting_acceleration(int i);
     void impact(const c2d_world_event &e);
     void fixed(const c2d_world_event &e);
@@ -260,7 +274,7 @@ void WorldEngine::build() {
             boxes_.clear();
             listed_.clear();
             tree_calls_ = c2d_world_broadphase{&WorldEngine::list_insert, &WorldEngine::list_move,
-                                               &WorldEngine::list_remove, &WorldEngine::list_query, this, 0};
+                                               &WorldEngine::list_remove, &WorldEngine::list_query, this, kListMargin};
         } else {
             tree_ = make_dynamic_tree();
             proxy_.clear();
@@ -280,6 +294,8 @@ void WorldEngine::build() {
     world_now_ = 0;
     instant_.assign(balls_.size(), -1);  // the new world's clock starts at 0
     at_once_.assign(balls_.size(), 0);
+    fixed_instant_.assign(balls_.size(), -1);
+    fixed_at_once_.assign(balls_.size(), 0);
     world_index_.assign(balls_.size(), kNoDisk);
     ball_of_.clear();
     for (size_t i = 0; i < balls_.size(); ++i) {
@@ -291,7 +307,7 @@ void WorldEngine::build() {
         ball_of_.push_back(static_cast<int>(i));
     }
     for (size_t i = 0; i < balls_.size(); ++i)
-        if (balls_[i].active) restart(static_cast<int>(i), balls_[i], 0, false);
+        if (balls_[i].active) restart(static_cast<int>(i), balls_[i], 0, false, true);
 }
 
 // Ball i into the world.  Touching balls (a rack, the cradle's row) can be
@@ -365,14 +381,21 @@ Ball WorldEngine::ball_at(int i, double t) const {
 
 // Ball i takes state b (its motion state set) at world time t: a new track,
 // and in the world its acceleration and a timer at the track's end
-// (set_velocity: its velocity too, when the world has not set it).
-void WorldEngine::restart(int i, const Ball &b, double t, bool set_velocity) {
+// (set_velocity: its velocity too, when the world has not set it).  fresh:
+// the disk was just added to a new world (at its time 0, with no
+// acceleration and no timer), so setting an acceleration of +0 or no timer
+// would change nothing but the disk's count and cost a prediction each
+// (a ball at rest: two of the three predictions of every ball in every new
+// world, the opponent's candidates' included); they are left out.
+void WorldEngine::restart(int i, const Ball &b, double t, bool set_velocity, bool fresh) {
     const size_t k = static_cast<size_t>(i), disk = world_index_[k];
     track_[k] = make_track(b, t, model_.cloth, model_.friction);
     if (set_velocity) c2d_world_set_velocity(world_, disk, c2d_vec2{b.vx, b.vy});
     if (model_.friction) {
-        c2d_world_set_acceleration(world_, disk, c2d_vec2{track_[k].ax, track_[k].ay});
-        c2d_world_set_timer(world_, disk, track_[k].t_end);
+        const Track &n = track_[k];
+        const bool no_acceleration = n.ax == 0 && n.ay == 0 && !std::signbit(n.ax) && !std::signbit(n.ay);
+        if (!(fresh && no_acceleration)) c2d_world_set_acceleration(world_, disk, c2d_vec2{n.ax, n.ay});
+        if (!(fresh && n.t_end == INFINITY)) c2d_world_set_timer(world_, disk, n.t_end);
     }
     waypoint(i);
 }
@@ -426,6 +449,16 @@ c2d_status WorldEngine::resolve_pair(const c2d_world_contact &c, c2d_body &a, c2
 // else rough against an immovable wall at the contact point or the nose.
 c2d_status WorldEngine::resolve_fixed(const c2d_world_contact &c, c2d_body &a) {
     const int i = ball_of_[c.a];
+    // More than kMostAtOnce contacts of a ball with the statics at one
+    // instant: the world's own resolution (its collapse rule ends it).
+    // Without it a ball pressed into a jaw by its slide took the pool
+    // model's absorbed contact again and again at one instant for ever (an
+    // opponent's position-play run, seed 6).  Counted apart from the
+    // ball-ball contacts, so no pair's count changes.
+    const size_t k = static_cast<size_t>(i);
+    if (fixed_instant_[k] == c.time) ++fixed_at_once_[k];
+    else fixed_instant_[k] = c.time, fixed_at_once_[k] = 1;
+    if (fixed_at_once_[k] > kMostAtOnce) return C2D_INVALID;
     const Feature &f = statics_[c.b];
     const Ball sa = with_spin(i, c.time, a.pos.x - offset_, a.pos.y - offset_, a.vel.x, a.vel.y);
     const double d = det_hypot(c.normal.x, c.normal.y), nx = c.normal.x / d, ny = c.normal.y / d;
@@ -853,12 +886,15 @@ void WorldEngine::pocket(const c2d_world_event &e) {
 
 // --- running -------------------------------------------------------------
 
-void WorldEngine::advance(double world_t, Stats &stats, FrameLog &log, bool record_paths) {
+// sample_after false: balls_ keeps the states of the last sample (settle
+// samples once at its end: nothing during a run reads an active ball's
+// state from balls_, only its number and whether it is on the table).
+void WorldEngine::advance(double world_t, Stats &stats, FrameLog &log, bool record_paths, bool sample_after) {
     stats_ = &stats, log_ = &log, frame_start_ = world_now_, record_paths_ = record_paths;
     c2d_world_advance(world_, world_t);
     world_now_ = world_t;
     stats_ = nullptr, log_ = nullptr;
-    sample();
+    if (sample_after) sample();
 }
 
 void WorldEngine::sample() {
@@ -895,9 +931,10 @@ bool WorldEngine::settle(double max_seconds, Stats &stats, FrameLog &log) {
     last_event_ = world_now_;
     const double stretch = stop_ ? kStopStretch : 1.0;
     while (moving() && world_now_ < end) {
-        advance(std::min(end, world_now_ + stretch), stats, log, false);
+        advance(std::min(end, world_now_ + stretch), stats, log, false, false);
         if (stop_ && moving() && stop_(log.events)) break;
     }
+    sample();
     settled_ = !moving();
     return settled_;
 }

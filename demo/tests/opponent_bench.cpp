@@ -4,7 +4,12 @@
 // (default 1-8), every turn but the break timed in CPU time of the thread
 // (Plan::cpu_seconds), medians reported, and a digest of every shot chosen
 // so that a faster opponent can be shown to choose the same shots.
-//   build/opponent_bench [FIRST LAST]
+//   build/opponent_bench [--plain] [FIRST LAST]
+// --plain: both computers without position play (Search::Plain), the
+// opponent of before it (digest 7069196ad8fa2fe8 on seeds 1-8).
+//   build/opponent_bench --duel [FIRST LAST]
+// position play against plain, one game a seed (position play breaks on
+// the odd seeds, so each side breaks half the games): the wins of each.
 // Instruction counts, deterministic (divide Ir by the turns printed):
 //   valgrind --tool=callgrind --toggle-collect='demo::Opponent::choose*'
 //     build/opponent_bench 1 2
@@ -37,8 +42,40 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char **argv) {
-    const long first = argc > 1 ? std::strtol(argv[1], nullptr, 10) : 1;
-    const long last = argc > 2 ? std::strtol(argv[2], nullptr, 10) : 8;
+    bool plain = false, duel = false;
+    if (argc > 1 && std::strcmp(argv[1], "--plain") == 0) plain = true;
+    if (argc > 1 && std::strcmp(argv[1], "--duel") == 0) duel = true;
+    if (plain || duel) --argc, ++argv;
+    char *end = nullptr;
+    const long first = argc > 1 ? std::strtol(argv[1], &end, 10) : 1;
+    if (argc > 1 && (end == argv[1] || *end)) return std::fprintf(stderr, "opponent_bench: FIRST: a number\n"), 2;
+    const long last = argc > 2 ? std::strtol(argv[2], &end, 10) : (duel ? 100 : 8);
+    if (argc > 2 && (end == argv[2] || *end)) return std::fprintf(stderr, "opponent_bench: LAST: a number\n"), 2;
+    if (duel) {
+        long won = 0, lost = 0, none = 0, shots = 0;
+        for (long seed = first; seed <= last; ++seed) {
+            demo::SimConfig config;
+            config.set_scene(demo::Scene::Break);
+            config.seed = static_cast<uint64_t>(seed);
+            const int me = seed % 2 ? 0 : 1;  // position play's seat
+            demo::Search search[2];
+            search[me] = demo::Search::Position;
+            search[1 - me] = demo::Search::Plain;
+            const demo::GameRecord g = demo::play_computer_game(config, config.seed, search);
+            shots += static_cast<long>(g.shots.size());
+            if (g.winner < 0) ++none;
+            else if (g.winner == me) ++won;
+            else ++lost;
+        }
+        const long games = last - first + 1;
+        std::printf("duel, seeds %ld-%ld: position play won %ld, plain won %ld, no winner %ld; position play's "
+                    "win rate %.1f%% (%.1f shots a game)\n",
+                    first, last, won, lost, none, games > 0 ? 100.0 * static_cast<double>(won) / static_cast<double>(games) : 0.0,
+                    games > 0 ? static_cast<double>(shots) / static_cast<double>(games) : 0.0);
+        return 0;
+    }
+    const demo::Search both[2] = {plain ? demo::Search::Plain : demo::Search::Position,
+                                  plain ? demo::Search::Plain : demo::Search::Position};
     std::vector<double> all;
     long turns = 0, candidates = 0, wins[2] = {0, 0};
     uint64_t digest = 0xcbf29ce484222325ULL;
@@ -46,7 +83,7 @@ int main(int argc, char **argv) {
         demo::SimConfig config;
         config.set_scene(demo::Scene::Break);
         config.seed = static_cast<uint64_t>(seed);
-        const demo::GameRecord g = demo::play_computer_game(config, config.seed);
+        const demo::GameRecord g = demo::play_computer_game(config, config.seed, both);
         std::vector<double> cpu;
         long cands = 0;
         for (const demo::ShotRecord &r : g.shots) {

@@ -242,6 +242,52 @@ void placement() {
 }
 
 // --- computer against computer
+// Position play (opponent.h: position_value, with_position) on a
+// constructed table: solids to shoot, the 1 a quarter metre out of the
+// corner pocket at (0, 0) with the cue ball 0.4 m straight behind it, the 8
+// and stripes elsewhere.  Left so (a straight pot at every speed tried) the
+// table is worth at least 0.5; the same table with six stripes ringed
+// round the cue ball (2.1 R from it: every path out passes within 2R of
+// one) has no potting line and is worth 0, with no shot tried.  A
+// candidate leaving the first is then preferred to one leaving the second
+// even when the second's own score (its ease, 0.9) beats the first's (0.2).
+void position_play() {
+    SimConfig config;
+    config.set_scene(Scene::Break);
+    config.broadphase = WorldBroadphase::List;
+    const Table table = scene_table(config.scene, config.table);
+    const Pocket *corner = &table.pockets[0];
+    for (const Pocket &p : table.pockets)
+        if (p.x + p.y < corner->x + corner->y) corner = &p;
+    const double mx = 0.5 * (corner->mouth[0].x + corner->mouth[1].x), my = 0.5 * (corner->mouth[0].y + corner->mouth[1].y);
+    const double ax = mx + (corner->x - mx) / 3, ay = my + (corner->y - my) / 3;  // opponent.cpp's aim point
+    const double cx = 0.5 * table.length, cy = 0.5 * table.width, d = std::hypot(cx - ax, cy - ay);
+    const double ux = (cx - ax) / d, uy = (cy - ay) / d;
+    const Ball cue{ax + 0.65 * ux, ay + 0.65 * uy, 0, 0, 0, true};
+    std::vector<Ball> open{cue, Ball{ax + 0.25 * ux, ay + 0.25 * uy, 0, 0, 1, true}, Ball{1.27, 1.0, 0, 0, 8, true},
+                           Ball{2.2, 1.0, 0, 0, 15, true}};
+    std::vector<Ball> ringed = open;
+    for (int k = 0; k < 6; ++k) {
+        const double a = k * M_PI / 3, r = 2.1 * kBallRadius;
+        open.push_back(Ball{2.0 + r * std::cos(a), 0.35 + r * std::sin(a), 0, 0, 9 + k, true});
+        ringed.push_back(Ball{cue.x + r * std::cos(a), cue.y + r * std::sin(a), 0, 0, 9 + k, true});
+    }
+    GameState state;
+    state.breaking = false;
+    state.group[0] = Group::Solids;
+    state.group[1] = Group::Stripes;
+    int tried_open = 0, tried_ringed = 0;
+    const double with_shot = position_value(config, table, state, open, &tried_open);
+    const double without = position_value(config, table, state, ringed, &tried_ringed);
+    std::printf("    position values: %.3f (%d shots tried), snookered %.3f (%d tried)\n", with_shot, tried_open, without,
+                tried_ringed);
+    check(with_shot >= 0.5 && with_shot <= 1 && tried_open > 0, "a straight pot left: the table is worth 0.5 or more");
+    check(without == 0 && tried_ringed == 0, "the cue ball ringed by the other group: no potting line, worth 0");
+    check(best_ease(state, table, ringed) == 0 && best_ease(state, table, open) > 0, "the ring blocks every line");
+    const double leaves_shot = with_position(100 + 50 * 0.2, with_shot), leaves_none = with_position(100 + 50 * 0.9, without);
+    check(leaves_shot > leaves_none, "position play prefers the candidate leaving a shot to one leaving none");
+}
+
 void games(int count) {
     SimConfig config;
     for (int seed = 1; seed <= count; ++seed) {
@@ -539,6 +585,7 @@ int main(int argc, char **argv) {
     nine_ball_the_nine();
     nine_ball_three_fouls();
     nine_ball_break_and_push_out();
+    position_play();
     games(count);
     nine_ball_games(count);
     window_plays_the_headless_game();

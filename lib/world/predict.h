@@ -207,6 +207,13 @@ C2D_W_HOT int c2d_w_static_meets(const c2d_w_static *st, const c2d_world_box *r)
            hy + st->radius >= r->lo.y;
 }
 
+/* Whether a point (a segment's end) meets box r, touching counts: the
+ * same test as c2d_w_static_meets on the end alone. */
+C2D_W_HOT int c2d_w_point_meets(double x, double y, const c2d_world_box *r)
+{
+    return x <= r->hi.x && x >= r->lo.x && y <= r->hi.y && y >= r->lo.y;
+}
+
 /* Disk p against the statics whose boxes meet its reach (and not `seen`,
  * tried already; NULL: none), from its reference state (time p->t, so the
  * times depend on that state alone; an approach already due is clamped to
@@ -215,7 +222,14 @@ C2D_W_HOT int c2d_w_static_meets(const c2d_w_static *st, const c2d_world_box *r)
  * now, with the foot within the segment).  With acceleration the horizon is
  * the disk's timer, where its motion may change.  A static beyond the reach
  * cannot be met before the disk's next crossing (c2d_w_reach_of), where it
- * is tried, from the same reference state, if it then comes into reach. */
+ * is tried, from the same reference state, if it then comes into reach.
+ * The same holds for each end of a segment on its own: a rail's box meets
+ * the reach of every disk along it, its ends (the pockets' corners) only
+ * those of disks near them, so an end is tried when it is in the reach
+ * and was not in `seen` (a meeting with it is at the end itself, which
+ * the disk's body covers, inside its shell, a radius within the reach),
+ * and the interior when the segment's box is.  A time of impact skipped
+ * so would be later than the crossing: the events are the same bits. */
 static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const c2d_body *a,
                                   const c2d_world_box *reach, const c2d_world_box *seen, c2d_w_best *best)
 {
@@ -228,10 +242,11 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
     for (k = 0; k < w->nstatic; k++) {
         const c2d_w_static *st = &w->stat[k];
         const uint32_t partner = (uint32_t)(4 + k);
-        int end;
-        if (!c2d_w_static_meets(st, reach) || (seen != NULL && c2d_w_static_meets(st, seen))) continue;
+        int end, fresh;
+        if (!c2d_w_static_meets(st, reach)) continue;
+        fresh = seen == NULL || !c2d_w_static_meets(st, seen); /* the whole static came into reach */
         if (st->shape == C2D_W_SENSOR) {
-            c2d_w_predict_sensor(w, p, a, k, best);
+            if (fresh) c2d_w_predict_sensor(w, p, a, k, best);
             continue;
         }
         for (end = 0; end < (st->shape == C2D_W_CIRCLE ? 1 : 2); end++) {
@@ -239,6 +254,10 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
             double toi, when;
             c2d_status r;
             b.pos.x = end ? st->bx : st->ax, b.pos.y = end ? st->by : st->ay;
+            if (st->shape == C2D_W_CIRCLE ? !fresh
+                                          : !c2d_w_point_meets(b.pos.x, b.pos.y, reach) ||
+                                                (seen != NULL && c2d_w_point_meets(b.pos.x, b.pos.y, seen)))
+                continue;
             b.vel.x = b.vel.y = 0, b.mass = C2D_W_INF;
             if (acc.x == 0 && acc.y == 0) r = C2D_W_TOI(&ref, &b, p->radius + st->radius, &toi);
             else {
@@ -254,7 +273,7 @@ static void c2d_w_predict_statics(const c2d_world *w, const c2d_w_disk *p, const
             }
             c2d_w_consider(best, when, C2D_W_WALL, partner, 0);
         }
-        if (st->shape == C2D_W_SEGMENT) {
+        if (st->shape == C2D_W_SEGMENT && fresh) {
             const double d0 = st->nx * (p->x - st->ax) + st->ny * (p->y - st->ay);
             const double vn = st->nx * p->vx + st->ny * p->vy, an = st->nx * acc.x + st->ny * acc.y;
             const double dnow = st->nx * (a->pos.x - st->ax) + st->ny * (a->pos.y - st->ay);
@@ -851,7 +870,12 @@ static void c2d_w_predict(c2d_world *w, uint32_t i)
     if (!w->periodic) c2d_w_predict_walls(w, p, &best);
     else c2d_w_predict_rebase(w, p, &best);
     if (p->timer < C2D_W_INF) c2d_w_consider(&best, p->timer, C2D_W_TIMER, 0, 0);
-    if (w->nstatic > 0) {
+    /* A disk at rest meets no static: every time of impact with it is
+     * C2D_SEPARATING (no relative motion), a segment's interior is never
+     * reached (c2d_w_meet, v = a = 0) and a sensor never entered; worth
+     * skipping, since a world's disks at rest are predicted at every add
+     * and setter (a pool table before a shot: every ball). */
+    if (w->nstatic > 0 && !(p->vx == 0 && p->vy == 0 && p->ax == 0 && p->ay == 0)) {
         c2d_world_box reach;
         c2d_w_reach_of(w, i, &a, p->cell, &reach);
         c2d_w_predict_statics(w, p, &a, &reach, NULL, &best);
