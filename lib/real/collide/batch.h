@@ -9,11 +9,32 @@
  *   vectorises: the test and the arithmetic it accepts are the very
  *   operations of c2d_quick, so an accepted lane has the scalar call's bits,
  *   and a separating lane its status; a wall takes c2d_quick's mass pair by
- *   a bit-mask select.  Every other lane (cancelling d, the axes, anything
- *   outside the window, bad input) takes the whole scalar call.
- *   An accepted lane's velocities are committed with a bit-mask select that
+ *   a bit-mask select.  Every other lane (the axes, anything outside the
+ *   window, bad input) takes the whole scalar call, and so do cancelling
+ *   lanes the second pass (below) does not settle.  An accepted lane's velocities are committed with a bit-mask select that
  *   leaves the others untouched, so the scalar call sees them as they were.
  *   A partial block (the tail) and a bad restitution take the scalar call.
+ *
+ * CANCELLING LANES: A SECOND VECTOR PASS
+ *   A lane inside the window whose d cancels (neither 4d + k <= 0 nor
+ *   4d - k >= 0: kappa > 4) is the scalar call's C2D_VERDICT_ACCURATE, which
+ *   c2d_real_collide hands to c2d_quick_cancelling (real/collide/collide.h).
+ *   When a block holds one, c2d_batch_cancel runs that tier's arithmetic
+ *   over the whole block, branch-free: the exact normal nh + nl (TwoSum of
+ *   the positions; nh is the kernel's n, bit for bit), d as c2d_dot2_as's
+ *   double-double in its order of operations, and the checks that keep
+ *   c2d_cancelling_as on its own route (positions below 2^(EMAX-2), the
+ *   split bound 2^(EMAX/2), |d| 2^KAPPA2 >= k) as flags.  A cancelling lane
+ *   with all three takes the tier's result: SEPARATING for d >= 0, else
+ *   c = (1+e) d / (n.n (fa + fb)) and the velocities from nh, exactly
+ *   c2d_cancelling_as's operations (fa, fb, n.n and den are the kernel's,
+ *   the same values), committed by the same select.  Without them (the
+ *   general tier's pairs) the lane takes the scalar call as before.  The
+ *   scalar call forms TwoProduct by FMA where the CPU has it, the pass by
+ *   Veltkamp's split (or C2D_R_FMA where the build has it): the product's
+ *   error a*b - p exactly either way (real/arith/exact.h; the split bound
+ *   keeps the halves' products exact), so the same bits.  The other lanes'
+ *   codes and velocities are left as they were.
  *
  * RUN-TIME DISPATCH
  *   On hosted x86-64 ELF with gcc (C2D_DISPATCH, internal.h; off with
@@ -31,10 +52,11 @@
 #ifndef C2D_REAL_BATCH_H
 #define C2D_REAL_BATCH_H
 
-enum { C2D_BLOCK = 16 };
+enum { C2D_BLOCK = 16, C2D_TALLY_SHIFT = 8 };
 
-/* What the kernel found for a lane. */
-enum { C2D_LANE_SCALAR = 0, C2D_LANE_OK = 1, C2D_LANE_SEPARATING = 2 };
+/* What the kernel found for a lane.  OK - 1 and SEPARATING - 1 are the
+ * public statuses C2D_OK and C2D_SEPARATING (lane >> 1). */
+enum { C2D_LANE_SCALAR = 0, C2D_LANE_OK = 1, C2D_LANE_SEPARATING = 2, C2D_LANE_CANCELS = 4 };
 
 /* Pairs in the block that starts `left` pairs before the end. */
 static size_t c2d_block_width(size_t left) { return left < (size_t)C2D_BLOCK ? left : (size_t)C2D_BLOCK; }
@@ -65,15 +87,20 @@ static inline void c2d_batch_commit(c2d_real *v, const c2d_real *x, const c2d_re
 }
 
 /* The front end over one full block from `base`: each lane's C2D_LANE_*,
- * and the accepted lanes' velocities committed in place.  c2d_quick's
+ * the settled lanes' statuses in st[0..C2D_BLOCK), and the accepted lanes'
+ * velocities committed in place.  Returns the count of OK lanes plus the
+ * count of lanes left unsettled (cancelling or scalar) times
+ * 2^C2D_TALLY_SHIFT: one sum, so one reduction in the vector loop.  c2d_quick's
  * arithmetic with & in place of its branches, walls included.  Results go to local arrays first, so nothing the
  * main loop writes can alias what it reads; each commit loop then touches
  * one array. */
 #ifdef C2D_DISPATCH
 __attribute__((target_clones("default", "arch=x86-64-v2", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
-static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, c2d_real_bits *restrict lane)
+static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, c2d_real_bits *restrict lane,
+                                      c2d_status *restrict st)
 {
+    c2d_real_bits tally = 0;
     c2d_real out[4][C2D_BLOCK];
     c2d_real_bits keep_a[C2D_BLOCK], keep_b[C2D_BLOCK];
     const c2d_real hi = C2D_R_QUICK_HI, lo = C2D_R_QUICK_LO;
@@ -107,7 +134,8 @@ static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, 
         const c2d_real_bits window = (c2d_real_bits)((k + nn) + (fa + fb) <= hi) & (c2d_real_bits)(least >= lo) &
                                      (c2d_real_bits)(lighter <= C2D_R_MAX) & (c2d_real_bits)(nx != 0) &
                                      (c2d_real_bits)(ny != 0); /* axes: scalar */
-        const c2d_real_bits ok = window & (c2d_real_bits)(4 * d + k <= 0);
+        const c2d_real_bits approach = (c2d_real_bits)(4 * d + k <= 0), sep = (c2d_real_bits)(4 * d - k >= 0);
+        const c2d_real_bits ok = window & approach;
         const c2d_real den = nn * (fa + fb);
         const c2d_real c = e1 * d / den;
         const c2d_real la = c * fb, lb = c * fa;
@@ -119,12 +147,118 @@ static void c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, 
          * (its change is a signed zero: -0 + +0 would be +0). */
         keep_a[j] = (c2d_real_bits)0 - (ok & (ia ^ 1u));
         keep_b[j] = (c2d_real_bits)0 - (ok & (ib ^ 1u));
-        lane[j] = ok | (window & (c2d_real_bits)(4 * d - k >= 0)) << 1;
+        lane[j] = ok | (window & sep) << 1 | (window & ((approach | sep) ^ 1u)) << 2;
+        st[j] = (c2d_status)(lane[j] >> 1); /* C2D_OK or C2D_SEPARATING where settled */
+        tally += ok + (((ok | (window & sep)) ^ 1u) << C2D_TALLY_SHIFT);
     }
     c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep_a);
     c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep_a);
     c2d_batch_commit(&p->vel_bx[base], &out[2][0], keep_b);
     c2d_batch_commit(&p->vel_by[base], &out[3][0], keep_b);
+    return tally;
+}
+
+/* Up to C2D_BLOCK cancelling lanes gathered from the pairs: the pass's
+ * input, one array per field (index C2D_G_*), and its output. */
+enum { C2D_G_PAX, C2D_G_PAY, C2D_G_PBX, C2D_G_PBY, C2D_G_VAX, C2D_G_VAY, C2D_G_VBX, C2D_G_VBY, C2D_G_MA, C2D_G_MB,
+       C2D_G_FIELDS };
+typedef struct c2d_batch_gathered {
+    c2d_real in[C2D_G_FIELDS][C2D_BLOCK];
+    c2d_real out[4][C2D_BLOCK];    /* {va'x, va'y, vb'x, vb'y}, the inputs where not OK */
+    c2d_real_bits code[C2D_BLOCK]; /* C2D_LANE_OK, C2D_LANE_SEPARATING or C2D_LANE_SCALAR */
+} c2d_batch_gathered;
+
+/* The second pass (header: "cancelling lanes"): c2d_cancelling_as for
+ * every gathered lane, branch-free.  The lanes are inside the kernel's
+ * window, so c2d_quick_cancelling's bound on the positions holds: a
+ * coordinate of magnitude 2^(EMAX-4) or more makes that component of
+ * n = pb - pa zero or at least 2^(EMAX-4-MANT) (its ulp), beyond the
+ * window's |n_i| <= W^(1/2), and n_i = 0 is the axes' case.  What is left
+ * is the split bound and the trust test, as flags.  In a cancelling lane
+ * |px| and |py| both exceed 3k/8 >= 3/8 W^-1, so with the split bound the
+ * TwoProducts' halves and errors stay normal: Veltkamp's split and FMA give
+ * the same exact error.  `fused` as for c2d_two_prod_as. */
+C2D_HOT void c2d_batch_cancel_as(c2d_batch_gathered *g, c2d_real e1, int fused)
+{
+    const c2d_real split_max = c2d_pow2(C2D_R_EMAX / 2), kappa2 = c2d_pow2(C2D_R_EXP_KAPPA2);
+    size_t j;
+    for (j = 0; j < (size_t)C2D_BLOCK; j++) {
+        const c2d_real pax = g->in[C2D_G_PAX][j], pay = g->in[C2D_G_PAY][j];
+        const c2d_real pbx = g->in[C2D_G_PBX][j], pby = g->in[C2D_G_PBY][j];
+        const c2d_real vax = g->in[C2D_G_VAX][j], vay = g->in[C2D_G_VAY][j];
+        const c2d_real vbx = g->in[C2D_G_VBX][j], vby = g->in[C2D_G_VBY][j];
+        const c2d_real ma = g->in[C2D_G_MA][j], mb = g->in[C2D_G_MB][j];
+        c2d_real nlx, nly, rlx, rly, ex, ey, t;
+        /* c2d_exact_normal, then c2d_cancelling_as: k, split, c2d_dot2_as
+         * in its order of operations (rhx, rhy are rx, ry; px, py its
+         * products, so k is the tier's). */
+        const c2d_real nhx = c2d_two_sum(pbx, -pax, &nlx), nhy = c2d_two_sum(pby, -pay, &nly);
+        const c2d_real rhx = c2d_two_sum(vbx, -vax, &rlx), rhy = c2d_two_sum(vby, -vay, &rly);
+        const c2d_real px = c2d_two_prod_as(rhx, nhx, &ex, fused), py = c2d_two_prod_as(rhy, nhy, &ey, fused);
+        const c2d_real k = c2d_abs(px) + c2d_abs(py);
+        const c2d_real split = c2d_abs(rhx) + c2d_abs(rhy) + c2d_abs(nhx) + c2d_abs(nhy);
+        const c2d_real s = c2d_two_sum(px, py, &t);
+        const c2d_real lower = ((rhx * nlx + rlx * nhx) + (rhy * nly + rly * nhy)) + (rlx * nlx + rly * nly);
+        const c2d_real d = s + (t + ((ex + ey) + lower));
+        const c2d_real_bits settles =
+            (c2d_real_bits)(split <= split_max) & (c2d_real_bits)(c2d_abs(d) * kappa2 >= k);
+        const c2d_real_bits separating = (c2d_real_bits)(d >= 0), ok = settles & (separating ^ 1u);
+        /* The tier's masses (the kernel's pick: the same values for a
+         * lane in the window) and update; an immovable body, and every
+         * lane not OK, keeps its velocity's bits. */
+        const c2d_real_bits ia = (c2d_real_bits)(ma > C2D_R_MAX), ib = (c2d_real_bits)(mb > C2D_R_MAX);
+        const c2d_real_bits movable = (c2d_real_bits)0 - ((ia | ib) ^ 1u);
+        const c2d_real fa = c2d_pick(ma, movable, (c2d_real_bits)0 - (ia & (ib ^ 1u)));
+        const c2d_real fb = c2d_pick(mb, movable, (c2d_real_bits)0 - (ib & (ia ^ 1u)));
+        const c2d_real den = (nhx * nhx + nhy * nhy) * (fa + fb);
+        const c2d_real c = e1 * d / den;
+        const c2d_real la = c * fb, lb = c * fa;
+        const c2d_real_bits keep_a = (c2d_real_bits)0 - (ok & (ia ^ 1u)), keep_b = (c2d_real_bits)0 - (ok & (ib ^ 1u));
+        g->out[0][j] = c2d_from_bits((c2d_bits(vax + la * nhx) & keep_a) | (c2d_bits(vax) & ~keep_a));
+        g->out[1][j] = c2d_from_bits((c2d_bits(vay + la * nhy) & keep_a) | (c2d_bits(vay) & ~keep_a));
+        g->out[2][j] = c2d_from_bits((c2d_bits(vbx - lb * nhx) & keep_b) | (c2d_bits(vbx) & ~keep_b));
+        g->out[3][j] = c2d_from_bits((c2d_bits(vby - lb * nhy) & keep_b) | (c2d_bits(vby) & ~keep_b));
+        g->code[j] = ok | (settles & separating) << 1;
+    }
+}
+
+/* The pass compiled for each target: under C2D_DISPATCH with FMA for
+ * x86-64-v4 and -v3 (chosen when the CPU has them, as the scalar tier
+ * chooses c2d_cancelling_fused), target_clones without it below; the same
+ * bits everywhere. */
+#ifdef C2D_R_FUSED
+__attribute__((target("arch=x86-64-v4"))) C2D_COLD void c2d_batch_cancel_v4(c2d_batch_gathered *g, c2d_real e1)
+{
+    c2d_batch_cancel_as(g, e1, 1);
+}
+
+__attribute__((target("arch=x86-64-v3"))) C2D_COLD void c2d_batch_cancel_v3(c2d_batch_gathered *g, c2d_real e1)
+{
+    c2d_batch_cancel_as(g, e1, 1);
+}
+#endif
+
+#ifdef C2D_DISPATCH
+__attribute__((target_clones("default", "arch=x86-64-v2")))
+#endif
+C2D_COLD void c2d_batch_cancel_plain(c2d_batch_gathered *g, c2d_real e1)
+{
+    c2d_batch_cancel_as(g, e1, 0);
+}
+
+static void c2d_batch_cancel(c2d_batch_gathered *g, c2d_real e1)
+{
+#ifdef C2D_R_FUSED
+    if (__builtin_cpu_supports("x86-64-v4")) {
+        c2d_batch_cancel_v4(g, e1);
+        return;
+    }
+    if (__builtin_cpu_supports("x86-64-v3")) {
+        c2d_batch_cancel_v3(g, e1);
+        return;
+    }
+#endif
+    c2d_batch_cancel_plain(g, e1);
 }
 
 /* One lane the kernel did not settle: the whole scalar call. */
@@ -143,33 +277,71 @@ static c2d_status c2d_batch_lane(const c2d_real_pairs *p, size_t i, c2d_real res
     return s;
 }
 
-/* Each lane's status (the scalar call for the lanes the kernel left);
- * returns how many are OK. */
-static size_t c2d_batch_finish_block(const c2d_real_pairs *p, size_t base, size_t width, const c2d_real_bits *lane,
-                                     c2d_real restitution, c2d_status *status)
+/* The cancelling lanes waiting for the pass: pair indices in a ring of
+ * 2 C2D_BLOCK (a block adds at most C2D_BLOCK to fewer than C2D_BLOCK). */
+enum { C2D_QUEUE = 2 * C2D_BLOCK };
+typedef struct c2d_batch_queue {
+    size_t at[C2D_QUEUE];
+    size_t head, count;
+} c2d_batch_queue;
+
+/* The first n <= C2D_BLOCK queued lanes through the pass (the rest of its
+ * width repeats the first lane, computed and dropped), their velocities and
+ * statuses stored, the scalar call for those the pass leaves; returns how
+ * many are OK. */
+static size_t c2d_batch_flush(const c2d_real_pairs *p, c2d_batch_queue *q, size_t n, c2d_real e1, c2d_real restitution,
+                              c2d_status *status)
 {
+    c2d_batch_gathered g;
     size_t j, done = 0;
-    c2d_real_bits all = (c2d_real_bits)C2D_LANE_OK;
-    for (j = 0; j < width; j++) all &= lane[j];
-    if (width == (size_t)C2D_BLOCK && all == (c2d_real_bits)C2D_LANE_OK) {
-        /* Every lane accepted: C2D_OK is 0 = C2D_LANE_OK - 1, written lane by
-         * lane (a constant store would become a memset call). */
-        if (status != NULL)
-            for (j = 0; j < (size_t)C2D_BLOCK; j++) status[base + j] = (c2d_status)(lane[j] - 1u);
-        return (size_t)C2D_BLOCK;
+    for (j = 0; j < (size_t)C2D_BLOCK; j++) {
+        const size_t i = q->at[(q->head + (j < n ? j : 0)) % (size_t)C2D_QUEUE];
+        g.in[C2D_G_PAX][j] = p->pos_ax[i];
+        g.in[C2D_G_PAY][j] = p->pos_ay[i];
+        g.in[C2D_G_PBX][j] = p->pos_bx[i];
+        g.in[C2D_G_PBY][j] = p->pos_by[i];
+        g.in[C2D_G_VAX][j] = p->vel_ax[i];
+        g.in[C2D_G_VAY][j] = p->vel_ay[i];
+        g.in[C2D_G_VBX][j] = p->vel_bx[i];
+        g.in[C2D_G_VBY][j] = p->vel_by[i];
+        g.in[C2D_G_MA][j] = p->mass_a[i];
+        g.in[C2D_G_MB][j] = p->mass_b[i];
     }
-    for (j = 0; j < width; j++) {
-        const size_t i = base + j;
-        c2d_status s;
-        if (lane[j] == (c2d_real_bits)C2D_LANE_OK)
-            s = C2D_OK;
-        else if (lane[j] == (c2d_real_bits)C2D_LANE_SEPARATING)
-            s = C2D_SEPARATING;
-        else
-            s = c2d_batch_lane(p, i, restitution);
+    c2d_batch_cancel(&g, e1);
+    for (j = 0; j < n; j++) {
+        const size_t i = q->at[(q->head + j) % (size_t)C2D_QUEUE];
+        c2d_status s = (c2d_status)(g.code[j] >> 1);
+        /* Stored whatever the code: a lane not OK gets its own bits back. */
+        p->vel_ax[i] = g.out[0][j];
+        p->vel_ay[i] = g.out[1][j];
+        p->vel_bx[i] = g.out[2][j];
+        p->vel_by[i] = g.out[3][j];
+        if (g.code[j] == (c2d_real_bits)C2D_LANE_SCALAR) s = c2d_batch_lane(p, i, restitution);
         if (s == C2D_OK) done++;
         if (status != NULL) status[i] = s;
     }
+    q->head = (q->head + n) % (size_t)C2D_QUEUE;
+    q->count -= n;
+    return done;
+}
+
+/* The lanes of a full block the kernel left unsettled: the cancelling ones
+ * queued for the pass (branch-free; their status is written then), the
+ * scalar call for the rest, rare; returns how many of those are OK. */
+static size_t c2d_batch_unsettled(const c2d_real_pairs *p, size_t base, const c2d_real_bits *lane, c2d_real restitution,
+                                  c2d_status *status, c2d_batch_queue *q)
+{
+    size_t j, done = 0, count = q->count;
+    for (j = 0; j < (size_t)C2D_BLOCK; j++) {
+        q->at[(q->head + count) % (size_t)C2D_QUEUE] = base + j;
+        count += (size_t)(lane[j] >> 2);
+        if (lane[j] == (c2d_real_bits)C2D_LANE_SCALAR) {
+            const c2d_status s = c2d_batch_lane(p, base + j, restitution);
+            if (s == C2D_OK) done++;
+            if (status != NULL) status[base + j] = s;
+        }
+    }
+    q->count = count;
     return done;
 }
 
@@ -178,18 +350,32 @@ static size_t c2d_real_collide_batch(const c2d_real_pairs *p, size_t count, c2d_
     size_t base, done = 0;
     const int e_ok = restitution >= 0 && restitution <= 1;
     const c2d_real e1 = 1 + restitution;
+    c2d_batch_queue q;
     if (p == NULL) return 0;
+    q.head = 0;
+    q.count = 0;
     for (base = 0; base < count; base += C2D_BLOCK) {
-        c2d_real_bits lane[C2D_BLOCK];
         const size_t width = c2d_block_width(count - base);
         if (width == (size_t)C2D_BLOCK && e_ok != 0) {
-            c2d_batch_kernel(p, base, e1, lane);
+            c2d_real_bits lane[C2D_BLOCK];
+            c2d_status scratch[C2D_BLOCK];
+            const c2d_real_bits tally = c2d_batch_kernel(p, base, e1, lane, status != NULL ? status + base : scratch);
+            done += (size_t)(tally & (((c2d_real_bits)1 << C2D_TALLY_SHIFT) - 1u));
+            if ((tally >> C2D_TALLY_SHIFT) != 0) {
+                done += c2d_batch_unsettled(p, base, lane, restitution, status, &q);
+                if (q.count >= (size_t)C2D_BLOCK)
+                    done += c2d_batch_flush(p, &q, (size_t)C2D_BLOCK, e1, restitution, status);
+            }
         } else {
             size_t j;
-            for (j = 0; j < width; j++) lane[j] = (c2d_real_bits)C2D_LANE_SCALAR;
+            for (j = 0; j < width; j++) {
+                const c2d_status s = c2d_batch_lane(p, base + j, restitution);
+                if (s == C2D_OK) done++;
+                if (status != NULL) status[base + j] = s;
+            }
         }
-        done += c2d_batch_finish_block(p, base, width, lane, restitution, status);
     }
+    if (q.count > 0) done += c2d_batch_flush(p, &q, q.count, e1, restitution, status);
     return done;
 }
 
