@@ -11,30 +11,36 @@
  *   and a separating lane its status; a wall takes c2d_quick's mass pair by
  *   a bit-mask select.  Every other lane (the axes, anything outside the
  *   window, bad input) takes the whole scalar call, and so do cancelling
- *   lanes the second pass (below) does not settle.  An accepted lane's velocities are committed with a bit-mask select that
- *   leaves the others untouched, so the scalar call sees them as they were.
- *   A partial block (the tail) and a bad restitution take the scalar call.
+ *   lanes the second pass (below) does not settle.  An accepted lane's
+ *   velocities are committed with a bit-mask select that leaves the others
+ *   untouched, so the scalar call sees them as they were.  The kernel also
+ *   writes the settled lanes' statuses and counts them, so a block with
+ *   nothing left needs no per-lane code outside the vector loop.  A partial
+ *   block (the tail) and a bad restitution take the scalar call.
  *
  * CANCELLING LANES: A SECOND VECTOR PASS
  *   A lane inside the window whose d cancels (neither 4d + k <= 0 nor
  *   4d - k >= 0: kappa > 4) is the scalar call's C2D_VERDICT_ACCURATE, which
- *   c2d_real_collide hands to c2d_quick_cancelling (real/collide/collide.h).
- *   When a block holds one, c2d_batch_cancel runs that tier's arithmetic
- *   over the whole block, branch-free: the exact normal nh + nl (TwoSum of
- *   the positions; nh is the kernel's n, bit for bit), d as c2d_dot2_as's
- *   double-double in its order of operations, and the checks that keep
- *   c2d_cancelling_as on its own route (positions below 2^(EMAX-2), the
- *   split bound 2^(EMAX/2), |d| 2^KAPPA2 >= k) as flags.  A cancelling lane
- *   with all three takes the tier's result: SEPARATING for d >= 0, else
- *   c = (1+e) d / (n.n (fa + fb)) and the velocities from nh, exactly
- *   c2d_cancelling_as's operations (fa, fb, n.n and den are the kernel's,
- *   the same values), committed by the same select.  Without them (the
- *   general tier's pairs) the lane takes the scalar call as before.  The
- *   scalar call forms TwoProduct by FMA where the CPU has it, the pass by
- *   Veltkamp's split (or C2D_R_FMA where the build has it): the product's
- *   error a*b - p exactly either way (real/arith/exact.h; the split bound
- *   keeps the halves' products exact), so the same bits.  The other lanes'
- *   codes and velocities are left as they were.
+ *   c2d_real_collide hands to c2d_quick_cancelling (real/collide/collide.h)
+ *   at some 250 instructions with branches the predictor cannot learn (9 %
+ *   of a gas's pairs, 22 % of a random mix).  The batch queues such lanes
+ *   (their indices, branch-free) and, C2D_BLOCK at a time, gathers them and
+ *   runs that tier's arithmetic over them in one branch-free loop
+ *   (c2d_batch_cancel_as): the exact normal nh + nl (TwoSum of the
+ *   positions; nh is the kernel's n, bit for bit), d as c2d_dot2_as's
+ *   double-double in its order of operations, and the tests that keep
+ *   c2d_cancelling_as on its own route (the split bound 2^(EMAX/2) and the
+ *   trust test |d| 2^KAPPA2 >= k) as flags.  A lane passing both takes the
+ *   tier's result: SEPARATING for d >= 0, else c = (1+e) d / (n.n (fa + fb))
+ *   and the velocities from nh, c2d_cancelling_as's operations (fa, fb and
+ *   n.n are the kernel's values), the immovable body's bits kept by a
+ *   select.  A lane failing one (the general tier's pairs) takes the whole
+ *   scalar call, as before.  The scalar tier forms TwoProduct by FMA where
+ *   the CPU has it, the pass too on x86-64-v3 and -v4 and by Veltkamp's
+ *   split elsewhere (or C2D_R_FMA where the build has it): the product's
+ *   error a*b - p exactly either way (real/arith/exact.h; why the halves
+ *   stay exact here: c2d_batch_cancel_as), so the same bits.  Lanes are
+ *   independent, so settling them a few blocks late changes nothing.
  *
  * RUN-TIME DISPATCH
  *   On hosted x86-64 ELF with gcc (C2D_DISPATCH, internal.h; off with
@@ -45,9 +51,13 @@
  *   want of 64-bit compares), x86-64-v2 (SSE4.2: double too), x86-64-v3
  *   (AVX2: four doubles or eight floats a vector), x86-64-v4 (AVX-512:
  *   eight or sixteen; the double kernel is bound by the division's
- *   throughput, so the widest vectors pay most).  Contraction stays off in
- *   every clone (-ffp-contract=off; nothing here calls fma), and division
- *   and square root are correctly rounded at any width: same bits.
+ *   throughput, so the widest vectors pay most).  The cancelling pass is
+ *   compiled for x86-64-v4 and -v3 with FMA and chosen by
+ *   __builtin_cpu_supports (as the scalar tier chooses its FMA version),
+ *   else cloned for baseline and x86-64-v2.  Contraction stays off
+ *   everywhere (-ffp-contract=off; only the pass's TwoProduct calls fma),
+ *   and division and square root are correctly rounded at any width: same
+ *   bits.
  */
 #ifndef C2D_REAL_BATCH_H
 #define C2D_REAL_BATCH_H
