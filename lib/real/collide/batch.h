@@ -62,11 +62,15 @@
 #ifndef C2D_REAL_BATCH_H
 #define C2D_REAL_BATCH_H
 
-enum { C2D_BLOCK = 16, C2D_TALLY_SHIFT = 8 };
+enum { C2D_BLOCK = 16 };
 
 /* What the kernel found for a lane.  OK - 1 and SEPARATING - 1 are the
  * public statuses C2D_OK and C2D_SEPARATING (lane >> 1). */
 enum { C2D_LANE_SCALAR = 0, C2D_LANE_OK = 1, C2D_LANE_SEPARATING = 2, C2D_LANE_CANCELS = 4 };
+
+/* 2^j for lane j. */
+static const c2d_real_bits c2d_lane_bit[C2D_BLOCK] = {0x1u,   0x2u,   0x4u,   0x8u,    0x10u,   0x20u,   0x40u,   0x80u,
+                                                      0x100u, 0x200u, 0x400u, 0x800u, 0x1000u, 0x2000u, 0x4000u, 0x8000u};
 
 /* Pairs in the block that starts `left` pairs before the end. */
 static size_t c2d_block_width(size_t left) { return left < (size_t)C2D_BLOCK ? left : (size_t)C2D_BLOCK; }
@@ -98,9 +102,9 @@ static inline void c2d_batch_commit(c2d_real *v, const c2d_real *x, const c2d_re
 
 /* The front end over one full block from `base`: each lane's C2D_LANE_*,
  * the settled lanes' statuses in st[0..C2D_BLOCK), and the accepted lanes'
- * velocities committed in place.  Returns the count of OK lanes plus the
- * count of lanes left unsettled (cancelling or scalar) times
- * 2^C2D_TALLY_SHIFT: one sum, so one reduction in the vector loop.  c2d_quick's
+ * velocities committed in place.  Returns the count of OK lanes; *left
+ * gets the lanes left unsettled as bits, cancelling ones at bit j, those
+ * for the scalar call at bit C2D_BLOCK + j (32 bits: fits either type).  c2d_quick's
  * arithmetic with & in place of its branches, walls included.  Results go to local arrays first, so nothing the
  * main loop writes can alias what it reads; each commit loop then touches
  * one array. */
@@ -108,9 +112,9 @@ static inline void c2d_batch_commit(c2d_real *v, const c2d_real *x, const c2d_re
 __attribute__((target_clones("default", "arch=x86-64-v2", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
 static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, c2d_real_bits *restrict lane,
-                                      c2d_status *restrict st)
+                                      c2d_status *restrict st, c2d_real_bits *restrict left)
 {
-    c2d_real_bits tally = 0;
+    c2d_real_bits ok_count = 0, unsettled = 0;
     c2d_real out[4][C2D_BLOCK];
     c2d_real_bits keep_a[C2D_BLOCK], keep_b[C2D_BLOCK];
     const c2d_real hi = C2D_R_QUICK_HI, lo = C2D_R_QUICK_LO;
@@ -159,13 +163,17 @@ static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_
         keep_b[j] = (c2d_real_bits)0 - (ok & (ib ^ 1u));
         lane[j] = ok | (window & sep) << 1 | (window & ((approach | sep) ^ 1u)) << 2;
         st[j] = (c2d_status)(lane[j] >> 1); /* C2D_OK or C2D_SEPARATING where settled */
-        tally += ok + (((ok | (window & sep)) ^ 1u) << C2D_TALLY_SHIFT);
+        ok_count += ok;
+        /* bit j from a table, not 1 << j: SSE4.2 has no per-lane shift */
+        unsettled |= (((c2d_real_bits)0 - (lane[j] >> 2)) & c2d_lane_bit[j]) |
+                     (((c2d_real_bits)0 - ((ok | (window & sep) | lane[j] >> 2) ^ 1u)) & c2d_lane_bit[j]) << C2D_BLOCK;
     }
     c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep_a);
     c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep_a);
     c2d_batch_commit(&p->vel_bx[base], &out[2][0], keep_b);
     c2d_batch_commit(&p->vel_by[base], &out[3][0], keep_b);
-    return tally;
+    *left = unsettled;
+    return ok_count;
 }
 
 /* Up to C2D_BLOCK cancelling lanes gathered from the pairs: the pass's
@@ -335,23 +343,43 @@ static size_t c2d_batch_flush(const c2d_real_pairs *p, c2d_batch_queue *q, size_
     return done;
 }
 
-/* The lanes of a full block the kernel left unsettled: the cancelling ones
- * queued for the pass (branch-free; their status is written then), the
- * scalar call for the rest, rare; returns how many of those are OK. */
-static size_t c2d_batch_unsettled(const c2d_real_pairs *p, size_t base, const c2d_real_bits *lane, c2d_real restitution,
+/* The lowest set bit of m != 0. */
+static unsigned c2d_lowest_bit(c2d_real_bits m)
+{
+#ifdef __GNUC__
+    return (unsigned)__builtin_ctzll((unsigned long long)m);
+#else
+    unsigned j = 0;
+    while ((m & 1u) == 0u) {
+        m >>= 1;
+        j++;
+    }
+    return j;
+#endif
+}
+
+/* The lanes of a full block the kernel left unsettled (`left`, as it
+ * returns them): the cancelling ones queued for the pass (their status is
+ * written then), the scalar call for the rest; returns how many of those
+ * are OK.  Only the set bits cost anything. */
+static size_t c2d_batch_unsettled(const c2d_real_pairs *p, size_t base, c2d_real_bits left, c2d_real restitution,
                                   c2d_status *status, c2d_batch_queue *q)
 {
-    size_t j, done = 0, count = q->count;
-    for (j = 0; j < (size_t)C2D_BLOCK; j++) {
-        q->at[(q->head + count) % (size_t)C2D_QUEUE] = base + j;
-        count += (size_t)(lane[j] >> 2);
-        if (lane[j] == (c2d_real_bits)C2D_LANE_SCALAR) {
-            const c2d_status s = c2d_batch_lane(p, base + j, restitution);
-            if (s == C2D_OK) done++;
-            if (status != NULL) status[base + j] = s;
-        }
+    size_t done = 0;
+    c2d_real_bits m = left & (((c2d_real_bits)1 << C2D_BLOCK) - 1u);
+    while (m != 0u) {
+        q->at[(q->head + q->count) % (size_t)C2D_QUEUE] = base + c2d_lowest_bit(m);
+        q->count++;
+        m &= m - 1u;
     }
-    q->count = count;
+    m = left >> C2D_BLOCK;
+    while (m != 0u) {
+        const size_t i = base + c2d_lowest_bit(m);
+        const c2d_status s = c2d_batch_lane(p, i, restitution);
+        if (s == C2D_OK) done++;
+        if (status != NULL) status[i] = s;
+        m &= m - 1u;
+    }
     return done;
 }
 
@@ -369,10 +397,10 @@ static size_t c2d_real_collide_batch(const c2d_real_pairs *p, size_t count, c2d_
         if (width == (size_t)C2D_BLOCK && e_ok != 0) {
             c2d_real_bits lane[C2D_BLOCK];
             c2d_status scratch[C2D_BLOCK];
-            const c2d_real_bits tally = c2d_batch_kernel(p, base, e1, lane, status != NULL ? status + base : scratch);
-            done += (size_t)(tally & (((c2d_real_bits)1 << C2D_TALLY_SHIFT) - 1u));
-            if ((tally >> C2D_TALLY_SHIFT) != 0) {
-                done += c2d_batch_unsettled(p, base, lane, restitution, status, &q);
+            c2d_real_bits left;
+            done += (size_t)c2d_batch_kernel(p, base, e1, lane, status != NULL ? status + base : scratch, &left);
+            if (left != 0u) {
+                done += c2d_batch_unsettled(p, base, left, restitution, status, &q);
                 if (q.count >= (size_t)C2D_BLOCK)
                     done += c2d_batch_flush(p, &q, (size_t)C2D_BLOCK, e1, restitution, status);
             }
