@@ -100,19 +100,20 @@ static inline void c2d_batch_commit(c2d_real *v, const c2d_real *x, const c2d_re
         v[j] = c2d_from_bits((c2d_bits(x[j]) & keep[j]) | (c2d_bits(v[j]) & ~keep[j]));
 }
 
-/* The front end over one full block from `base`: each lane's C2D_LANE_*,
- * the settled lanes' statuses in st[0..C2D_BLOCK), and the accepted lanes'
- * velocities committed in place.  Returns the count of OK lanes; *left
- * gets the lanes left unsettled as bits, cancelling ones at bit j, those
- * for the scalar call at bit C2D_BLOCK + j (32 bits: fits either type).  c2d_quick's
- * arithmetic with & in place of its branches, walls included.  Results go to local arrays first, so nothing the
- * main loop writes can alias what it reads; each commit loop then touches
- * one array. */
+/* The front end over one full block from `base`: c2d_quick's arithmetic
+ * with & in place of its branches, walls included.  Each lane's C2D_LANE_*
+ * code decides its status (written to st[0..C2D_BLOCK) for the settled
+ * lanes) and whether its velocities are committed in place.  Returns the
+ * count of OK lanes; *left gets the lanes left unsettled as bits, the
+ * cancelling ones at bit j, those for the scalar call at bit C2D_BLOCK + j
+ * (32 bits: fits either type).  Results go to local arrays first, so
+ * nothing the main loop writes can alias what it reads; each commit loop
+ * then touches one array. */
 #ifdef C2D_DISPATCH
 __attribute__((target_clones("default", "arch=x86-64-v2", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
-static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, c2d_real_bits *restrict lane,
-                                      c2d_status *restrict st, c2d_real_bits *restrict left)
+static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, c2d_status *restrict st,
+                                      c2d_real_bits *restrict left)
 {
     c2d_real_bits ok_count = 0, unsettled = 0;
     c2d_real out[4][C2D_BLOCK];
@@ -161,12 +162,13 @@ static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_
          * (its change is a signed zero: -0 + +0 would be +0). */
         keep_a[j] = (c2d_real_bits)0 - (ok & (ia ^ 1u));
         keep_b[j] = (c2d_real_bits)0 - (ok & (ib ^ 1u));
-        lane[j] = ok | (window & sep) << 1 | (window & ((approach | sep) ^ 1u)) << 2;
-        st[j] = (c2d_status)(lane[j] >> 1); /* C2D_OK or C2D_SEPARATING where settled */
+        const c2d_real_bits cancels = window & ((approach | sep) ^ 1u);
+        const c2d_real_bits code = ok | (window & sep) << 1 | cancels << 2;
+        st[j] = (c2d_status)(code >> 1); /* C2D_OK or C2D_SEPARATING where settled */
         ok_count += ok;
         /* bit j from a table, not 1 << j: SSE4.2 has no per-lane shift */
-        unsettled |= (((c2d_real_bits)0 - (lane[j] >> 2)) & c2d_lane_bit[j]) |
-                     (((c2d_real_bits)0 - ((ok | (window & sep) | lane[j] >> 2) ^ 1u)) & c2d_lane_bit[j]) << C2D_BLOCK;
+        unsettled |= (((c2d_real_bits)0 - cancels) & c2d_lane_bit[j]) |
+                     (((c2d_real_bits)0 - (code == (c2d_real_bits)C2D_LANE_SCALAR)) & c2d_lane_bit[j]) << C2D_BLOCK;
     }
     c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep_a);
     c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep_a);
@@ -395,10 +397,9 @@ static size_t c2d_real_collide_batch(const c2d_real_pairs *p, size_t count, c2d_
     for (base = 0; base < count; base += C2D_BLOCK) {
         const size_t width = c2d_block_width(count - base);
         if (width == (size_t)C2D_BLOCK && e_ok != 0) {
-            c2d_real_bits lane[C2D_BLOCK];
             c2d_status scratch[C2D_BLOCK];
             c2d_real_bits left;
-            done += (size_t)c2d_batch_kernel(p, base, e1, lane, status != NULL ? status + base : scratch, &left);
+            done += (size_t)c2d_batch_kernel(p, base, e1, status != NULL ? status + base : scratch, &left);
             if (left != 0u) {
                 done += c2d_batch_unsettled(p, base, left, restitution, status, &q);
                 if (q.count >= (size_t)C2D_BLOCK)
