@@ -68,10 +68,6 @@ enum { C2D_BLOCK = 16 };
  * public statuses C2D_OK and C2D_SEPARATING (lane >> 1). */
 enum { C2D_LANE_SCALAR = 0, C2D_LANE_OK = 1, C2D_LANE_SEPARATING = 2, C2D_LANE_CANCELS = 4 };
 
-/* 2^j for lane j. */
-static const c2d_real_bits c2d_lane_bit[C2D_BLOCK] = {0x1u,   0x2u,   0x4u,   0x8u,    0x10u,   0x20u,   0x40u,   0x80u,
-                                                      0x100u, 0x200u, 0x400u, 0x800u, 0x1000u, 0x2000u, 0x4000u, 0x8000u};
-
 /* Pairs in the block that starts `left` pairs before the end. */
 static size_t c2d_block_width(size_t left) { return left < (size_t)C2D_BLOCK ? left : (size_t)C2D_BLOCK; }
 
@@ -115,6 +111,9 @@ __attribute__((target_clones("default", "arch=x86-64-v2", "arch=x86-64-v3", "arc
 static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_real e1, c2d_status *restrict st,
                                       c2d_real_bits *restrict left)
 {
+    /* 2^j for lane j, from a table, not 1 << j: SSE4.2 has no per-lane shift */
+    static const c2d_real_bits lane_bit[C2D_BLOCK] = {0x1u,   0x2u,   0x4u,   0x8u,    0x10u,   0x20u,   0x40u,   0x80u,
+                                                      0x100u, 0x200u, 0x400u, 0x800u, 0x1000u, 0x2000u, 0x4000u, 0x8000u};
     c2d_real_bits ok_count = 0, unsettled = 0;
     c2d_real out[4][C2D_BLOCK];
     c2d_real_bits keep_a[C2D_BLOCK], keep_b[C2D_BLOCK];
@@ -166,9 +165,8 @@ static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_
         const c2d_real_bits code = ok | (window & sep) << 1 | cancels << 2;
         st[j] = (c2d_status)(code >> 1); /* C2D_OK or C2D_SEPARATING where settled */
         ok_count += ok;
-        /* bit j from a table, not 1 << j: SSE4.2 has no per-lane shift */
-        unsettled |= (((c2d_real_bits)0 - cancels) & c2d_lane_bit[j]) |
-                     (((c2d_real_bits)0 - (code == (c2d_real_bits)C2D_LANE_SCALAR)) & c2d_lane_bit[j]) << C2D_BLOCK;
+        unsettled |= (((c2d_real_bits)0 - cancels) & lane_bit[j]) |
+                     (((c2d_real_bits)0 - ((ok | (window & sep) | cancels) ^ 1u)) & lane_bit[j]) << (unsigned)C2D_BLOCK;
     }
     c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep_a);
     c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep_a);
@@ -351,9 +349,10 @@ static unsigned c2d_lowest_bit(c2d_real_bits m)
 #ifdef __GNUC__
     return (unsigned)__builtin_ctzll((unsigned long long)m);
 #else
+    c2d_real_bits rest = m;
     unsigned j = 0;
-    while ((m & 1u) == 0u) {
-        m >>= 1;
+    while ((rest & 1u) == 0u) {
+        rest >>= 1;
         j++;
     }
     return j;
@@ -368,13 +367,13 @@ static size_t c2d_batch_unsettled(const c2d_real_pairs *p, size_t base, c2d_real
                                   c2d_status *status, c2d_batch_queue *q)
 {
     size_t done = 0;
-    c2d_real_bits m = left & (((c2d_real_bits)1 << C2D_BLOCK) - 1u);
+    c2d_real_bits m = left & (((c2d_real_bits)1 << (unsigned)C2D_BLOCK) - 1u);
     while (m != 0u) {
         q->at[(q->head + q->count) % (size_t)C2D_QUEUE] = base + c2d_lowest_bit(m);
         q->count++;
         m &= m - 1u;
     }
-    m = left >> C2D_BLOCK;
+    m = left >> (unsigned)C2D_BLOCK;
     while (m != 0u) {
         const size_t i = base + c2d_lowest_bit(m);
         const c2d_status s = c2d_batch_lane(p, i, restitution);
