@@ -64,6 +64,14 @@
 
 enum { C2D_BLOCK = 16 };
 
+/* The cancelling pass only where the kernel vectorises (x86-64's SSE2,
+ * AArch64's NEON): on cores without vectors it is the scalar tier's
+ * arithmetic again, at some 3 KB more code and 2 KB more stack
+ * (docs/SIZES.md), so there a cancelling lane takes the scalar call. */
+#if defined(__SSE2__) || defined(__ARM_NEON)
+#define C2D_BATCH_PASS 1
+#endif
+
 /* What the kernel found for a lane.  OK - 1 and SEPARATING - 1 are the
  * public statuses C2D_OK and C2D_SEPARATING (lane >> 1). */
 enum { C2D_LANE_SCALAR = 0, C2D_LANE_OK = 1, C2D_LANE_SEPARATING = 2, C2D_LANE_CANCELS = 4 };
@@ -165,8 +173,13 @@ static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_
         const c2d_real_bits code = ok | (window & sep) << 1 | cancels << 2;
         st[j] = (c2d_status)(code >> 1); /* C2D_OK or C2D_SEPARATING where settled */
         ok_count += ok;
-        unsettled |= (((c2d_real_bits)0 - cancels) & lane_bit[j]) |
-                     (((c2d_real_bits)0 - ((ok | (window & sep) | cancels) ^ 1u)) & lane_bit[j]) << (unsigned)C2D_BLOCK;
+#ifdef C2D_BATCH_PASS
+        const c2d_real_bits queued = cancels;
+#else
+        const c2d_real_bits queued = 0;
+#endif
+        unsettled |= (((c2d_real_bits)0 - queued) & lane_bit[j]) |
+                     (((c2d_real_bits)0 - ((ok | (window & sep) | queued) ^ 1u)) & lane_bit[j]) << (unsigned)C2D_BLOCK;
     }
     c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep_a);
     c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep_a);
@@ -176,10 +189,11 @@ static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_
     return ok_count;
 }
 
+#ifdef C2D_BATCH_PASS
 /* Up to C2D_BLOCK cancelling lanes gathered from the pairs: the pass's
  * input, one array per field (index C2D_G_*), and its output. */
-enum { C2D_G_PAX, C2D_G_PAY, C2D_G_PBX, C2D_G_PBY, C2D_G_VAX, C2D_G_VAY, C2D_G_VBX, C2D_G_VBY, C2D_G_MA, C2D_G_MB,
-       C2D_G_FIELDS };
+enum { C2D_G_PAX = 0, C2D_G_PAY = 1, C2D_G_PBX = 2, C2D_G_PBY = 3, C2D_G_VAX = 4 };
+enum { C2D_G_VAY = 5, C2D_G_VBX = 6, C2D_G_VBY = 7, C2D_G_MA = 8, C2D_G_MB = 9, C2D_G_FIELDS = 10 };
 typedef struct c2d_batch_gathered {
     c2d_real in[C2D_G_FIELDS][C2D_BLOCK];
     c2d_real out[4][C2D_BLOCK];    /* {va'x, va'y, vb'x, vb'y}, the inputs where not OK */
@@ -278,6 +292,7 @@ static void c2d_batch_cancel(c2d_batch_gathered *g, c2d_real e1)
 #endif
     c2d_batch_cancel_plain(g, e1);
 }
+#endif /* C2D_BATCH_PASS */
 
 /* One lane the kernel did not settle: the whole scalar call. */
 static c2d_status c2d_batch_lane(const c2d_real_pairs *p, size_t i, c2d_real restitution)
@@ -303,6 +318,7 @@ typedef struct c2d_batch_queue {
     size_t head, count;
 } c2d_batch_queue;
 
+#ifdef C2D_BATCH_PASS
 /* The first n <= C2D_BLOCK queued lanes through the pass (the rest of its
  * width repeats the first lane, computed and dropped), their velocities and
  * statuses stored, the scalar call for those the pass leaves; returns how
@@ -342,12 +358,14 @@ static size_t c2d_batch_flush(const c2d_real_pairs *p, c2d_batch_queue *q, size_
     q->count -= n;
     return done;
 }
+#endif /* C2D_BATCH_PASS */
 
-/* The lowest set bit of m != 0. */
+/* The lowest set bit of m != 0 (the masks have 32 bits).  The builtin
+ * only with the pass: on small cores it is a libgcc call. */
 static unsigned c2d_lowest_bit(c2d_real_bits m)
 {
-#ifdef __GNUC__
-    return (unsigned)__builtin_ctzll((unsigned long long)m);
+#if defined(__GNUC__) && defined(C2D_BATCH_PASS)
+    return (unsigned)__builtin_ctzl((unsigned long)m);
 #else
     c2d_real_bits rest = m;
     unsigned j = 0;
@@ -367,12 +385,17 @@ static size_t c2d_batch_unsettled(const c2d_real_pairs *p, size_t base, c2d_real
                                   c2d_status *status, c2d_batch_queue *q)
 {
     size_t done = 0;
-    c2d_real_bits m = left & (((c2d_real_bits)1 << (unsigned)C2D_BLOCK) - 1u);
+    c2d_real_bits m;
+#ifdef C2D_BATCH_PASS
+    m = left & (((c2d_real_bits)1 << (unsigned)C2D_BLOCK) - 1u);
     while (m != 0u) {
         q->at[(q->head + q->count) % (size_t)C2D_QUEUE] = base + c2d_lowest_bit(m);
         q->count++;
         m &= m - 1u;
     }
+#else
+    (void)q;
+#endif
     m = left >> (unsigned)C2D_BLOCK;
     while (m != 0u) {
         const size_t i = base + c2d_lowest_bit(m);
@@ -401,8 +424,10 @@ static size_t c2d_real_collide_batch(const c2d_real_pairs *p, size_t count, c2d_
             done += (size_t)c2d_batch_kernel(p, base, e1, status != NULL ? status + base : scratch, &left);
             if (left != 0u) {
                 done += c2d_batch_unsettled(p, base, left, restitution, status, &q);
+#ifdef C2D_BATCH_PASS
                 if (q.count >= (size_t)C2D_BLOCK)
                     done += c2d_batch_flush(p, &q, (size_t)C2D_BLOCK, e1, restitution, status);
+#endif
             }
         } else {
             size_t j;
@@ -413,7 +438,9 @@ static size_t c2d_real_collide_batch(const c2d_real_pairs *p, size_t count, c2d_
             }
         }
     }
+#ifdef C2D_BATCH_PASS
     if (q.count > 0) done += c2d_batch_flush(p, &q, q.count, e1, restitution, status);
+#endif
     return done;
 }
 
