@@ -174,12 +174,11 @@ static c2d_real_bits c2d_batch_kernel(const c2d_real_pairs *p, size_t base, c2d_
         st[j] = (c2d_status)(code >> 1); /* C2D_OK or C2D_SEPARATING where settled */
         ok_count += ok;
 #ifdef C2D_BATCH_PASS
-        const c2d_real_bits queued = cancels;
+        unsettled |= (((c2d_real_bits)0 - cancels) & lane_bit[j]) |
+                     (((c2d_real_bits)0 - ((ok | (window & sep) | cancels) ^ 1u)) & lane_bit[j]) << (unsigned)C2D_BLOCK;
 #else
-        const c2d_real_bits queued = 0;
+        unsettled |= (((c2d_real_bits)0 - ((ok | (window & sep)) ^ 1u)) & lane_bit[j]) << (unsigned)C2D_BLOCK;
 #endif
-        unsettled |= (((c2d_real_bits)0 - queued) & lane_bit[j]) |
-                     (((c2d_real_bits)0 - ((ok | (window & sep) | queued) ^ 1u)) & lane_bit[j]) << (unsigned)C2D_BLOCK;
     }
     c2d_batch_commit(&p->vel_ax[base], &out[0][0], keep_a);
     c2d_batch_commit(&p->vel_ay[base], &out[1][0], keep_a);
