@@ -229,7 +229,9 @@ c2d_status c2d_time_of_impact_accel(const c2d_body *a, c2d_vec2 acc_a, const c2d
  * the same fields of b.  Every pair is resolved exactly as c2d_collide would
  * (bit-identical results and statuses); pairs in the well-scaled common case
  * (walls included) run through a branch-free kernel in blocks of 16 that -O2
- * vectorises, the others take the scalar call.  Built by gcc for hosted x86-64, the kernel
+ * vectorises, those whose normal speed cancels through a second vector pass
+ * (the scalar call's double-double tier, 16 such pairs at a time), the others
+ * take the scalar call.  Built by gcc for hosted x86-64, the kernel
  * is chosen at load time for the CPU (SSE2, SSE4.2, AVX2 or AVX-512;
  * C2D_NO_DISPATCH turns this off); clang vectorises it at baseline.  Arrays
  * must not overlap.

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* c2d_collide_batch(f): bit-identical to the scalar call, statuses
- * included, for mixed inputs (valid, grazing, extreme, invalid) and any
- * count, including counts that are not a multiple of the kernel's block. */
+ * included, for mixed inputs (valid, grazing, extreme, invalid), walls and
+ * cancelling pairs (the second vector pass), and any count, including
+ * counts that are not a multiple of the kernel's block. */
 #include "check.h"
 
 #define N 1003 /* not a multiple of 8 */
@@ -197,6 +198,175 @@ static void test_walls_in_the_batch_are_the_scalar_call(void **state)
     assert_true(donef > N / 4); /* in float too */
 }
 
+/* ------------------------------------------------------------ cancelling lanes
+ * Pairs whose d cancels (kappa = (|px| + |py|) / |px + py| > 4 in the
+ * precision's own arithmetic), which the batch settles in its second vector
+ * pass: a plain scene whose relative velocity is turned nearly
+ * perpendicular to n, by a relative tilt, in five families (i % 5): 0 the
+ * tilt up to 1/5 of either sign (OK and SEPARATING); 1 the same with both
+ * positions offset by 2^1..2^40 (the exact normal's low part nl nonzero);
+ * 2 a grazing tilt 2^-(prec-18)..2^-(prec+17), across the double-double's
+ * trust bound (beyond it the lane takes the scalar call's general tier);
+ * 3 a wall (mass INFINITY) whose velocity is (-0, +0); 4 n_x tiny and the
+ * relative velocity's x huge, with n_x's exponent spread across the tier's
+ * split bound (beyond it the scalar call's general tier again). */
+enum { CANCEL_FAMILIES = 5 };
+
+static void cancelling_case(c2d_rng *r, ref_case *c, int family, int prec, int emax)
+{
+    const double tilt_max = 0.2, speed = c2d_rng_range(r, 0.5, 10);
+    double nx, ny, tilt = c2d_rng_range(r, -tilt_max, tilt_max), rvx, rvy;
+    gen_plain(r, c);
+    c->has_normal = 0;
+    if (family == 2) tilt = (c2d_rng_next(r) & 1 ? 1 : -1) * ldexp(1, -(prec - 18) - (int)(c2d_rng_next(r) % 36));
+    if (family == 4) {
+        /* n = (2^-s (1 + u), 1): s around half the exponent range, so that
+         * |rvx| = 2^4 / |nx| straddles the split bound 2^(emax/2). */
+        const int s = emax / 2 - 60 + (int)(c2d_rng_next(r) % 120) + 4;
+        c->pa[0] = 0;
+        c->pb[0] = ldexp(1 + c2d_rng_unit(r), -s);
+        c->pb[1] = c->pa[1] + 1;
+    }
+    if (family == 1) {
+        const double off = ldexp(1, 1 + (int)(c2d_rng_next(r) % 40));
+        c->pa[0] += off, c->pa[1] += off, c->pb[0] += off, c->pb[1] += off;
+    }
+    nx = c->pb[0] - c->pa[0], ny = c->pb[1] - c->pa[1];
+    if (family == 4) {
+        rvx = 16 / nx;
+        rvy = -16 * (1 + tilt) / ny;
+    } else {
+        rvx = speed * (-ny + tilt * nx);
+        rvy = speed * (nx + tilt * ny);
+    }
+    if (family == 3) {
+        if (c2d_rng_next(r) & 1) {
+            c->mb = INFINITY, c->vb[0] = -0.0, c->vb[1] = 0.0;
+            c->va[0] = -rvx, c->va[1] = -rvy;
+        } else {
+            c->ma = INFINITY, c->va[0] = -0.0, c->va[1] = 0.0;
+            c->vb[0] = rvx, c->vb[1] = rvy;
+        }
+    } else {
+        c->vb[0] = c->va[0] + rvx, c->vb[1] = c->va[1] + rvy;
+    }
+}
+
+/* Kappa > 4 in double, for the bodies as the call gets them. */
+static int cancels_double(const c2d_body *a, const c2d_body *b)
+{
+    const double px = (b->vel.x - a->vel.x) * (b->pos.x - a->pos.x);
+    const double py = (b->vel.y - a->vel.y) * (b->pos.y - a->pos.y);
+    return fabs(px) + fabs(py) > 4 * fabs(px + py);
+}
+
+static int cancels_float(const c2d_bodyf *a, const c2d_bodyf *b)
+{
+    const float px = (b->vel.x - a->vel.x) * (b->pos.x - a->pos.x);
+    const float py = (b->vel.y - a->vel.y) * (b->pos.y - a->pos.y);
+    return fabsf(px) + fabsf(py) > 4 * fabsf(px + py);
+}
+
+/* What a cancelling run met: lanes that cancel, and of those OK and
+ * SEPARATING, per family. */
+typedef struct cancel_tally {
+    int cancelling[CANCEL_FAMILIES], ok, separating;
+} cancel_tally;
+
+static void tally_lane(cancel_tally *t, int family, int cancelling, c2d_status want)
+{
+    if (!cancelling) return;
+    t->cancelling[family]++;
+    t->ok += want == C2D_OK;
+    t->separating += want == C2D_SEPARATING;
+}
+
+static void assert_cancelling_met(const cancel_tally *t, const char *what)
+{
+    int f, all = 0;
+    for (f = 0; f < CANCEL_FAMILIES; f++) {
+        all += t->cancelling[f];
+        assert_true(t->cancelling[f] > N / CANCEL_FAMILIES / 4); /* every family reaches the pass */
+    }
+    print_message("%s: %d of %d lanes cancel (families %d %d %d %d %d), %d OK, %d separating\n", what, all, N,
+                  t->cancelling[0], t->cancelling[1], t->cancelling[2], t->cancelling[3], t->cancelling[4], t->ok,
+                  t->separating);
+    assert_true(all > N / 2);
+    assert_true(t->ok > N / 8 && t->separating > N / 8);
+}
+
+static void check_cancelling(double e, uint64_t seed)
+{
+    static ref_case cs[N];
+    const c2d_soa s = c2d_soa_in(block, N, status);
+    const c2d_pairs p = c2d_soa_pairs(&s);
+    c2d_batch_check check = {0, 0, 0};
+    cancel_tally t = {{0}, 0, 0};
+    c2d_rng r;
+    size_t done, i;
+    r.s = seed;
+    for (i = 0; i < N; i++) {
+        c2d_body a, b;
+        cancelling_case(&r, &cs[i], (int)(i % CANCEL_FAMILIES), 53, 1023);
+        case_to_bodies(&cs[i], &a, &b);
+        c2d_soa_put(&s, i, &a, &b);
+    }
+    done = c2d_collide_batch(&p, N, e, s.status);
+    for (i = 0; i < N; i++) {
+        c2d_body a, b;
+        c2d_status want;
+        case_to_bodies(&cs[i], &a, &b);
+        tally_lane(&t, (int)(i % CANCEL_FAMILIES), cancels_double(&a, &b), c2d_collide(&a, &b, e));
+        case_to_bodies(&cs[i], &a, &b);
+        want = c2d_collide(&a, &b, e);
+        c2d_batch_check_lane(&check, &s, i, want, &a, &b);
+    }
+    assert_lanes_agree(&check, done);
+    assert_cancelling_met(&t, "double");
+}
+
+static void check_cancelling_float(float e, uint64_t seed)
+{
+    static float blockf[C2D_SOA_FIELDS * N];
+    static ref_case cs[N];
+    const c2d_soaf s = c2d_soa_inf(blockf, N, status);
+    const c2d_pairsf p = c2d_soa_pairsf(&s);
+    c2d_batch_check check = {0, 0, 0};
+    cancel_tally t = {{0}, 0, 0};
+    c2d_rng r;
+    size_t done, i;
+    r.s = seed;
+    for (i = 0; i < N; i++) {
+        c2d_bodyf a, b;
+        cancelling_case(&r, &cs[i], (int)(i % CANCEL_FAMILIES), 24, 127);
+        case_to_float(&cs[i]);
+        case_to_bodiesf(&cs[i], &a, &b);
+        c2d_soa_putf(&s, i, &a, &b);
+    }
+    done = c2d_collide_batchf(&p, N, e, s.status);
+    for (i = 0; i < N; i++) {
+        c2d_bodyf a, b;
+        c2d_status want;
+        case_to_bodiesf(&cs[i], &a, &b);
+        tally_lane(&t, (int)(i % CANCEL_FAMILIES), cancels_float(&a, &b), c2d_collidef(&a, &b, e));
+        case_to_bodiesf(&cs[i], &a, &b);
+        want = c2d_collidef(&a, &b, e);
+        c2d_batch_check_lanef(&check, &s, i, want, &a, &b);
+    }
+    assert_lanes_agree(&check, done);
+    assert_cancelling_met(&t, "float");
+}
+
+static void test_cancelling_lanes_are_the_scalar_call(void **state)
+{
+    (void)state;
+    check_cancelling(1.0, 409);
+    check_cancelling(0.5, 410);
+    check_cancelling(0.0, 411);
+    check_cancelling_float(1.0f, 412);
+    check_cancelling_float(0.25f, 413);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -205,6 +375,7 @@ int main(void)
         cmocka_unit_test(test_batch_without_status_array_and_tiny_counts),
         cmocka_unit_test(test_float_batch_is_bit_identical_to_scalar_calls),
         cmocka_unit_test(test_walls_in_the_batch_are_the_scalar_call),
+        cmocka_unit_test(test_cancelling_lanes_are_the_scalar_call),
     };
     return c2d_run_tests("batch", tests);
 }
