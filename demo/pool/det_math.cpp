@@ -37,14 +37,14 @@ int reduce_pio2(double x, double &y0, double &y1) {
     constexpr double invpio2 = 6.36619772367581382433e-01;  // 0x3FE45F30 6DC9C883
     constexpr double pio2_1 = 1.57079632673412561417e+00;   // 0x3FF921FB 54400000
     constexpr double pio2_2 = 6.07710050630396597660e-11;   // 0x3DD0B461 1A600000
-    constexpr double pio2_2t = 2.02226624879595063154e-21;  // 0x3BA3198A 2E037073
     constexpr double pio2_3 = 2.02226624871116645580e-21;   // 0x3BA3198A 2E000000
     constexpr double pio2_3t = 8.47842766036889956997e-32;  // 0x397B839A 252049C1
     const double fn = nearest_integer(x * invpio2);
     // the first tail (pi/2 - pio2_1 = pio2_2 + pio2_2t + ...) is taken in
     // its own two pieces, so the steps start with pio2_2
+    // (fdlibm's second step's tail, fn * pio2_2t - ((t - r) - w), feeds only
+    // its y[0], which the third step recomputes: not formed here)
     double t = x - fn * pio2_1, w = fn * pio2_2, r = t - w;
-    w = fn * pio2_2t - ((t - r) - w);
     t = r;
     w = fn * pio2_3;
     r = t - w;

@@ -6,7 +6,8 @@
 // so that a faster opponent can be shown to choose the same shots.
 //   build/opponent_bench [--plain] [FIRST LAST]
 // --plain: both computers without position play (Search::Plain), the
-// opponent of before it (digest 7069196ad8fa2fe8 on seeds 1-8).
+// opponent of before it (digest 2d4a975dd0f8c1c9 on seeds 1-8 since the
+// demo's own elementary functions; 7069196ad8fa2fe8 before them).
 //   build/opponent_bench --duel [FIRST LAST]
 // position play against plain, one game a seed (position play breaks on
 // the odd seeds, so each side breaks half the games): the wins of each.
